@@ -1,0 +1,47 @@
+# The two commands of the README, for a fresh Debian 12 machine (as root):
+#   make demo   install what is missing, build, run a short demo simulation
+#   make test   install what is missing, build, run the whole test suite (ctest)
+# Other targets: build, bench, clean. BUILD=dir picks the build folder,
+# NATIVE=1 tunes for this CPU (opt-in; the default build is portable).
+
+BUILD ?= build
+JOBS ?= $(shell nproc)
+NATIVE ?= 0
+CMAKE_FLAGS = -DCMAKE_BUILD_TYPE=Release $(if $(filter 1,$(NATIVE)),-DCOOLGAS_NATIVE=ON,-DCOOLGAS_NATIVE=OFF)
+
+# Debian 12 packages the project needs: toolchain, libraries, plotting, and
+# the Python readers the tests use to check that real clients open our files.
+DEBIAN_PACKAGES := cmake make g++ pkg-config git \
+  libhdf5-dev hdf5-tools libfftw3-dev libgsl-dev libeigen3-dev \
+  libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libtoml11-dev \
+  gnuplot-nox python3 python3-h5py python3-mdanalysis
+
+.PHONY: deps configure build demo test bench clean
+
+deps:
+	@missing=""; for p in $(DEBIAN_PACKAGES); do \
+	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q 'install ok installed' || missing="$$missing $$p"; \
+	done; \
+	if [ -n "$$missing" ]; then \
+	  if [ "$$(id -u)" -ne 0 ]; then echo "error: missing Debian packages:$$missing (run 'make' as root, or apt-get install them)"; exit 2; fi; \
+	  echo "Installing missing Debian packages:$$missing"; \
+	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing; \
+	fi
+
+configure: deps
+	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
+
+build: configure
+	cmake --build $(BUILD) -j $(JOBS)
+
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+demo: build
+	@echo "(the demo simulation arrives with coolgas-simulate)"
+
+bench: build
+	@echo "benchmarks: see tests/bench/"
+
+clean:
+	rm -rf $(BUILD)

@@ -1,0 +1,304 @@
+#include "common/hdf5_file.h"
+
+#include <functional>
+#include <numeric>
+#include <stdexcept>
+
+#include "common/error.h"
+
+namespace coolgas::h5 {
+namespace {
+
+[[noreturn]] void fail(const std::string& what) { throw std::runtime_error("HDF5: " + what); }
+
+hid_t check(hid_t id, const std::string& what) {
+  if (id < 0) fail(what);
+  return id;
+}
+
+void check_status(herr_t st, const std::string& what) {
+  if (st < 0) fail(what);
+}
+
+hid_t mem_type(Type t) {
+  switch (t) {
+    case Type::kFloat64: return H5T_NATIVE_DOUBLE;
+    case Type::kInt64: return H5T_NATIVE_INT64;
+    case Type::kInt32: return H5T_NATIVE_INT32;
+  }
+  return H5T_NATIVE_DOUBLE;
+}
+
+hid_t file_type(Type t) {
+  switch (t) {
+    case Type::kFloat64: return H5T_IEEE_F64LE;
+    case Type::kInt64: return H5T_STD_I64LE;
+    case Type::kInt32: return H5T_STD_I32LE;
+  }
+  return H5T_IEEE_F64LE;
+}
+
+template <class T>
+Type type_of();
+template <>
+Type type_of<double>() { return Type::kFloat64; }
+template <>
+Type type_of<std::int64_t>() { return Type::kInt64; }
+template <>
+Type type_of<std::int32_t>() { return Type::kInt32; }
+
+Handle vlen_string_type() {
+  Handle t(check(H5Tcopy(H5T_C_S1), "string type"));
+  check_status(H5Tset_size(t.id(), H5T_VARIABLE), "string type size");
+  check_status(H5Tset_cset(t.id(), H5T_CSET_UTF8), "string charset");
+  return t;
+}
+
+Handle replace_attr(hid_t obj, const std::string& name, hid_t type, hid_t space) {
+  if (H5Aexists(obj, name.c_str()) > 0) H5Adelete(obj, name.c_str());
+  return Handle(check(H5Acreate2(obj, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT),
+                      "create attribute '" + name + "'"));
+}
+
+Handle open_attr(hid_t obj, const std::string& name) {
+  if (H5Aexists(obj, name.c_str()) <= 0) throw InputError("missing attribute '" + name + "'");
+  return Handle(check(H5Aopen(obj, name.c_str(), H5P_DEFAULT), "open attribute '" + name + "'"));
+}
+
+}  // namespace
+
+void Handle::close() {
+  if (id_ < 0) return;
+  switch (H5Iget_type(id_)) {
+    case H5I_FILE: H5Fclose(id_); break;
+    case H5I_GROUP: H5Gclose(id_); break;
+    case H5I_DATASET: H5Dclose(id_); break;
+    case H5I_ATTR: H5Aclose(id_); break;
+    case H5I_DATATYPE: H5Tclose(id_); break;
+    case H5I_DATASPACE: H5Sclose(id_); break;
+    case H5I_GENPROP_LST: H5Pclose(id_); break;
+    default: break;
+  }
+  id_ = H5I_INVALID_HID;
+}
+
+void silence_library_errors() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
+
+Handle open_file(const std::string& path, Mode mode) {
+  silence_library_errors();
+  hid_t id = H5I_INVALID_HID;
+  switch (mode) {
+    case Mode::kCreateExclusive: id = H5Fcreate(path.c_str(), H5F_ACC_EXCL, H5P_DEFAULT, H5P_DEFAULT); break;
+    case Mode::kCreateTruncate: id = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT); break;
+    case Mode::kReadOnly: id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT); break;
+    case Mode::kReadWrite: id = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT); break;
+  }
+  if (id < 0) {
+    const bool reading = mode == Mode::kReadOnly || mode == Mode::kReadWrite;
+    throw InputError(reading ? "cannot open '" + path + "' as an HDF5 file (missing, unreadable or not HDF5)"
+                             : "cannot create '" + path + "' (directory missing or not writable?)");
+  }
+  return Handle(id);
+}
+
+void flush(const Handle& file) { check_status(H5Fflush(file.id(), H5F_SCOPE_GLOBAL), "flush"); }
+
+bool exists(hid_t loc, const std::string& path) {
+  std::size_t pos = 0;
+  while (true) {
+    pos = path.find('/', pos + 1);
+    const std::string prefix = path.substr(0, pos);
+    if (!prefix.empty() && H5Lexists(loc, prefix.c_str(), H5P_DEFAULT) <= 0) return false;
+    if (pos == std::string::npos) return true;
+  }
+}
+
+Handle open_group(hid_t loc, const std::string& path) {
+  if (!exists(loc, path)) throw InputError("missing group '" + path + "'");
+  return Handle(check(H5Gopen2(loc, path.c_str(), H5P_DEFAULT), "open group '" + path + "'"));
+}
+
+Handle create_group(hid_t loc, const std::string& path) {
+  Handle lcpl(check(H5Pcreate(H5P_LINK_CREATE), "link property list"));
+  H5Pset_create_intermediate_group(lcpl.id(), 1);
+  return Handle(check(H5Gcreate2(loc, path.c_str(), lcpl.id(), H5P_DEFAULT, H5P_DEFAULT),
+                      "create group '" + path + "'"));
+}
+
+Handle open_dataset(hid_t loc, const std::string& path) {
+  if (!exists(loc, path)) throw InputError("missing dataset '" + path + "'");
+  return Handle(check(H5Dopen2(loc, path.c_str(), H5P_DEFAULT), "open dataset '" + path + "'"));
+}
+
+void write_attr(hid_t obj, const std::string& name, const std::string& value) {
+  Handle type = vlen_string_type();
+  Handle space(check(H5Screate(H5S_SCALAR), "scalar space"));
+  Handle a = replace_attr(obj, name, type.id(), space.id());
+  const char* p = value.c_str();
+  check_status(H5Awrite(a.id(), type.id(), &p), "write attribute '" + name + "'");
+}
+
+void write_attr(hid_t obj, const std::string& name, const std::vector<std::string>& values) {
+  Handle type = vlen_string_type();
+  const hsize_t n = values.size();
+  Handle space(check(H5Screate_simple(1, &n, nullptr), "string array space"));
+  Handle a = replace_attr(obj, name, type.id(), space.id());
+  std::vector<const char*> ptrs;
+  for (const auto& v : values) ptrs.push_back(v.c_str());
+  check_status(H5Awrite(a.id(), type.id(), ptrs.data()), "write attribute '" + name + "'");
+}
+
+void write_attr(hid_t obj, const std::string& name, double value) {
+  Handle space(check(H5Screate(H5S_SCALAR), "scalar space"));
+  Handle a = replace_attr(obj, name, H5T_IEEE_F64LE, space.id());
+  check_status(H5Awrite(a.id(), H5T_NATIVE_DOUBLE, &value), "write attribute '" + name + "'");
+}
+
+void write_attr(hid_t obj, const std::string& name, std::int64_t value) {
+  Handle space(check(H5Screate(H5S_SCALAR), "scalar space"));
+  Handle a = replace_attr(obj, name, H5T_STD_I64LE, space.id());
+  check_status(H5Awrite(a.id(), H5T_NATIVE_INT64, &value), "write attribute '" + name + "'");
+}
+
+void write_attr(hid_t obj, const std::string& name, const std::vector<std::int32_t>& values) {
+  const hsize_t n = values.size();
+  Handle space(check(H5Screate_simple(1, &n, nullptr), "int array space"));
+  Handle a = replace_attr(obj, name, H5T_STD_I32LE, space.id());
+  check_status(H5Awrite(a.id(), H5T_NATIVE_INT32, values.data()), "write attribute '" + name + "'");
+}
+
+bool has_attr(hid_t obj, const std::string& name) { return H5Aexists(obj, name.c_str()) > 0; }
+
+std::string read_attr_string(hid_t obj, const std::string& name) {
+  Handle a = open_attr(obj, name);
+  Handle ftype(check(H5Aget_type(a.id()), "attribute type"));
+  if (H5Tget_class(ftype.id()) != H5T_STRING) throw InputError("attribute '" + name + "' is not a string");
+  if (H5Tis_variable_str(ftype.id()) > 0) {
+    Handle type = vlen_string_type();
+    char* p = nullptr;
+    check_status(H5Aread(a.id(), type.id(), &p), "read attribute '" + name + "'");
+    std::string s = p ? p : "";
+    H5free_memory(p);
+    return s;
+  }
+  const std::size_t n = H5Tget_size(ftype.id());
+  std::string s(n, '\0');
+  check_status(H5Aread(a.id(), ftype.id(), s.data()), "read attribute '" + name + "'");
+  s.erase(s.find_last_not_of('\0') + 1);
+  return s;
+}
+
+double read_attr_double(hid_t obj, const std::string& name) {
+  Handle a = open_attr(obj, name);
+  double v = 0;
+  check_status(H5Aread(a.id(), H5T_NATIVE_DOUBLE, &v), "read attribute '" + name + "'");
+  return v;
+}
+
+std::int64_t read_attr_int(hid_t obj, const std::string& name) {
+  Handle a = open_attr(obj, name);
+  std::int64_t v = 0;
+  check_status(H5Aread(a.id(), H5T_NATIVE_INT64, &v), "read attribute '" + name + "'");
+  return v;
+}
+
+std::vector<std::int32_t> read_attr_ints(hid_t obj, const std::string& name) {
+  Handle a = open_attr(obj, name);
+  Handle space(check(H5Aget_space(a.id()), "attribute space"));
+  std::vector<std::int32_t> v(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space.id())));
+  check_status(H5Aread(a.id(), H5T_NATIVE_INT32, v.data()), "read attribute '" + name + "'");
+  return v;
+}
+
+std::vector<hsize_t> shape(hid_t dataset) {
+  Handle space(check(H5Dget_space(dataset), "dataspace"));
+  const int rank = H5Sget_simple_extent_ndims(space.id());
+  std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
+  H5Sget_simple_extent_dims(space.id(), dims.data(), nullptr);
+  return dims;
+}
+
+Handle create_series(hid_t loc, const std::string& name, Type type, const std::vector<hsize_t>& inner,
+                     hsize_t chunk_rows) {
+  std::vector<hsize_t> dims{0}, maxdims{H5S_UNLIMITED}, chunk{chunk_rows};
+  for (hsize_t d : inner) {
+    dims.push_back(d);
+    maxdims.push_back(d);
+    chunk.push_back(d);
+  }
+  Handle space(check(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), maxdims.data()), "series space"));
+  Handle dcpl(check(H5Pcreate(H5P_DATASET_CREATE), "dataset property list"));
+  check_status(H5Pset_chunk(dcpl.id(), static_cast<int>(chunk.size()), chunk.data()), "chunking");
+  return Handle(check(H5Dcreate2(loc, name.c_str(), file_type(type), space.id(), H5P_DEFAULT, dcpl.id(), H5P_DEFAULT),
+                      "create dataset '" + name + "'"));
+}
+
+void append_row(hid_t dataset, Type type, const void* data) {
+  auto dims = shape(dataset);
+  const hsize_t row = dims[0];
+  dims[0] = row + 1;
+  check_status(H5Dset_extent(dataset, dims.data()), "extend dataset");
+  Handle fspace(check(H5Dget_space(dataset), "dataspace"));
+  std::vector<hsize_t> start(dims.size(), 0), count = dims;
+  start[0] = row;
+  count[0] = 1;
+  check_status(H5Sselect_hyperslab(fspace.id(), H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr),
+               "select row");
+  Handle mspace(check(H5Screate_simple(static_cast<int>(count.size()), count.data(), nullptr), "memory space"));
+  check_status(H5Dwrite(dataset, mem_type(type), mspace.id(), fspace.id(), H5P_DEFAULT, data), "write row");
+}
+
+void resize_rows(hid_t dataset, hsize_t n) {
+  auto dims = shape(dataset);
+  dims[0] = n;
+  check_status(H5Dset_extent(dataset, dims.data()), "resize dataset");
+}
+
+void read_rows(hid_t dataset, Type type, hsize_t first, hsize_t count_rows, void* out) {
+  auto dims = shape(dataset);
+  if (dims.empty()) {  // scalar dataset
+    check_status(H5Dread(dataset, mem_type(type), H5S_ALL, H5S_ALL, H5P_DEFAULT, out), "read scalar");
+    return;
+  }
+  if (first + count_rows > dims[0]) throw InputError("dataset has fewer rows than requested");
+  Handle fspace(check(H5Dget_space(dataset), "dataspace"));
+  std::vector<hsize_t> start(dims.size(), 0), count = dims;
+  start[0] = first;
+  count[0] = count_rows;
+  check_status(H5Sselect_hyperslab(fspace.id(), H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr),
+               "select rows");
+  Handle mspace(check(H5Screate_simple(static_cast<int>(count.size()), count.data(), nullptr), "memory space"));
+  check_status(H5Dread(dataset, mem_type(type), mspace.id(), fspace.id(), H5P_DEFAULT, out), "read rows");
+}
+
+template <class T>
+std::vector<T> read_all(hid_t dataset) {
+  auto dims = shape(dataset);
+  const hsize_t n = std::accumulate(dims.begin(), dims.end(), hsize_t{1}, std::multiplies<>());
+  std::vector<T> v(static_cast<std::size_t>(n));
+  if (n == 0) return v;
+  if (dims.empty()) {
+    read_rows(dataset, type_of<T>(), 0, 1, v.data());
+  } else {
+    read_rows(dataset, type_of<T>(), 0, dims[0], v.data());
+  }
+  return v;
+}
+
+template <class T>
+std::vector<T> read_row(hid_t dataset, hsize_t row) {
+  auto dims = shape(dataset);
+  const hsize_t n = std::accumulate(dims.begin() + 1, dims.end(), hsize_t{1}, std::multiplies<>());
+  std::vector<T> v(static_cast<std::size_t>(n));
+  read_rows(dataset, type_of<T>(), row, 1, v.data());
+  return v;
+}
+
+template std::vector<double> read_all<double>(hid_t);
+template std::vector<std::int64_t> read_all<std::int64_t>(hid_t);
+template std::vector<std::int32_t> read_all<std::int32_t>(hid_t);
+template std::vector<double> read_row<double>(hid_t, hsize_t);
+template std::vector<std::int64_t> read_row<std::int64_t>(hid_t, hsize_t);
+template std::vector<std::int32_t> read_row<std::int32_t>(hid_t, hsize_t);
+
+}  // namespace coolgas::h5

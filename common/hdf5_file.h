@@ -1,0 +1,84 @@
+// Thin RAII layer over the HDF5 C API: handles that close themselves and the
+// few typed operations coolgas needs (attributes, extendable time series,
+// whole-dataset reads). Every failure becomes an exception naming the object.
+#pragma once
+#include <hdf5.h>
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace coolgas::h5 {
+
+// Owns one hid_t and closes it with the matching H5*close.
+class Handle {
+ public:
+  Handle() = default;
+  explicit Handle(hid_t id) : id_(id) {}
+  Handle(Handle&& o) noexcept : id_(std::exchange(o.id_, H5I_INVALID_HID)) {}
+  Handle& operator=(Handle&& o) noexcept {
+    if (this != &o) {
+      close();
+      id_ = std::exchange(o.id_, H5I_INVALID_HID);
+    }
+    return *this;
+  }
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  ~Handle() { close(); }
+  hid_t id() const { return id_; }
+  bool valid() const { return id_ >= 0; }
+  void close();
+
+ private:
+  hid_t id_ = H5I_INVALID_HID;
+};
+
+// Turns off HDF5's own error printing; coolgas reports errors itself.
+void silence_library_errors();
+
+enum class Mode { kCreateExclusive, kCreateTruncate, kReadOnly, kReadWrite };
+Handle open_file(const std::string& path, Mode mode);
+void flush(const Handle& file);
+
+bool exists(hid_t loc, const std::string& path);  // link exists (each path component checked)
+Handle open_group(hid_t loc, const std::string& path);
+Handle create_group(hid_t loc, const std::string& path);  // creates parents as needed
+Handle open_dataset(hid_t loc, const std::string& path);
+
+// Attributes. Strings are variable-length UTF-8, as MDAnalysis requires.
+void write_attr(hid_t obj, const std::string& name, const std::string& value);
+void write_attr(hid_t obj, const std::string& name, const std::vector<std::string>& values);
+void write_attr(hid_t obj, const std::string& name, double value);
+void write_attr(hid_t obj, const std::string& name, std::int64_t value);
+void write_attr(hid_t obj, const std::string& name, const std::vector<std::int32_t>& values);
+bool has_attr(hid_t obj, const std::string& name);
+std::string read_attr_string(hid_t obj, const std::string& name);
+double read_attr_double(hid_t obj, const std::string& name);
+std::int64_t read_attr_int(hid_t obj, const std::string& name);
+std::vector<std::int32_t> read_attr_ints(hid_t obj, const std::string& name);
+
+// Element types of datasets.
+enum class Type { kFloat64, kInt64, kInt32 };
+
+// The shape of a dataset (dimensions, slowest first).
+std::vector<hsize_t> shape(hid_t dataset);
+
+// Creates a chunked dataset whose first dimension grows: shape (0, inner...).
+Handle create_series(hid_t loc, const std::string& name, Type type, const std::vector<hsize_t>& inner,
+                     hsize_t chunk_rows);
+// Appends one row (a block of prod(inner) elements) at the end of the first dimension.
+void append_row(hid_t dataset, Type type, const void* data);
+// Shrinks or grows the first dimension to n rows (used to drop rows after a resume point).
+void resize_rows(hid_t dataset, hsize_t n);
+// Reads rows [first, first+count) of a dataset into a flat buffer.
+void read_rows(hid_t dataset, Type type, hsize_t first, hsize_t count, void* out);
+
+template <class T>
+std::vector<T> read_all(hid_t dataset);
+// Reads row `row` of a dataset of shape (F, inner...) as a flat vector.
+template <class T>
+std::vector<T> read_row(hid_t dataset, hsize_t row);
+
+}  // namespace coolgas::h5

@@ -1,0 +1,143 @@
+#include "common/tsv.h"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "common/error.h"
+#include "common/version.h"
+
+namespace coolgas {
+
+std::string format_number(double x) {
+  char buf[64];
+  auto res = std::to_chars(buf, buf + sizeof buf, x);
+  return std::string(buf, res.ptr);
+}
+
+TsvWriter::TsvWriter(std::ostream& out, const std::string& tool, const Provenance& provenance,
+                     const std::vector<std::string>& columns)
+    : out_(out), ncol_(columns.size()) {
+  out_ << "# tool: " << tool << "\n# version: " << program_version() << "\n";
+  for (const auto& [k, v] : provenance) out_ << "# " << k << ": " << v << "\n";
+  out_ << "#";
+  for (std::size_t i = 0; i < columns.size(); ++i) out_ << (i ? "\t" : " ") << columns[i];
+  out_ << "\n";
+}
+
+void TsvWriter::row(const std::vector<double>& values) {
+  for (std::size_t i = 0; i < values.size(); ++i) out_ << (i ? "\t" : "") << format_number(values[i]);
+  out_ << "\n";
+  rows_in_block_ = true;
+}
+
+void TsvWriter::block(const std::string& comment) {
+  if (rows_in_block_) out_ << "\n\n";
+  if (!comment.empty()) out_ << "# " << comment << "\n";
+  rows_in_block_ = false;
+}
+
+std::size_t Table::column(const std::string& name) const {
+  for (std::size_t i = 0; i < columns.size(); ++i)
+    if (columns[i] == name) return i;
+  std::string have;
+  for (const auto& c : columns) have += (have.empty() ? "" : ", ") + c;
+  throw InputError(source + ": no column '" + name + "' (columns: " + have + ")");
+}
+
+std::vector<double> Table::column_values(const std::string& name) const {
+  const std::size_t c = column(name);
+  std::vector<double> v;
+  v.reserve(rows.size());
+  for (const auto& r : rows) v.push_back(r[c]);
+  return v;
+}
+
+std::optional<std::string> Table::get(const std::string& key) const {
+  for (const auto& [k, v] : provenance)
+    if (k == key) return v;
+  return std::nullopt;
+}
+
+namespace {
+
+std::vector<std::string> split_fields(const std::string& line) {
+  std::vector<std::string> f;
+  std::istringstream in(line);
+  std::string tok;
+  while (in >> tok) f.push_back(tok);
+  return f;
+}
+
+double parse_field(const std::string& tok, const std::string& where) {
+  double x = 0;
+  auto res = std::from_chars(tok.data(), tok.data() + tok.size(), x);
+  if (res.ec != std::errc() || res.ptr != tok.data() + tok.size())
+    throw InputError(where + ": '" + tok + "' is not a number");
+  if (!std::isfinite(x)) throw InputError(where + ": value '" + tok + "' is not finite (NaN or infinity)");
+  return x;
+}
+
+}  // namespace
+
+Table read_table(std::istream& in, const std::string& source) {
+  Table t;
+  t.source = source;
+  std::string line;
+  std::vector<std::string> header;
+  int block = 0, blank_run = 0;
+  long lineno = 0;
+  while (std::getline(in, line)) {
+    ++lineno;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.find_first_not_of(" \t") == std::string::npos) {
+      ++blank_run;
+      continue;
+    }
+    if (line[0] == '#') {
+      if (t.rows.empty()) header.push_back(line.substr(1));
+      continue;
+    }
+    if (t.rows.empty()) {
+      if (header.empty()) throw InputError(source + ": no header (expected '# column names' before data)");
+      t.columns = split_fields(header.back());
+      header.pop_back();
+    } else if (blank_run > 0) {
+      ++block;
+    }
+    blank_run = 0;
+    const std::string where = source + ":" + std::to_string(lineno);
+    auto fields = split_fields(line);
+    if (fields.size() != t.columns.size())
+      throw InputError(where + ": " + std::to_string(fields.size()) + " fields, expected " +
+                       std::to_string(t.columns.size()) + " (one per column)");
+    std::vector<double> row;
+    row.reserve(fields.size());
+    for (const auto& f : fields) row.push_back(parse_field(f, where));
+    t.rows.push_back(std::move(row));
+    t.row_block.push_back(block);
+  }
+  if (t.rows.empty()) throw InputError(source + ": empty table (no data rows)");
+  for (const auto& h : header) {
+    auto colon = h.find(':');
+    if (colon == std::string::npos) continue;
+    auto trim = [](std::string s) {
+      s.erase(0, s.find_first_not_of(' '));
+      s.erase(s.find_last_not_of(' ') + 1);
+      return s;
+    };
+    t.provenance.emplace_back(trim(h.substr(0, colon)), trim(h.substr(colon + 1)));
+  }
+  return t;
+}
+
+Table read_table(const std::string& path) {
+  if (path == "-") return read_table(std::cin, "stdin");
+  std::ifstream f(path);
+  if (!f) throw InputError("cannot open table '" + path + "' for reading");
+  return read_table(f, path);
+}
+
+}  // namespace coolgas

@@ -1,0 +1,66 @@
+// TSV tables: the format every analysis tool writes to stdout and reads from
+// a path or "-" (see data-schema/tsv-tables.md).
+//
+//   # tool: coolgas-energy            <- provenance: "# key: value" lines
+//   # version: 0.1.0 (abc123)
+//   # input: run.h5
+//   # t<TAB>E<TAB>E_over_E0           <- last header comment: column names
+//   0.01<TAB>1.5<TAB>1
+//
+// Blank lines separate blocks (gnuplot's "index"); a comment line after the
+// header is ignored by the reader. Numbers are written in the shortest form
+// that reads back to the same double.
+#pragma once
+#include <cstddef>
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace coolgas {
+
+using Provenance = std::vector<std::pair<std::string, std::string>>;
+
+class TsvWriter {
+ public:
+  // Writes the provenance block (tool and program version first) and the
+  // column line at once.
+  TsvWriter(std::ostream& out, const std::string& tool, const Provenance& provenance,
+            const std::vector<std::string>& columns);
+  void row(const std::vector<double>& values);
+  // Starts a new block (two blank lines, gnuplot's index separator) with an
+  // optional comment such as "# t = 10".
+  void block(const std::string& comment = "");
+  std::size_t columns() const { return ncol_; }
+
+ private:
+  std::ostream& out_;
+  std::size_t ncol_;
+  bool rows_in_block_ = false;
+};
+
+// Formats a double in its shortest round-trip form.
+std::string format_number(double x);
+
+struct Table {
+  std::string source;           // the path, or "stdin"
+  Provenance provenance;        // "# key: value" header lines, in order
+  std::vector<std::string> columns;
+  std::vector<std::vector<double>> rows;
+  std::vector<int> row_block;   // block index of each row (0-based)
+
+  // Index of a column by name; InputError naming the available columns if absent.
+  std::size_t column(const std::string& name) const;
+  std::vector<double> column_values(const std::string& name) const;
+  // First value of a provenance key, if present.
+  std::optional<std::string> get(const std::string& key) const;
+};
+
+// Reads a table from a path, or from stdin when path is "-". Rejects, with
+// an InputError naming the line: an empty table, ragged rows, non-numbers,
+// NaN and infinities.
+Table read_table(const std::string& path);
+Table read_table(std::istream& in, const std::string& source);
+
+}  // namespace coolgas
