@@ -1,0 +1,61 @@
+#include "simulate/cell_grid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace coolgas {
+
+namespace {
+// Cells are made a hair wider than the diameter so that two touching spheres
+// are never two cells apart, even with positions rounded at the last digit.
+constexpr double kWidthMargin = 1.0 + 1e-9;
+}  // namespace
+
+std::string check_box_fits_grid(double L, double min_width) {
+  if (std::floor(L / (min_width * kWidthMargin)) >= 3) return "";
+  std::ostringstream s;
+  s << "box side L = " << L << " is too small: the cell grid needs L >= " << 3 * min_width * kWidthMargin
+    << " (three cells of one diameter); use more particles or a lower phi";
+  return s.str();
+}
+
+CellGrid::CellGrid(double L, double min_width, std::size_t n) {
+  const std::string err = check_box_fits_grid(L, min_width);
+  if (!err.empty()) throw std::invalid_argument(err);
+  n_ = static_cast<int>(std::floor(L / (min_width * kWidthMargin)));
+  w_ = L / n_;
+  head_.assign(static_cast<std::size_t>(cell_count()), -1);
+  next_.assign(n, -1);
+  prev_.assign(n, -1);
+  cell_.assign(n, -1);
+}
+
+int CellGrid::cell_of(double x, double y, double z) const {
+  auto c = [this](double u) { return std::clamp(static_cast<int>(std::floor(u / w_)), 0, n_ - 1); };
+  return index({c(x), c(y), c(z)});
+}
+
+void CellGrid::insert(int p, int cell) {
+  cell_[p] = cell;
+  prev_[p] = -1;
+  next_[p] = head_[cell];
+  if (head_[cell] >= 0) prev_[head_[cell]] = p;
+  head_[cell] = p;
+}
+
+void CellGrid::remove(int p) {
+  const int c = cell_[p];
+  if (prev_[p] >= 0) next_[prev_[p]] = next_[p];
+  else head_[c] = next_[p];
+  if (next_[p] >= 0) prev_[next_[p]] = prev_[p];
+  cell_[p] = -1;
+}
+
+void CellGrid::clear() {
+  std::fill(head_.begin(), head_.end(), -1);
+  std::fill(cell_.begin(), cell_.end(), -1);
+}
+
+}  // namespace coolgas

@@ -1,0 +1,55 @@
+// The cell grid: the periodic box cut into ncell³ cubic cells at least one
+// diameter wide, each holding a doubly linked list of the particles whose
+// centres it contains. Two spheres can only touch if their cells are
+// neighbours (the 27 cells around, periodic), so collision searches look only
+// there. A particle's cell is logical: it changes only at a cell-crossing
+// event, never by reading the position, so round-off cannot lose a particle.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace coolgas {
+
+struct CellCoord {
+  int x, y, z;
+};
+
+class CellGrid {
+ public:
+  // Cells of side >= min_width (the largest diameter) in a box of side L, for n particles.
+  CellGrid(double L, double min_width, std::size_t n);
+
+  int cells_per_side() const { return n_; }
+  double width() const { return w_; }
+  std::int64_t cell_count() const { return std::int64_t(n_) * n_ * n_; }
+
+  int index(const CellCoord& c) const { return (c.z * n_ + c.y) * n_ + c.x; }
+  CellCoord coord(int cell) const { return {cell % n_, (cell / n_) % n_, cell / (n_ * n_)}; }
+  // The cell containing a wrapped position (clamped, so x = L - tiny lands inside).
+  int cell_of(double x, double y, double z) const;
+
+  int cell(int particle) const { return cell_[particle]; }
+  int first(int cell) const { return head_[cell]; }
+  int next(int particle) const { return next_[particle]; }
+
+  void insert(int particle, int cell);
+  void remove(int particle);
+  void move(int particle, int cell) {
+    remove(particle);
+    insert(particle, cell);
+  }
+  void clear();
+
+ private:
+  int n_;
+  double w_;
+  std::vector<std::int32_t> head_;  // first particle of each cell, -1 if empty
+  std::vector<std::int32_t> next_, prev_, cell_;
+};
+
+// The smallest box the grid supports: three cells of the given width, so that
+// the 27 neighbours of a cell are 27 distinct cells.
+std::string check_box_fits_grid(double L, double min_width);
+
+}  // namespace coolgas

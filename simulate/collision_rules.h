@@ -1,0 +1,36 @@
+// Collision rules: what happens to the normal relative velocity when two
+// spheres touch. The engine is a template over the rule, so a scene pays only
+// for the rule it names (an elastic scene runs no inelastic code at all).
+//
+// A rule is a small struct with
+//   static constexpr bool kDissipative;      // can energy be lost? (enables collapse detection)
+//   double restitution(double g, bool& below_delta) const;
+// where g > 0 is the normal relative speed before the collision; it returns
+// the coefficient of restitution r and sets below_delta when the collision
+// was made elastic by the δ cut-off. Adding a rule: a struct here, one
+// explicit instantiation in engine.cc, one case in make_engine().
+#pragma once
+
+namespace coolgas {
+
+struct ElasticRule {
+  static constexpr bool kDissipative = false;
+  double restitution(double /*g*/, bool& below_delta) const {
+    below_delta = false;
+    return 1.0;
+  }
+};
+
+// The paper's scheme (Eq. 1 with the cut-off of Ben-Naim et al. 1999):
+// r = r0, except r = 1 when the normal relative speed is below δ.
+struct ConstantRestitutionRule {
+  static constexpr bool kDissipative = true;
+  double r0 = 1.0;
+  double delta = 0.0;
+  double restitution(double g, bool& below_delta) const {
+    below_delta = g < delta;
+    return below_delta ? 1.0 : r0;
+  }
+};
+
+}  // namespace coolgas

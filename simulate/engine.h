@@ -1,0 +1,116 @@
+// The event-driven engine: hard spheres in a periodic box, advanced from
+// collision to collision.
+//
+// Techniques (as in the fastest event-driven codes):
+//   - cell grid (cell_grid.h): a particle looks for partners in 27 cells;
+//     crossing into a new cell is an event of its own;
+//   - one scheduled event per particle, the earliest of its predicted
+//     collisions and its next cell crossing; events are invalidated lazily:
+//     each particle counts its collisions, an event remembers its partner's
+//     count when predicted, and a mismatch when it comes due means "stale,
+//     predict again";
+//   - an O(1) event calendar (event_calendar.h) whose bucket width adapts;
+//   - lazy positions: a particle is moved only at its own events;
+//   - the collision rule is a template parameter (collision_rules.h), so the
+//     hot loop of an elastic scene contains no inelastic code.
+//
+// The runner sees the engine through EngineBase; make_engine() picks the
+// instantiation once, at start-up.
+#pragma once
+#include <csignal>
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "simulate/cell_grid.h"
+#include "simulate/collision_rules.h"
+#include "simulate/event_calendar.h"
+#include "simulate/particles.h"
+
+namespace coolgas {
+
+struct EngineCounters {
+  std::int64_t collisions = 0;   // collisions processed
+  std::int64_t below_delta = 0;  // of which made elastic by the δ cut-off
+  std::int64_t events = 0;       // all events: collisions, cell crossings, stale ones
+  std::int64_t stale = 0;        // events found invalid when due
+};
+
+struct CollisionRecord {
+  int i, j;  // i < j
+  double t;
+};
+
+// Inelastic collapse: infinitely many collisions in finite time (McNamara &
+// Young 1992). Thrown when particles keep colliding without time advancing.
+struct CollapseError : std::runtime_error {
+  CollapseError(const std::string& what, double t) : std::runtime_error(what), time(t) {}
+  double time;
+};
+
+enum class RunStatus {
+  kReached,      // every event up to t_stop processed; now() == t_stop
+  kEventBudget,  // max_events processed first; call again to go on
+  kInterrupted,  // *interrupt became non-zero
+};
+
+class EngineBase {
+ public:
+  virtual ~EngineBase() = default;
+  // Processes events in time order up to t_stop, at most max_events of them;
+  // the interrupt flag is looked at every few thousand events. Stopping early
+  // changes nothing: the same events follow. Throws CollapseError.
+  virtual RunStatus run_until(double t_stop, std::int64_t max_events, const volatile std::sig_atomic_t* interrupt) = 0;
+  // Brings every particle to now(), wraps positions into [0, L), and rebuilds
+  // the grid, the predictions and the calendar from the particles alone. A
+  // dump is taken right after this, so resuming from the dump rebuilds the
+  // identical state.
+  virtual void synchronize() = 0;
+  virtual double now() const = 0;
+  virtual const Particles& particles() const = 0;
+  virtual const EngineCounters& counters() const = 0;
+  // When set, every collision is appended (tests compare engines with it).
+  virtual void record_collisions(std::vector<CollisionRecord>* log) = 0;
+  // Calendar years started (a benchmark statistic).
+  virtual std::int64_t calendar_years() const = 0;
+};
+
+template <class Rule>
+class Engine final : public EngineBase {
+ public:
+  // Particles are taken as they are at time `now` (positions valid at now).
+  Engine(Particles particles, const Rule& rule, double now, const EngineCounters& counters = {});
+
+  RunStatus run_until(double t_stop, std::int64_t max_events, const volatile std::sig_atomic_t* interrupt) override;
+  void synchronize() override;
+  double now() const override { return now_; }
+  const Particles& particles() const override { return p_; }
+  const EngineCounters& counters() const override { return c_; }
+  void record_collisions(std::vector<CollisionRecord>* log) override { log_ = log; }
+  std::int64_t calendar_years() const override { return calendar_.years(); }
+
+ private:
+  void advance(int i);
+  void find_event(int i);
+  void cross(int i, int code);
+  void collide(int i, int j);
+  void note_collision_gap(int i, double gap, int partner);
+  Vec3 image_shift(int from_cell, int to_cell) const;
+
+  Particles p_;
+  Rule rule_;
+  CellGrid grid_;
+  EventCalendar calendar_;
+  std::vector<double> event_time_;
+  std::vector<std::int32_t> partner_;        // >= 0: partner id; < 0: cell face to cross (-1 - face)
+  std::vector<std::uint32_t> count_;         // collisions of each particle since the last rebuild
+  std::vector<std::uint32_t> partner_count_; // partner's count when the event was predicted
+  std::vector<std::uint16_t> stall_;         // consecutive collisions without time advancing (dissipative rules)
+  double now_;
+  EngineCounters c_;
+  std::vector<CollisionRecord>* log_ = nullptr;
+};
+
+}  // namespace coolgas

@@ -1,0 +1,41 @@
+// When do two moving unit-diameter spheres touch? The one formula both
+// engines use, so that the fast engine can be checked against the reference.
+#pragma once
+#include <cmath>
+#include <limits>
+
+#include "simulate/particles.h"
+
+namespace coolgas {
+
+inline constexpr double kNever = std::numeric_limits<double>::infinity();
+
+// dr = r_j - r_i and dv = v_j - v_i at the same instant; returns the time
+// from that instant until contact (|dr| = sigma), or kNever if they do not
+// approach or miss. A pair found overlapping by round-off while approaching
+// collides at once (returns 0), so nothing ever tunnels through another.
+inline double time_to_contact(const Vec3& dr, const Vec3& dv, double sigma2 = 1.0) {
+  const double b = dot(dr, dv);
+  if (b >= 0) return kNever;  // moving apart or sideways
+  const double gap2 = dot(dr, dr) - sigma2;
+  if (gap2 <= 0) return 0.0;  // overlapping by round-off and approaching
+  const double v2 = dot(dv, dv);
+  const double disc = b * b - v2 * gap2;
+  if (disc <= 0) return kNever;  // they miss
+  // gap2 / (-b + sqrt(disc)) equals (-b - sqrt(disc)) / v2 without its cancellation.
+  return gap2 / (-b + std::sqrt(disc));
+}
+
+// Applies the paper's Eq. (1) to velocities vi, vj with the unit normal n
+// pointing from i to j: the normal relative velocity is reversed and scaled
+// by r, the tangential one unchanged, momentum conserved. g = n·(vi − vj) > 0
+// is the normal relative speed before the collision.
+inline void apply_restitution(Vec3& vi, Vec3& vj, const Vec3& n, double g, double r) {
+  const double k = 0.5 * (1.0 + r) * g;
+  for (int d = 0; d < 3; ++d) {
+    vi[d] -= k * n[d];
+    vj[d] += k * n[d];
+  }
+}
+
+}  // namespace coolgas

@@ -1,0 +1,43 @@
+// Particle storage: structure of arrays, one array per field, indexed by
+// particle id. Positions are stored lazily: r[i] is particle i's position at
+// its own time t[i]; its position at time T is r[i] + v[i] (T - t[i]).
+#pragma once
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace coolgas {
+
+struct Vec3 {
+  double x = 0, y = 0, z = 0;
+  double& operator[](int d) { return (&x)[d]; }
+  double operator[](int d) const { return (&x)[d]; }
+};
+static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 must be three packed doubles (dumped as N x 3)");
+
+inline double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+
+using Image = std::array<std::int32_t, 3>;
+
+struct Particles {
+  double L = 0;                      // periodic box side
+  std::vector<Vec3> r;               // position at time t[i], wrapped into the box
+  std::vector<Vec3> v;               // velocity
+  std::vector<double> t;             // time at which r[i] is valid
+  std::vector<Image> image;          // periodic image counts (unwrapped = r + L * image)
+
+  std::size_t size() const { return r.size(); }
+  void resize(std::size_t n) {
+    r.resize(n);
+    v.resize(n);
+    t.resize(n);
+    image.resize(n);
+  }
+};
+
+// Kinetic energy per particle, Σ ½ v² / N (unit masses), summed with
+// Neumaier compensation so that E/E0 stays accurate down to 1e-12 and below.
+double kinetic_energy_per_particle(const Particles& p);
+Vec3 total_momentum(const Particles& p);
+
+}  // namespace coolgas

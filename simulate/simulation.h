@@ -1,0 +1,24 @@
+// One run of coolgas-simulate: scene -> initial state (or resume point) ->
+// engine -> observables and dumps in an H5MD file, with progress, signals
+// and collapse handled. The main() only parses the command line.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace coolgas {
+
+struct SimulationRequest {
+  std::string scene_path;              // SCENE.toml (empty when resuming)
+  std::string output;                  // -o; default: the scene's name with .h5
+  std::string resume;                  // --resume FILE
+  std::vector<std::string> overrides;  // --set key=value
+  bool force = false;                  // overwrite an existing output
+  bool quiet = false;                  // no progress line
+};
+
+// Returns the process exit code: 0 done, 3 interrupted by a signal (a final
+// dump was written), 4 inelastic collapse (a final dump was written).
+// Throws InputError for bad input, before anything is written.
+int run_simulation(const SimulationRequest& request);
+
+}  // namespace coolgas
