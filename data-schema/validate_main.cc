@@ -1,0 +1,46 @@
+// coolgas-validate FILE: checks a trajectory against the coolgas H5MD profile.
+// Problems go to stdout, one line each, so they can be piped and counted;
+// a file that cannot be opened at all is one error line on stderr.
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "common/error.h"
+#include "common/tool_main.h"
+#include "data-schema/validator.h"
+
+namespace {
+
+constexpr const char* kDescription =
+    "Checks a trajectory file against the coolgas H5MD profile (data-schema/h5md-profile.md):\n"
+    "every listed group, attribute, element and dataset exists with its type and shape;\n"
+    "h5md version [1, 1], author and creator; box dimension 3, boundary periodic x3, edges diag(L, L, L);\n"
+    "N from /parameters/N matches the particle arrays; particle elements share F rows, observables K rows;\n"
+    "times never decrease; positions lie in [0, L); velocities and observables are finite;\n"
+    "/restart has F rows and the dump times; /parameters holds every documented attribute.\n"
+    "Objects the profile does not list are ignored (schema versions only add).\n"
+    "Output: 'FILE: valid (...)' and exit 0, or one line 'FILE: PATH: PROBLEM' per problem on stdout\n"
+    "and exit 2. A missing or non-HDF5 file: one error line on stderr, exit 2.";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return coolgas::run_tool("coolgas-validate", [&]() -> int {
+    CLI::App app(kDescription, "coolgas-validate");
+    std::string file;
+    app.add_option("FILE", file, "trajectory file (HDF5) to check")->required();
+    try {
+      app.parse(argc, argv);
+    } catch (const CLI::Success& e) {
+      return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+      throw coolgas::InputError(e.what());
+    }
+    const auto report = coolgas::schema::validate(file);
+    if (report.valid()) {
+      std::cout << coolgas::schema::valid_line(file, report.summary, coolgas::schema::h5md_profile().version) << "\n";
+      return coolgas::kExitOk;
+    }
+    for (const auto& p : report.problems) std::cout << coolgas::schema::problem_line(file, p) << "\n";
+    return coolgas::kExitInput;
+  });
+}

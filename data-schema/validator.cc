@@ -1,0 +1,268 @@
+#include "data-schema/validator.h"
+
+#include <algorithm>
+#include <map>
+#include <optional>
+#include <set>
+
+#include "common/hdf5_file.h"
+#include "data-schema/hdf5_inspect.h"
+#include "data-schema/value_checks.h"
+
+namespace coolgas::schema {
+namespace {
+
+std::string path_of(std::string_view base, std::string_view name) {
+  return std::string(base) + "/" + std::string(name);
+}
+
+std::string attr_text(const AttributeRef& a) { return path_of(a.group, a.name); }
+
+// An element whose step, time and value were found right and agree in rows.
+struct GoodElement {
+  std::string path;
+  RowCount kind;
+  hsize_t rows;
+};
+
+// One validation run over one open file. Structure checks come first; value
+// scans run only on datasets whose type and shape were found right.
+class Checker {
+ public:
+  Checker(hid_t file, const Profile& profile, const ValidateOptions& options)
+      : file_(file), profile_(profile), options_(options) {}
+
+  Report run() {
+    read_schema_version();
+    for (const GroupSpec& g : profile_.groups) check_group(g);
+    for (const AttributeSpec& a : profile_.attributes) check_attribute(a);
+    read_box_parameters();
+    for (const ElementSpec& e : profile_.elements) guarded(e.path, [&] { check_element(e); });
+    check_shared_rows(RowCount::kFrames, profile_.frames_from);
+    check_shared_rows(RowCount::kObservableRows, profile_.observable_rows_from);
+    for (const DatasetSpec& d : profile_.datasets) guarded(d.path, [&] { check_dataset(d); });
+    report_.summary = {N_.value_or(0), rows_of(profile_.frames_from), rows_of(profile_.observable_rows_from)};
+    return std::move(report_);
+  }
+
+ private:
+  void problem(std::string_view path, std::string what) {
+    report_.problems.push_back({std::string(path), std::move(what)});
+  }
+
+  // A read failure inside one object (corrupt chunk, ...) is that object's problem, not the end of the run.
+  template <class F>
+  void guarded(std::string_view path, F&& body) {
+    try {
+      body();
+    } catch (const std::exception& e) {
+      problem(path, std::string("cannot read: ") + e.what());
+    }
+  }
+
+  // Rows added in a later schema version are optional in files of earlier versions.
+  bool required(Presence presence, int since) const {
+    return presence == Presence::kRequired && since <= file_version_;
+  }
+
+  // A missing or nonsensical version (reported by the attribute check) holds
+  // the file to everything this profile knows.
+  void read_schema_version() {
+    AttributeFound v;
+    const AttributeRef& ref = profile_.schema_version;
+    const bool usable = read_attribute(file_, ref.group, ref.name, v) && v.type.starts_with("int") && v.dims.empty() &&
+                        v.first_integer >= 1;
+    file_version_ = usable ? static_cast<int>(v.first_integer) : profile_.version;
+  }
+
+  void check_group(const GroupSpec& g) {
+    const ObjectKind kind = kind_of(file_, g.path);
+    if (kind == ObjectKind::kMissing && required(g.presence, g.since))
+      problem(g.path, "missing group (" + std::string(g.meaning) + ")");
+    else if (kind != ObjectKind::kMissing && kind != ObjectKind::kGroup)
+      problem(g.path, "is not a group");
+  }
+
+  void check_attribute(const AttributeSpec& a) {
+    if (kind_of(file_, a.group) == ObjectKind::kMissing) return;  // reported with the group
+    const std::string name = "attribute '" + std::string(a.name) + "'";
+    AttributeFound found;
+    if (!read_attribute(file_, a.group, a.name, found)) {
+      if (required(a.presence, a.since))
+        problem(a.group,
+                "missing " + name + " (" + std::string(type_name(a.type)) + ", " + std::string(a.meaning) + ")");
+      return;
+    }
+    const std::vector<hsize_t> want_dims = a.length ? std::vector<hsize_t>{*a.length} : std::vector<hsize_t>{};
+    if (found.type != type_name(a.type) && !(a.type == DataType::kInteger && found.type.starts_with("int")))
+      problem(a.group,
+              name + " has type " + found.type + " but the profile requires " + std::string(type_name(a.type)));
+    else if (found.dims != want_dims)
+      problem(a.group,
+              name + " has shape " + shape_text(found.dims) + " but the profile requires " + shape_text(want_dims));
+    else if (!a.equals.empty() && found.text != a.equals)
+      problem(a.group, name + " is " + found.text + " but the profile requires " + std::string(a.equals));
+    else if (a.at_least && found.first_integer < *a.at_least)
+      problem(a.group, name + " is " + found.text + " but must be at least " + std::to_string(*a.at_least));
+    else
+      good_attributes_.insert(path_of(a.group, a.name));
+  }
+
+  // N and L are needed by shape and value rules; a bad one was reported already.
+  void read_box_parameters() {
+    AttributeFound n, L;
+    const AttributeRef& nr = profile_.particle_count;
+    const AttributeRef& lr = profile_.box_side;
+    if (good_attributes_.count(attr_text(nr)) && read_attribute(file_, nr.group, nr.name, n)) N_ = n.first_integer;
+    if (good_attributes_.count(attr_text(lr)) && read_attribute(file_, lr.group, lr.name, L)) L_ = L.first_number;
+  }
+
+  // Checks existence, type and shape of a series of `rows` rows shaped (R, row...).
+  // Returns its open handle and row count when all are right.
+  std::optional<std::pair<h5::Handle, hsize_t>> check_series(const std::string& path, DataType type, RowCount rows,
+                                                             const std::vector<Extent>& row) {
+    const ObjectKind kind = kind_of(file_, path);
+    if (kind != ObjectKind::kDataset) {
+      problem(path, kind == ObjectKind::kMissing ? "missing dataset" : "is not a dataset");
+      return std::nullopt;
+    }
+    h5::Handle ds = h5::open_dataset(file_, path);
+    h5::Handle t(H5Dget_type(ds.id()));
+    if (!type_matches(type, t.id())) {
+      problem(path, "type " + describe_type(t.id()) + " but the profile requires " + std::string(type_name(type)));
+      return std::nullopt;
+    }
+    const std::vector<hsize_t> dims = h5::shape(ds.id());
+    if (!shape_fits(dims, row)) {
+      std::string what = "shape " + shape_text(dims) + " but the profile requires " + shape_rule(rows, row);
+      if (N_ && std::any_of(row.begin(), row.end(), [](const Extent& e) { return e.particles; }))
+        what += " with N = " + std::to_string(*N_) + " from " + attr_text(profile_.particle_count);
+      problem(path, what);
+      return std::nullopt;
+    }
+    return std::make_pair(std::move(ds), dims[0]);
+  }
+
+  // Rank and every fixed extent must match; N only when /parameters/N was readable.
+  bool shape_fits(const std::vector<hsize_t>& dims, const std::vector<Extent>& row) const {
+    if (dims.size() != row.size() + 1) return false;
+    for (std::size_t k = 0; k < row.size(); ++k) {
+      const Extent& e = row[k];
+      if (e.particles ? (N_ && dims[k + 1] != static_cast<hsize_t>(*N_)) : dims[k + 1] != e.size) return false;
+    }
+    return true;
+  }
+
+  void check_element(const ElementSpec& e) {
+    const ObjectKind kind = kind_of(file_, e.path);
+    if (kind == ObjectKind::kMissing) {
+      if (required(e.presence, e.since)) problem(e.path, "missing element (" + std::string(e.meaning) + ")");
+      return;
+    }
+    if (kind != ObjectKind::kGroup) return problem(e.path, "is not a group (an H5MD element holds step, time, value)");
+    auto step = check_series(path_of(e.path, "step"), DataType::kInt64, e.rows, {});
+    auto time = check_series(path_of(e.path, "time"), DataType::kFloat64, e.rows, {});
+    auto value = check_series(path_of(e.path, "value"), e.type, e.rows, e.row);
+    if (time) check_found(path_of(e.path, "time"), check_nondecreasing(time->first.id(), options_.block_values));
+    if (value) check_values(e, value->first.id());
+    if (!step || !time || !value) return;
+    if (step->second != value->second || time->second != value->second)
+      return problem(e.path, "step, time and value have " + std::to_string(step->second) + ", " +
+                                 std::to_string(time->second) + " and " + std::to_string(value->second) +
+                                 " rows; they must agree");
+    good_.push_back({std::string(e.path), e.rows, value->second});
+  }
+
+  void check_values(const ElementSpec& e, hid_t value) {
+    const std::string path = path_of(e.path, "value");
+    const std::size_t block = options_.block_values;
+    const std::string L_from = attr_text(profile_.box_side);
+    switch (e.rule) {
+      case ValueRule::kAny:
+        break;
+      case ValueRule::kFinite:
+        check_found(path, check_finite(value, block));
+        break;
+      case ValueRule::kInsideBox:
+        if (L_) check_found(path, check_inside_box(value, *L_, L_from, block));
+        break;
+      case ValueRule::kBoxMatrix:
+        if (L_) check_found(path, check_box_matrix(value, *L_, L_from, block));
+        break;
+    }
+  }
+
+  void check_found(std::string_view path, const Finding& f) {
+    if (f) problem(path, *f);
+  }
+
+  const GoodElement* good(std::string_view path) const {
+    for (const GoodElement& g : good_)
+      if (g.path == path) return &g;
+    return nullptr;
+  }
+
+  hsize_t rows_of(std::string_view element) const {
+    const GoodElement* g = good(element);
+    return g ? g->rows : 0;
+  }
+
+  // Every element of one kind has the rows of the reference element (or, if
+  // that one is broken, of the first good one of its kind).
+  void check_shared_rows(RowCount kind, std::string_view reference) {
+    const GoodElement* ref = good(reference);
+    for (const GoodElement& g : good_)
+      if (!ref && g.kind == kind) ref = &g;
+    if (!ref) return;
+    reference_[kind] = *ref;
+    for (const GoodElement& g : good_)
+      if (g.kind == kind && g.rows != ref->rows) problem(g.path, rows_message(g.rows, *ref));
+  }
+
+  static std::string rows_message(hsize_t rows, const GoodElement& ref) {
+    return std::to_string(rows) + " rows but " + std::string(row_count_symbol(ref.kind)) + " = " +
+           std::to_string(ref.rows) + " from " + ref.path;
+  }
+
+  void check_dataset(const DatasetSpec& d) {
+    if (kind_of(file_, d.path) == ObjectKind::kMissing && !required(d.presence, d.since)) return;
+    auto ds = check_series(std::string(d.path), d.type, d.rows, {});
+    if (!ds) return;
+    const auto ref = reference_.find(d.rows);
+    if (ref != reference_.end() && ds->second != ref->second.rows)
+      return problem(d.path, rows_message(ds->second, ref->second));
+    if (!d.same_as.empty() && kind_of(file_, d.same_as) == ObjectKind::kDataset) {
+      h5::Handle other = h5::open_dataset(file_, std::string(d.same_as));
+      if (h5::shape(other.id()) == h5::shape(ds->first.id()))
+        check_found(d.path, check_equal(ds->first.id(), other.id(), d.same_as, options_.block_values));
+    }
+  }
+
+  hid_t file_;
+  const Profile& profile_;
+  const ValidateOptions& options_;
+  Report report_;
+  int file_version_ = 0;
+  std::set<std::string> good_attributes_;
+  std::optional<std::int64_t> N_;
+  std::optional<double> L_;
+  std::vector<GoodElement> good_;              // in table order
+  std::map<RowCount, GoodElement> reference_;  // the element defining F or K
+};
+
+}  // namespace
+
+Report validate(const std::string& path, const Profile& profile, const ValidateOptions& options) {
+  h5::Handle file = h5::open_file(path, h5::Mode::kReadOnly);
+  return Checker(file.id(), profile, options).run();
+}
+
+std::string problem_line(const std::string& file, const Problem& p) { return file + ": " + p.path + ": " + p.what; }
+
+std::string valid_line(const std::string& file, const Summary& s, int profile_version) {
+  return file + ": valid (coolgas H5MD profile v" + std::to_string(profile_version) + ", " +
+         std::to_string(s.particles) + " particles, " + std::to_string(s.frames) + " frames, " +
+         std::to_string(s.observable_rows) + " observable rows)";
+}
+
+}  // namespace coolgas::schema

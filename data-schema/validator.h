@@ -1,0 +1,53 @@
+// Checks a trajectory file against the coolgas H5MD profile and lists every
+// problem found, each naming the path and what is wrong with it.
+//
+// What is checked: each group, attribute, element and dataset of the profile
+// tables (h5md_profile.h) exists with its type and shape; N (/parameters/N)
+// matches the particle arrays; the particle elements share F rows and the
+// observables K rows; times never decrease; positions lie in [0, L);
+// velocities and observables are finite; box edges are diag(L, L, L);
+// /restart has F rows and the dump times. Objects the profile does not list
+// are ignored (later versions only add). Rows an element gained in a later
+// schema version are required only from that version on.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "data-schema/h5md_profile.h"
+
+namespace coolgas::schema {
+
+struct Problem {
+  std::string path;  // "/particles/all/position/value"
+  std::string what;  // "[1, 0, 2] = 5.5 is outside [0, L) with L = 5 from /parameters/L"
+};
+
+// What the file holds, as far as it could be read.
+struct Summary {
+  std::int64_t particles = 0;   // N
+  hsize_t frames = 0;           // F
+  hsize_t observable_rows = 0;  // K
+};
+
+struct Report {
+  std::vector<Problem> problems;  // in profile-table order
+  Summary summary;
+  bool valid() const { return problems.empty(); }
+};
+
+struct ValidateOptions {
+  // Numbers read at once when scanning values: bounds memory for huge frames.
+  std::size_t block_values = std::size_t{1} << 20;
+};
+
+// Throws InputError if `path` is missing or not an HDF5 file.
+Report validate(const std::string& path, const Profile& profile = h5md_profile(), const ValidateOptions& options = {});
+
+// "FILE: /path: what"
+std::string problem_line(const std::string& file, const Problem& p);
+// "FILE: valid (coolgas H5MD profile v1, N particles, F frames, K observable rows)"
+std::string valid_line(const std::string& file, const Summary& s, int profile_version);
+
+}  // namespace coolgas::schema

@@ -1,0 +1,34 @@
+// Checks on the numbers inside a dataset, streamed in bounded blocks: a frame
+// of 8e6 particles (192 MB) is never read whole, let alone all frames.
+// Each check returns the problem ("[1, 0, 2] = nan is not finite"), naming
+// the first offending element and how many more there are, or nothing.
+#pragma once
+#include <hdf5.h>
+
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <span>
+#include <string>
+
+namespace coolgas::schema {
+
+// Reads a numeric dataset in row-major order as doubles, at most
+// `block_values` numbers at a time (at least one innermost row); visit gets
+// the flat index of the block's first number and the numbers.
+void for_each_block(hid_t dataset, std::size_t block_values,
+                    const std::function<void(hsize_t first, std::span<const double> values)>& visit);
+
+using Finding = std::optional<std::string>;
+
+Finding check_finite(hid_t dataset, std::size_t block_values);
+// Finite and 0 <= x < L.
+Finding check_inside_box(hid_t dataset, double L, std::string_view L_source, std::size_t block_values);
+// Every row of a (R, 3, 3) dataset equals diag(L, L, L).
+Finding check_box_matrix(hid_t dataset, double L, std::string_view L_source, std::size_t block_values);
+// Values never decrease along a (R,) dataset.
+Finding check_nondecreasing(hid_t dataset, std::size_t block_values);
+// Two (R,) datasets of equal length hold the same numbers.
+Finding check_equal(hid_t dataset, hid_t reference, std::string_view reference_path, std::size_t block_values);
+
+}  // namespace coolgas::schema
