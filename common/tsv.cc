@@ -82,11 +82,32 @@ double parse_field(const std::string& tok, const std::string& where) {
 
 }  // namespace
 
+namespace {
+
+std::string trim(std::string s) {
+  s.erase(0, s.find_first_not_of(" \t"));
+  s.erase(s.find_last_not_of(" \t") + 1);
+  return s;
+}
+
+// Header comments before the first data row: "key: value" lines are
+// provenance; the first other line names the columns; later ones (such as a
+// block's "# t = 10") are ignored.
+void read_header_line(Table& t, const std::string& text) {
+  const auto colon = text.find(':');
+  if (colon != std::string::npos) {
+    t.provenance.emplace_back(trim(text.substr(0, colon)), trim(text.substr(colon + 1)));
+  } else if (t.columns.empty()) {
+    t.columns = split_fields(text);
+  }
+}
+
+}  // namespace
+
 Table read_table(std::istream& in, const std::string& source) {
   Table t;
   t.source = source;
   std::string line;
-  std::vector<std::string> header;
   int block = 0, blank_run = 0;
   long lineno = 0;
   while (std::getline(in, line)) {
@@ -97,16 +118,11 @@ Table read_table(std::istream& in, const std::string& source) {
       continue;
     }
     if (line[0] == '#') {
-      if (t.rows.empty()) header.push_back(line.substr(1));
+      if (t.rows.empty()) read_header_line(t, line.substr(1));
       continue;
     }
-    if (t.rows.empty()) {
-      if (header.empty()) throw InputError(source + ": no header (expected '# column names' before data)");
-      t.columns = split_fields(header.back());
-      header.pop_back();
-    } else if (blank_run > 0) {
-      ++block;
-    }
+    if (t.columns.empty()) throw InputError(source + ": no header (expected '# column names' before data)");
+    if (!t.rows.empty() && blank_run > 0) ++block;
     blank_run = 0;
     const std::string where = source + ":" + std::to_string(lineno);
     auto fields = split_fields(line);
@@ -120,16 +136,6 @@ Table read_table(std::istream& in, const std::string& source) {
     t.row_block.push_back(block);
   }
   if (t.rows.empty()) throw InputError(source + ": empty table (no data rows)");
-  for (const auto& h : header) {
-    auto colon = h.find(':');
-    if (colon == std::string::npos) continue;
-    auto trim = [](std::string s) {
-      s.erase(0, s.find_first_not_of(' '));
-      s.erase(s.find_last_not_of(' ') + 1);
-      return s;
-    };
-    t.provenance.emplace_back(trim(h.substr(0, colon)), trim(h.substr(colon + 1)));
-  }
   return t;
 }
 

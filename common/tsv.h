@@ -4,7 +4,7 @@
 //   # tool: coolgas-energy            <- provenance: "# key: value" lines
 //   # version: 0.1.0 (abc123)
 //   # input: run.h5
-//   # t<TAB>E<TAB>E_over_E0           <- last header comment: column names
+//   # t<TAB>E<TAB>E_over_E0           <- first comment without ':': column names
 //   0.01<TAB>1.5<TAB>1
 //
 // Blank lines separate blocks (gnuplot's "index"); a comment line after the

@@ -10,10 +10,9 @@ namespace coolgas {
 
 namespace {
 // Inelastic collapse shows as one particle colliding again and again while
-// simulated time stops advancing. These many collisions in a row, each less
-// than kStallGap (relative to 1 + t) after the particle's previous event,
-// mean collapse: no physical gas with a working δ cut-off does that.
-constexpr int kCollapseCollisions = 200;
+// simulated time stops advancing: rule.collapse_limit() collisions in a row,
+// each less than kStallGap (relative to 1 + t) after the particle's previous
+// event.
 constexpr double kStallGap = 1e-11;
 constexpr int kInterruptCheckMask = 4095;  // look at the interrupt flag every 4096 events
 }  // namespace
@@ -147,24 +146,23 @@ void Engine<Rule>::cross(int i, int code) {
 
 template <class Rule>
 void Engine<Rule>::note_collision_gap(int i, double gap, int partner) {
-  if (gap > kStallGap * (1.0 + now_)) {
-    stall_[i] = 0;
-    return;
+  if constexpr (Rule::kDissipative) {  // elastic spheres cannot collapse
+    if (gap > kStallGap * (1.0 + now_)) {
+      stall_[i] = 0;
+      return;
+    }
+    if (++stall_[i] < rule_.collapse_limit()) return;
+    std::ostringstream s;
+    s << "inelastic collapse at t = " << now_ << ": particle " << i << " collided " << rule_.collapse_limit()
+      << " times in a row (last with particle " << partner << ") without simulated time advancing";
+    throw CollapseError(s.str(), now_);
   }
-  if (++stall_[i] < kCollapseCollisions) return;
-  std::ostringstream s;
-  s << "inelastic collapse at t = " << now_ << ": particle " << i << " collided " << kCollapseCollisions
-    << " times in a row (last with particle " << partner << ") without simulated time advancing;"
-    << " the delta cut-off prevents this: set collision.delta > 0 (the paper uses 1e-4)";
-  throw CollapseError(s.str(), now_);
 }
 
 template <class Rule>
 void Engine<Rule>::collide(int i, int j) {
-  if constexpr (Rule::kDissipative) {
-    note_collision_gap(i, now_ - p_.t[i], j);
-    note_collision_gap(j, now_ - p_.t[j], i);
-  }
+  note_collision_gap(i, now_ - p_.t[i], j);
+  note_collision_gap(j, now_ - p_.t[j], i);
   advance(i);
   advance(j);
   const Vec3 s = image_shift(grid_.cell(i), grid_.cell(j));

@@ -161,7 +161,9 @@ int drive(const Scene& scene, EngineBase& engine, H5mdWriter& writer, bool quiet
   try {
     return driver.run();
   } catch (const CollapseError& e) {
-    return driver.finish_collapsed(e.what());
+    const std::string hint = scene.delta > 0 ? "; increase collision.delta (now " + format_number(scene.delta) + ")"
+                                             : "; set collision.delta > 0 (the paper uses 1e-4)";
+    return driver.finish_collapsed(e.what() + hint);
   }
 }
 

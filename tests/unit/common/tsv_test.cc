@@ -31,6 +31,21 @@ TEST(Tsv, RoundTripKeepsEveryBitAndTheProvenance) {
   EXPECT_FALSE(t.get("absent").has_value());
 }
 
+TEST(Tsv, ABlockCommentBeforeTheFirstRowIsNotTheColumnLine) {
+  std::ostringstream out;
+  {
+    TsvWriter w(out, "coolgas-test", {{"L", "16"}}, {"t", "m", "N"});
+    w.block("t = 10");
+    w.row({10, 1, 0.5});
+    w.block("t = 20");
+    w.row({20, 1, 0.25});
+  }
+  std::istringstream in(out.str());
+  Table t = read_table(in, "mem");
+  EXPECT_EQ(t.columns, (std::vector<std::string>{"t", "m", "N"}));
+  EXPECT_EQ(t.row_block, (std::vector<int>{0, 1}));
+}
+
 TEST(Tsv, RejectsEmptyRaggedNonNumericAndNaN) {
   auto read = [](const std::string& s) {
     std::istringstream in(s);

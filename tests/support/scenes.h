@@ -1,0 +1,27 @@
+// Scenes for engine tests, built in code (the parser has tests of its own).
+#pragma once
+#include <cmath>
+
+#include "simulate/scene.h"
+
+namespace coolgas::test {
+
+inline Scene elastic_scene(std::int64_t N, double phi, std::int64_t seed = 1) {
+  Scene s;
+  s.N = N;
+  s.phi = phi;
+  s.L = std::cbrt(double(N) * M_PI / (6.0 * phi));
+  s.seed = seed;
+  s.t_end = 1;
+  return s;
+}
+
+inline Scene inelastic_scene(std::int64_t N, double phi, double r0, double delta, std::int64_t seed = 1) {
+  Scene s = elastic_scene(N, phi, seed);
+  s.model = CollisionModel::kInelastic;
+  s.r0 = r0;
+  s.delta = delta;
+  return s;
+}
+
+}  // namespace coolgas::test
