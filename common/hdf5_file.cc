@@ -94,9 +94,14 @@ Handle open_file(const std::string& path, Mode mode) {
     case Mode::kReadWrite: id = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT); break;
   }
   if (id < 0) {
-    const bool reading = mode == Mode::kReadOnly || mode == Mode::kReadWrite;
-    throw InputError(reading ? "cannot open '" + path + "' as an HDF5 file (missing, unreadable or not HDF5)"
-                             : "cannot create '" + path + "' (directory missing or not writable?)");
+    switch (mode) {
+      case Mode::kReadOnly:
+        throw InputError("cannot open '" + path + "' as an HDF5 file (missing, unreadable or not HDF5)");
+      case Mode::kReadWrite:
+        throw InputError("cannot open '" + path + "' to append (missing, not HDF5, or open in another program)");
+      default:
+        throw InputError("cannot create '" + path + "' (directory missing or not writable?)");
+    }
   }
   return Handle(id);
 }

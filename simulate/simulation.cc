@@ -1,5 +1,7 @@
 #include "simulate/simulation.h"
 
+#include <unistd.h>
+
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -156,6 +158,16 @@ std::string default_output(const std::string& scene_path) {
   return std::filesystem::path(scene_path).stem().string() + ".h5";
 }
 
+// Checked before the (possibly long) set-up, so a typo costs nothing.
+void check_writable(const std::string& out, bool force) {
+  if (!force && std::filesystem::exists(out))
+    throw InputError("output '" + out + "' exists; pass --force to overwrite it (or --resume it)");
+  const auto dir = std::filesystem::path(out).parent_path();
+  const std::string d = dir.empty() ? "." : dir.string();
+  if (!std::filesystem::is_directory(d)) throw InputError("cannot write '" + out + "': no directory '" + d + "'");
+  if (access(d.c_str(), W_OK) != 0) throw InputError("cannot write '" + out + "': directory '" + d + "' is not writable");
+}
+
 int drive(const Scene& scene, EngineBase& engine, H5mdWriter& writer, bool quiet) {
   Driver driver(scene, engine, writer, 1.5 * initial_temperature(scene), quiet);
   try {
@@ -170,9 +182,12 @@ int drive(const Scene& scene, EngineBase& engine, H5mdWriter& writer, bool quiet
 int start_new(const SimulationRequest& req) {
   const Scene scene = parse_scene(read_file(req.scene_path), req.scene_path, req.overrides);
   const std::string out = req.output.empty() ? default_output(req.scene_path) : req.output;
-  if (!req.force && std::filesystem::exists(out))
-    throw InputError("output '" + out + "' exists; pass --force to overwrite it (or --resume it)");
+  check_writable(out, req.force);
   auto engine = make_engine(scene, initial_state(scene), 0.0);
+  if (g_interrupt) {
+    std::cerr << "coolgas-simulate: interrupted by signal " << int(g_interrupt) << " during set-up; nothing written\n";
+    return kExitInterrupted;
+  }
   // Write the first dump to a temporary name and move it into place only
   // then: a run that fails to start leaves no file, and --force replaces an
   // old file only with a readable new one.
@@ -186,7 +201,6 @@ int start_new(const SimulationRequest& req) {
     std::filesystem::remove(tmp);
     throw;
   }
-  install_signal_handlers();
   return drive(scene, *engine, writer, req.quiet);
 }
 
@@ -206,12 +220,16 @@ int resume(const SimulationRequest& req) {
   auto engine = make_engine(scene, std::move(rp.particles), rp.time, rp.counters);
   H5mdWriter writer = H5mdWriter::reopen(req.resume);
   writer.update_scene(scene.to_toml());
-  install_signal_handlers();
   return drive(scene, *engine, writer, req.quiet);
 }
 
 }  // namespace
 
-int run_simulation(const SimulationRequest& req) { return req.resume.empty() ? start_new(req) : resume(req); }
+int run_simulation(const SimulationRequest& req) {
+  // Installed first, so a signal during set-up is noticed (a shell starts
+  // background jobs with SIGINT ignored, and the default would leave no message).
+  install_signal_handlers();
+  return req.resume.empty() ? start_new(req) : resume(req);
+}
 
 }  // namespace coolgas

@@ -1,0 +1,181 @@
+// coolgas-simulate driven as a user would: bad input is refused with one
+// line and exit code 2 leaving no file; output validates and is read by
+// MDAnalysis; --resume continues bit-identically; signals leave readable files.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "common/hdf5_file.h"
+#include "tests/support/run_command.h"
+
+namespace coolgas {
+namespace {
+
+using test::bin;
+using test::run_command;
+
+const char* kScene = R"([system]
+N = 2000
+phi = 0.208
+seed = 3
+[collision]
+model = "inelastic"
+r0 = 0.1
+delta = 1e-4
+[run]
+t_end = 20
+)";
+
+std::string write_scene(const std::string& dir) {
+  const std::string path = dir + "/gas.toml";
+  std::ofstream(path) << kScene;
+  return path;
+}
+
+std::string simulate(const std::string& args) { return bin("coolgas-simulate") + " -q " + args; }
+
+// Expects exit code 2, one stderr line containing `needle`, and no file at `out`.
+void expect_refused(const std::string& args, const std::string& needle, const std::string& out) {
+  const auto r = run_command(simulate(args));
+  EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
+  EXPECT_EQ(test::line_count(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find(needle), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out)) << args;
+  EXPECT_FALSE(std::filesystem::exists(out + ".partial")) << args;
+}
+
+TEST(SimulateCli, BadInputIsRefusedWithOneLineAndNoFile) {
+  const std::string dir = test::scratch_dir("simulate_bad_input");
+  const std::string scene = write_scene(dir), out = dir + "/out.h5";
+  const std::string base = scene + " -o " + out + " ";
+  expect_refused(base + "--set system.phy=0.1", "did you mean 'system.phi'", out);
+  expect_refused(base + "--set system.phi=0", "system.phi", out);
+  expect_refused(base + "--set system.phi=0.4", "random sequential addition", out);
+  expect_refused(base + "--set system.N=1", "system.N", out);
+  expect_refused(base + "--set collision.r0=0", "collision.r0", out);
+  expect_refused(base + "--set collision.r0=1.01", "collision.r0", out);
+  expect_refused(base + "--set collision.delta=-1e-4", "collision.delta", out);
+  expect_refused(base + "--set run.t_end=0", "run.t_end", out);
+  expect_refused(base + "--set run.t_end=-5", "run.t_end", out);
+  expect_refused(base + "--bogus-flag", "bogus", out);
+  expect_refused(dir + "/missing.toml -o " + out, "missing.toml", out);
+  expect_refused(scene + " -o " + dir + "/no/such/dir/out.h5", "no directory", dir + "/no/such/dir/out.h5");
+  expect_refused("--resume " + dir + "/missing.h5", "missing.h5", dir + "/missing.h5");
+  std::ofstream(dir + "/corrupt.h5") << "not an HDF5 file\n";
+  const auto r = run_command(simulate("--resume " + dir + "/corrupt.h5"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(test::line_count(r.err), 1) << r.err;
+}
+
+TEST(SimulateCli, ExistingOutputIsKeptWithoutForce) {
+  const std::string dir = test::scratch_dir("simulate_existing");
+  const std::string scene = write_scene(dir), out = dir + "/out.h5";
+  std::ofstream(out) << "precious";
+  const auto r = run_command(simulate(scene + " -o " + out));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--force"), std::string::npos);
+  std::ifstream f(out);
+  std::string content;
+  f >> content;
+  EXPECT_EQ(content, "precious");
+  EXPECT_EQ(run_command(simulate(scene + " -o " + out + " --force")).exit_code, 0);
+}
+
+TEST(SimulateCli, OutputValidatesAndMDAnalysisReadsIt) {
+  const std::string dir = test::scratch_dir("simulate_valid");
+  const std::string out = dir + "/gas.h5";
+  ASSERT_EQ(run_command(simulate(write_scene(dir) + " -o " + out)).exit_code, 0);
+  const auto v = run_command(bin("coolgas-validate") + " " + out);
+  EXPECT_EQ(v.exit_code, 0) << v.out << v.err;
+  h5::Handle f = h5::open_file(out, h5::Mode::kReadOnly);
+  h5::Handle par = h5::open_group(f.id(), "parameters");
+  const double L = h5::read_attr_double(par.id(), "L");
+  const auto m = run_command("/usr/bin/python3 " + test::source("tests/cli/read_with_mdanalysis.py") + " " + out +
+                             " 2000 " + std::to_string(L) + " 4");
+  EXPECT_EQ(m.exit_code, 0) << m.out << m.err;
+}
+
+TEST(SimulateCli, SameSceneAndSeedGiveTheSameFrames) {
+  const std::string dir = test::scratch_dir("simulate_repeat");
+  const std::string scene = write_scene(dir);
+  ASSERT_EQ(run_command(simulate(scene + " -o " + dir + "/a.h5")).exit_code, 0);
+  ASSERT_EQ(run_command(simulate(scene + " -o " + dir + "/b.h5")).exit_code, 0);
+  for (const char* ds : {"particles/all/position/value", "particles/all/velocity/value", "observables/kinetic_energy/value"}) {
+    const auto d = run_command("h5diff " + dir + "/a.h5 " + dir + "/b.h5 /" + ds + " /" + ds);
+    EXPECT_EQ(d.exit_code, 0) << ds << d.out;
+  }
+}
+
+// Frames of `b` from index first_b on equal frames of `a` from first_a, bit for bit.
+void expect_same_frames(const std::string& a, const std::string& b) {
+  h5::Handle fa = h5::open_file(a, h5::Mode::kReadOnly), fb = h5::open_file(b, h5::Mode::kReadOnly);
+  for (const char* el : {"particles/all/position", "particles/all/velocity", "observables/kinetic_energy",
+                         "observables/collisions"}) {
+    h5::Handle ta = h5::open_dataset(fa.id(), std::string(el) + "/time");
+    h5::Handle tb = h5::open_dataset(fb.id(), std::string(el) + "/time");
+    EXPECT_EQ(h5::read_all<double>(ta.id()), h5::read_all<double>(tb.id())) << el;
+    h5::Handle va = h5::open_dataset(fa.id(), std::string(el) + "/value");
+    h5::Handle vb = h5::open_dataset(fb.id(), std::string(el) + "/value");
+    if (std::string(el) == "observables/collisions") {
+      EXPECT_EQ(h5::read_all<std::int64_t>(va.id()), h5::read_all<std::int64_t>(vb.id())) << el;
+    } else {
+      const auto x = h5::read_all<double>(va.id()), y = h5::read_all<double>(vb.id());
+      ASSERT_EQ(x.size(), y.size()) << el;
+      EXPECT_EQ(std::memcmp(x.data(), y.data(), x.size() * sizeof(double)), 0) << el << " differs";
+    }
+  }
+}
+
+TEST(SimulateCli, ResumeContinuesBitIdentically) {
+  const std::string dir = test::scratch_dir("simulate_resume");
+  const std::string scene = write_scene(dir);
+  ASSERT_EQ(run_command(simulate(scene + " -o " + dir + "/whole.h5")).exit_code, 0);
+  // Stop at t = 1 (a dump time of the log grid, exact in binary), then resume to 20.
+  ASSERT_EQ(run_command(simulate(scene + " -o " + dir + "/parts.h5 --set run.t_end=1")).exit_code, 0);
+  const auto r = run_command(simulate("--resume " + dir + "/parts.h5 --set run.t_end=20"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  expect_same_frames(dir + "/whole.h5", dir + "/parts.h5");
+  const auto again = run_command(simulate("--resume " + dir + "/parts.h5"));
+  EXPECT_EQ(again.exit_code, 0);
+  EXPECT_NE(again.err.find("nothing to do"), std::string::npos);
+  const auto bad = run_command(simulate("--resume " + dir + "/parts.h5 --set system.N=10"));
+  EXPECT_EQ(bad.exit_code, 2);
+}
+
+// Starts a long run, sends `signal` once its first dump is in place, returns the exit code.
+int run_and_signal(const std::string& dir, const std::string& signal) {
+  const std::string out = dir + "/long.h5";
+  const std::string cmd = simulate(write_scene(dir) + " -o " + out + " --set system.N=30000 --set run.t_end=1e6") +
+                          " & pid=$!; while [ ! -f " + out + " ]; do sleep 0.1; done; sleep 0.5; kill -" + signal +
+                          " $pid; wait $pid";
+  return run_command(cmd).exit_code;
+}
+
+TEST(SimulateCli, SigintWritesAFinalDumpThatResumes) {
+  const std::string dir = test::scratch_dir("simulate_sigint");
+  EXPECT_EQ(run_and_signal(dir, "INT"), 3);
+  EXPECT_EQ(run_command(bin("coolgas-validate") + " " + dir + "/long.h5").exit_code, 0);
+  double last = 0;
+  {  // closed again before resuming: HDF5 locks a file open elsewhere
+    h5::Handle f = h5::open_file(dir + "/long.h5", h5::Mode::kReadOnly);
+    h5::Handle t = h5::open_dataset(f.id(), "restart/time");
+    last = h5::read_all<double>(t.id()).back();
+  }
+  EXPECT_GT(last, 0.0);
+  const auto r = run_command(simulate("--resume " + dir + "/long.h5 --set run.t_end=" + std::to_string(last * 1.5)));
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
+TEST(SimulateCli, AfterSigkillTheEarlierDumpsStillRead) {
+  const std::string dir = test::scratch_dir("simulate_sigkill");
+  EXPECT_EQ(run_and_signal(dir, "KILL"), 128 + 9);
+  const auto v = run_command(bin("coolgas-validate") + " " + dir + "/long.h5");
+  EXPECT_EQ(v.exit_code, 0) << v.out << v.err;
+  const auto r = run_command(simulate("--resume " + dir + "/long.h5 --set run.t_end=0.05"));
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
+}  // namespace
+}  // namespace coolgas
