@@ -21,14 +21,16 @@ void create_element(hid_t file, const std::string& path, h5::Type type, const st
   h5::create_series(g.id(), "value", type, inner, chunk);
 }
 
-// Appends (step, time, value) to the element at path.
-void append(hid_t file, const std::string& path, std::int64_t step, double time, h5::Type type, const void* value) {
+// Appends (step, time, value) to the element at path; a row of N x 3 values
+// may be spread in memory with `stride` elements per particle.
+void append(hid_t file, const std::string& path, std::int64_t step, double time, h5::Type type, const void* value,
+            int stride = 0) {
   h5::Handle s = h5::open_dataset(file, path + "/step");
   h5::Handle t = h5::open_dataset(file, path + "/time");
   h5::Handle v = h5::open_dataset(file, path + "/value");
   h5::append_row(s.id(), h5::Type::kInt64, &step);
   h5::append_row(t.id(), h5::Type::kFloat64, &time);
-  h5::append_row(v.id(), type, value);
+  h5::append_row(v.id(), type, value, hsize_t(stride));
 }
 
 void truncate_element(hid_t file, const std::string& path, hsize_t rows) {
@@ -145,9 +147,9 @@ void H5mdWriter::add_frame(const FrameView& fr) {
   const hid_t f = file_.id();
   const double edges[9] = {box_, 0, 0, 0, box_, 0, 0, 0, box_};
   append(f, "particles/all/box/edges", fr.collisions, fr.time, h5::Type::kFloat64, edges);
-  append(f, "particles/all/position", fr.collisions, fr.time, h5::Type::kFloat64, fr.position);
+  append(f, "particles/all/position", fr.collisions, fr.time, h5::Type::kFloat64, fr.position, fr.position_stride);
   append(f, "particles/all/image", fr.collisions, fr.time, h5::Type::kInt32, fr.image);
-  append(f, "particles/all/velocity", fr.collisions, fr.time, h5::Type::kFloat64, fr.velocity);
+  append(f, "particles/all/velocity", fr.collisions, fr.time, h5::Type::kFloat64, fr.velocity, fr.velocity_stride);
   h5::Handle rt = h5::open_dataset(f, "restart/time");
   h5::Handle rc = h5::open_dataset(f, "restart/collisions");
   h5::Handle rb = h5::open_dataset(f, "restart/collisions_below_delta");

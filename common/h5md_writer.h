@@ -33,7 +33,9 @@ struct ObservableRow {
   std::array<double, 3> momentum{};
 };
 
-// One dump: N particles, arrays of 3N numbers in particle-id order.
+// One dump: N particles in particle-id order. Particle i's position is
+// position[i * position_stride + 0..2] (likewise velocity), so the records of
+// an engine can be written where they are, without a copy.
 struct FrameView {
   double time = 0;
   std::int64_t collisions = 0;
@@ -41,6 +43,8 @@ struct FrameView {
   const double* position = nullptr;
   const std::int32_t* image = nullptr;
   const double* velocity = nullptr;
+  int position_stride = 3;
+  int velocity_stride = 3;
 };
 
 class H5mdWriter {

@@ -238,7 +238,7 @@ Handle create_series(hid_t loc, const std::string& name, Type type, const std::v
                       "create dataset '" + name + "'"));
 }
 
-void append_row(hid_t dataset, Type type, const void* data) {
+void append_row(hid_t dataset, Type type, const void* data, hsize_t stride) {
   auto dims = shape(dataset);
   const hsize_t row = dims[0];
   dims[0] = row + 1;
@@ -249,7 +249,14 @@ void append_row(hid_t dataset, Type type, const void* data) {
   count[0] = 1;
   check_status(H5Sselect_hyperslab(fspace.id(), H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr),
                "select row");
-  Handle mspace(check(H5Screate_simple(static_cast<int>(count.size()), count.data(), nullptr), "memory space"));
+  std::vector<hsize_t> mem_dims = count;
+  if (stride > mem_dims.back()) mem_dims.back() = stride;  // memory rows are wider: select their first columns
+  Handle mspace(check(H5Screate_simple(static_cast<int>(mem_dims.size()), mem_dims.data(), nullptr), "memory space"));
+  if (mem_dims != count) {
+    const std::vector<hsize_t> zero(count.size(), 0);
+    check_status(H5Sselect_hyperslab(mspace.id(), H5S_SELECT_SET, zero.data(), nullptr, count.data(), nullptr),
+                 "select columns");
+  }
   check_status(H5Dwrite(dataset, mem_type(type), mspace.id(), fspace.id(), H5P_DEFAULT, data), "write row");
 }
 

@@ -68,8 +68,10 @@ std::vector<hsize_t> shape(hid_t dataset);
 // Creates a chunked dataset whose first dimension grows: shape (0, inner...).
 Handle create_series(hid_t loc, const std::string& name, Type type, const std::vector<hsize_t>& inner,
                      hsize_t chunk_rows);
-// Appends one row (a block of prod(inner) elements) at the end of the first dimension.
-void append_row(hid_t dataset, Type type, const void* data);
+// Appends one row (a block of prod(inner) elements) at the end of the first
+// dimension. With a row shape (N, k) and stride > k, the k elements of item i
+// are read from data[i * stride ...] (HDF5 gathers them; nothing is copied).
+void append_row(hid_t dataset, Type type, const void* data, hsize_t stride = 0);
 // Shrinks or grows the first dimension to n rows (used to drop rows after a resume point).
 void resize_rows(hid_t dataset, hsize_t n);
 // Reads rows [first, first+count) of a dataset into a flat buffer.

@@ -27,7 +27,8 @@ CellGrid::CellGrid(double L, double min_width, std::size_t n) {
   n_ = static_cast<int>(std::floor(L / (min_width * kWidthMargin)));
   w_ = L / n_;
   head_.assign(static_cast<std::size_t>(cell_count()), -1);
-  next_.assign(n, -1);
+  own_next_.assign(n, -1);
+  next_ = own_next_.data();
   prev_.assign(n, -1);
   cell_.assign(n, -1);
 }
@@ -40,16 +41,17 @@ int CellGrid::cell_of(double x, double y, double z) const {
 void CellGrid::insert(int p, int cell) {
   cell_[p] = cell;
   prev_[p] = -1;
-  next_[p] = head_[cell];
+  link(p) = head_[cell];
   if (head_[cell] >= 0) prev_[head_[cell]] = p;
   head_[cell] = p;
 }
 
 void CellGrid::remove(int p) {
   const int c = cell_[p];
-  if (prev_[p] >= 0) next_[prev_[p]] = next_[p];
-  else head_[c] = next_[p];
-  if (next_[p] >= 0) prev_[next_[p]] = prev_[p];
+  const int nxt = link(p);
+  if (prev_[p] >= 0) link(prev_[p]) = nxt;
+  else head_[c] = nxt;
+  if (nxt >= 0) prev_[nxt] = prev_[p];
   cell_[p] = -1;
 }
 

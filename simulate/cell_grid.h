@@ -4,6 +4,9 @@
 // neighbours (the 27 cells around, periodic), so collision searches look only
 // there. A particle's cell is logical: it changes only at a cell-crossing
 // event, never by reading the position, so round-off cannot lose a particle.
+// The forward links of the lists may live inside the caller's particle
+// records (bind_next_links), so that walking a cell touches one cache line
+// per particle.
 #pragma once
 #include <cstdint>
 #include <string>
@@ -31,7 +34,13 @@ class CellGrid {
 
   int cell(int particle) const { return cell_[particle]; }
   int first(int cell) const { return head_[cell]; }
-  int next(int particle) const { return next_[particle]; }
+  int next(int particle) const { return next_[std::size_t(particle) * stride_]; }
+  // Keeps the forward links at base[i * stride] instead of in the grid.
+  void bind_next_links(std::int32_t* base, std::size_t stride) {
+    next_ = base;
+    stride_ = stride;
+    own_next_.clear();
+  }
 
   void insert(int particle, int cell);
   void remove(int particle);
@@ -45,7 +54,11 @@ class CellGrid {
   int n_;
   double w_;
   std::vector<std::int32_t> head_;  // first particle of each cell, -1 if empty
-  std::vector<std::int32_t> next_, prev_, cell_;
+  std::vector<std::int32_t> prev_, cell_;
+  std::vector<std::int32_t> own_next_;  // forward links, unless bound to the caller's records
+  std::int32_t* next_;
+  std::size_t stride_ = 1;
+  std::int32_t& link(int p) { return next_[std::size_t(p) * stride_]; }
 };
 
 // The smallest box the grid supports: three cells of the given width, so that

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "common/compensated_sum.h"
 #include "simulate/pair_prediction.h"
 
 namespace coolgas {
@@ -19,44 +20,61 @@ constexpr int kInterruptCheckMask = 4095;  // look at the interrupt flag every 4
 
 template <class Rule>
 Engine<Rule>::Engine(Particles particles, const Rule& rule, double now, const EngineCounters& counters)
-    : p_(std::move(particles)), rule_(rule), grid_(p_.L, 1.0, p_.size()), now_(now), c_(counters) {
-  const std::size_t n = p_.size();
+    : L_(particles.L), rule_(rule), grid_(particles.L, 1.0, particles.size()), now_(now), c_(counters) {
+  const std::size_t n = particles.size();
+  m_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) m_[i] = {particles.r[i], particles.v[i], particles.t[i], 0, -1};
+  grid_.bind_next_links(&m_[0].next, sizeof(Motion) / sizeof(std::int32_t));
+  image_ = std::move(particles.image);
+  particles = Particles();  // the records hold it all now: free the copy before growing more arrays
   event_time_.assign(n, kNever);
   partner_.assign(n, -1);
-  count_.assign(n, 0);
   partner_count_.assign(n, 0);
   if constexpr (Rule::kDissipative) stall_.assign(n, 0);
   synchronize();
 }
 
 template <class Rule>
+Particles Engine<Rule>::snapshot() const {
+  Particles p;
+  p.L = L_;
+  p.resize(m_.size());
+  for (std::size_t i = 0; i < m_.size(); ++i) {
+    p.r[i] = m_[i].r;
+    p.v[i] = m_[i].v;
+    p.t[i] = m_[i].t;
+  }
+  p.image = image_;
+  return p;
+}
+
+template <class Rule>
 void Engine<Rule>::advance(int i) {
-  const double dt = now_ - p_.t[i];
-  Vec3& r = p_.r[i];
-  const Vec3& v = p_.v[i];
-  r.x += v.x * dt;
-  r.y += v.y * dt;
-  r.z += v.z * dt;
-  p_.t[i] = now_;
+  Motion& m = m_[i];
+  const double dt = now_ - m.t;
+  m.r.x += m.v.x * dt;
+  m.r.y += m.v.y * dt;
+  m.r.z += m.v.z * dt;
+  m.t = now_;
 }
 
 template <class Rule>
 void Engine<Rule>::synchronize() {
-  const double L = p_.L;
-  for (std::size_t i = 0; i < p_.size(); ++i) {
+  const double L = L_;
+  for (std::size_t i = 0; i < m_.size(); ++i) {
     advance(int(i));
     for (int d = 0; d < 3; ++d) {
-      double& x = p_.r[i][d];
-      while (x >= L) x -= L, ++p_.image[i][d];
-      while (x < 0) x += L, --p_.image[i][d];
+      double& x = m_[i].r[d];
+      while (x >= L) x -= L, ++image_[i][d];
+      while (x < 0) x += L, --image_[i][d];
       if (x >= L) x = 0;  // x was -tiny and x + L rounded up to L
     }
+    m_[i].count = 0;
   }
   grid_.clear();
-  for (std::size_t i = 0; i < p_.size(); ++i) grid_.insert(int(i), grid_.cell_of(p_.r[i].x, p_.r[i].y, p_.r[i].z));
-  std::fill(count_.begin(), count_.end(), 0u);
+  for (std::size_t i = 0; i < m_.size(); ++i) grid_.insert(int(i), grid_.cell_of(m_[i].r.x, m_[i].r.y, m_[i].r.z));
   std::fill(stall_.begin(), stall_.end(), std::uint16_t{0});
-  for (std::size_t i = 0; i < p_.size(); ++i) find_event(int(i));
+  for (std::size_t i = 0; i < m_.size(); ++i) find_event(int(i));
   calendar_.reset(&event_time_, now_);
 }
 
@@ -66,17 +84,33 @@ void Engine<Rule>::synchronize() {
 template <class Rule>
 Vec3 Engine<Rule>::image_shift(int from, int to) const {
   const CellCoord a = grid_.coord(from), b = grid_.coord(to);
-  auto shift = [&](int ca, int cb) { return cb - ca > 1 ? -p_.L : (ca - cb > 1 ? p_.L : 0.0); };
+  auto shift = [&](int ca, int cb) { return cb - ca > 1 ? -L_ : (ca - cb > 1 ? L_ : 0.0); };
   return {shift(a.x, b.x), shift(a.y, b.y), shift(a.z, b.z)};
+}
+
+template <class Rule>
+void Engine<Rule>::scan_cell(int i, const Vec3& ri, const Vec3& vi, int cell, const Vec3& s, double& best,
+                             int& code) const {
+  for (int j = grid_.first(cell); j >= 0; j = m_[j].next) {
+    if (j == i) continue;
+    const Motion& mj = m_[j];
+    const double dtj = now_ - mj.t;
+    const Vec3 dr{mj.r.x + mj.v.x * dtj + s.x - ri.x, mj.r.y + mj.v.y * dtj + s.y - ri.y,
+                  mj.r.z + mj.v.z * dtj + s.z - ri.z};
+    const Vec3 dv{mj.v.x - vi.x, mj.v.y - vi.y, mj.v.z - vi.z};
+    const double t = time_to_contact(dr, dv);
+    if (t < best) best = t, code = j;
+  }
 }
 
 // Particle i is at now_; finds its earliest event: the first face of its cell
 // it will cross, or an earlier contact with a particle in the 27 cells around.
 template <class Rule>
 void Engine<Rule>::find_event(int i) {
-  const Vec3 ri = p_.r[i], vi = p_.v[i];
+  const Vec3 ri = m_[i].r, vi = m_[i].v;
   const double w = grid_.width();
-  const CellCoord c = grid_.coord(grid_.cell(i));
+  const int home = grid_.cell(i);
+  const CellCoord c = grid_.coord(home);
   const int cc[3] = {c.x, c.y, c.z};
   double best = kNever;
   int code = -1;
@@ -90,38 +124,32 @@ void Engine<Rule>::find_event(int i) {
     }
   }
   const int n = grid_.cells_per_side();
-  const double L = p_.L;
-  for (int oz = -1; oz <= 1; ++oz) {
-    int z = c.z + oz;
-    double sz = 0;
-    if (z < 0) z += n, sz = -L;
-    else if (z >= n) z -= n, sz = L;
-    for (int oy = -1; oy <= 1; ++oy) {
-      int y = c.y + oy;
-      double sy = 0;
-      if (y < 0) y += n, sy = -L;
-      else if (y >= n) y -= n, sy = L;
-      for (int ox = -1; ox <= 1; ++ox) {
-        int x = c.x + ox;
-        double sx = 0;
-        if (x < 0) x += n, sx = -L;
-        else if (x >= n) x -= n, sx = L;
-        for (int j = grid_.first(grid_.index({x, y, z})); j >= 0; j = grid_.next(j)) {
-          if (j == i) continue;
-          const double dtj = now_ - p_.t[j];
-          const Vec3& rj = p_.r[j];
-          const Vec3& vj = p_.v[j];
-          const Vec3 dr{rj.x + vj.x * dtj + sx - ri.x, rj.y + vj.y * dtj + sy - ri.y, rj.z + vj.z * dtj + sz - ri.z};
-          const Vec3 dv{vj.x - vi.x, vj.y - vi.y, vj.z - vi.z};
-          const double t = time_to_contact(dr, dv);
-          if (t < best) best = t, code = j;
-        }
+  const Vec3 zero{};
+  if (c.x > 0 && c.y > 0 && c.z > 0 && c.x < n - 1 && c.y < n - 1 && c.z < n - 1) {
+    // Interior cell: no neighbour wraps, the 27 cells are three runs of
+    // three consecutive indices in each of three planes.
+    for (int oz = -1; oz <= 1; ++oz)
+      for (int oy = -1; oy <= 1; ++oy) {
+        const int row = home + (oz * n + oy) * n;
+        for (int ox = -1; ox <= 1; ++ox) scan_cell(i, ri, vi, row + ox, zero, best, code);
       }
-    }
+  } else {
+    const double L = L_;
+    auto wrap = [n, L](int x, double& shift) {
+      shift = x < 0 ? -L : (x >= n ? L : 0.0);
+      return x < 0 ? x + n : (x >= n ? x - n : x);
+    };
+    for (int oz = -1; oz <= 1; ++oz)
+      for (int oy = -1; oy <= 1; ++oy)
+        for (int ox = -1; ox <= 1; ++ox) {
+          Vec3 s;
+          const int x = wrap(c.x + ox, s.x), y = wrap(c.y + oy, s.y), z = wrap(c.z + oz, s.z);
+          scan_cell(i, ri, vi, grid_.index({x, y, z}), s, best, code);
+        }
   }
   event_time_[i] = now_ + best;
   partner_[i] = code;
-  if (code >= 0) partner_count_[i] = count_[code];
+  if (code >= 0) partner_count_[i] = m_[code].count;
 }
 
 template <class Rule>
@@ -134,12 +162,12 @@ void Engine<Rule>::cross(int i, int code) {
   const int n = grid_.cells_per_side();
   if (up && ++*cd == n) {
     *cd = 0;
-    p_.r[i][d] -= p_.L;
-    ++p_.image[i][d];
+    m_[i].r[d] -= L_;
+    ++image_[i][d];
   } else if (!up && --*cd < 0) {
     *cd = n - 1;
-    p_.r[i][d] += p_.L;
-    --p_.image[i][d];
+    m_[i].r[d] += L_;
+    --image_[i][d];
   }
   grid_.move(i, grid_.index(c));
 }
@@ -161,18 +189,18 @@ void Engine<Rule>::note_collision_gap(int i, double gap, int partner) {
 
 template <class Rule>
 void Engine<Rule>::collide(int i, int j) {
-  note_collision_gap(i, now_ - p_.t[i], j);
-  note_collision_gap(j, now_ - p_.t[j], i);
+  note_collision_gap(i, now_ - m_[i].t, j);
+  note_collision_gap(j, now_ - m_[j].t, i);
   advance(i);
   advance(j);
   const Vec3 s = image_shift(grid_.cell(i), grid_.cell(j));
-  const Vec3& ri = p_.r[i];
-  const Vec3& rj = p_.r[j];
+  const Vec3& ri = m_[i].r;
+  const Vec3& rj = m_[j].r;
   Vec3 n{rj.x + s.x - ri.x, rj.y + s.y - ri.y, rj.z + s.z - ri.z};
   const double inv = 1.0 / std::sqrt(dot(n, n));
   n = {n.x * inv, n.y * inv, n.z * inv};
-  Vec3& vi = p_.v[i];
-  Vec3& vj = p_.v[j];
+  Vec3& vi = m_[i].v;
+  Vec3& vj = m_[j].v;
   const double g = (vi.x - vj.x) * n.x + (vi.y - vj.y) * n.y + (vi.z - vj.z) * n.z;
   if (g > 0) {  // approaching (always, but for round-off at grazing contact)
     bool below = false;
@@ -180,8 +208,8 @@ void Engine<Rule>::collide(int i, int j) {
     apply_restitution(vi, vj, n, g, r);
     c_.below_delta += below;
   }
-  ++count_[i];
-  ++count_[j];
+  ++m_[i].count;
+  ++m_[j].count;
   ++c_.collisions;
   if (log_) log_->push_back({std::min(i, j), std::max(i, j), now_});
 }
@@ -200,7 +228,7 @@ RunStatus Engine<Rule>::run_until(double t_stop, std::int64_t max_events, const 
     ++c_.events;
     const int code = partner_[i];
     if (code >= 0) {
-      if (count_[code] != partner_count_[i]) {  // partner collided since: stale
+      if (m_[code].count != partner_count_[i]) {  // partner collided since: stale
         ++c_.stale;
         advance(i);
         find_event(i);
@@ -220,6 +248,21 @@ RunStatus Engine<Rule>::run_until(double t_stop, std::int64_t max_events, const 
   }
   now_ = std::max(now_, t_stop);
   return RunStatus::kReached;
+}
+
+double kinetic_energy_per_particle(const EngineBase& e) {
+  CompensatedSum s;
+  const Motion* m = e.motion();
+  for (std::size_t i = 0; i < e.size(); ++i) s.add(0.5 * dot(m[i].v, m[i].v));
+  return s.value() / double(e.size());
+}
+
+Vec3 total_momentum(const EngineBase& e) {
+  CompensatedSum s[3];
+  const Motion* m = e.motion();
+  for (std::size_t i = 0; i < e.size(); ++i)
+    for (int d = 0; d < 3; ++d) s[d].add(m[i].v[d]);
+  return {s[0].value(), s[1].value(), s[2].value()};
 }
 
 template class Engine<ElasticRule>;

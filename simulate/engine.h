@@ -11,6 +11,11 @@
 //     predict again";
 //   - an O(1) event calendar (event_calendar.h) whose bucket width adapts;
 //   - lazy positions: a particle is moved only at its own events;
+//   - memory laid out for the partner search, which is bound by memory
+//     latency: what it reads of a candidate (position, velocity, own time,
+//     collision count) sits in one 64-byte record, so a candidate costs one
+//     cache miss instead of four; every other field is an array of its own
+//     (structure of arrays). Measured in tests/bench/engine_bench.cc.
 //   - the collision rule is a template parameter (collision_rules.h), so the
 //     hot loop of an elastic scene contains no inelastic code.
 //
@@ -37,6 +42,17 @@ struct EngineCounters {
   std::int64_t events = 0;       // all events: collisions, cell crossings, stale ones
   std::int64_t stale = 0;        // events found invalid when due
 };
+
+// Everything the partner search reads of a particle, in one cache line.
+struct alignas(64) Motion {
+  Vec3 r;                  // position at time t (wrapped into the box up to round-off)
+  Vec3 v;                  // velocity
+  double t;                // time at which r is valid
+  std::uint32_t count;     // collisions since the last rebuild (lazy invalidation)
+  std::int32_t next;       // next particle in the same cell (the cell grid's list link)
+};
+static_assert(sizeof(Motion) == 64, "one cache line per particle");
+inline constexpr int kMotionStride = sizeof(Motion) / sizeof(double);  // doubles per record
 
 struct CollisionRecord {
   int i, j;  // i < j
@@ -69,13 +85,24 @@ class EngineBase {
   // identical state.
   virtual void synchronize() = 0;
   virtual double now() const = 0;
-  virtual const Particles& particles() const = 0;
+  virtual std::size_t size() const = 0;
+  virtual double box() const = 0;
+  // Read access for observables and dumps: records and image counts in id order.
+  virtual const Motion* motion() const = 0;
+  virtual const Image* images() const = 0;
+  // A copy of the particles in the interchange format (tests, set-up).
+  virtual Particles snapshot() const = 0;
   virtual const EngineCounters& counters() const = 0;
   // When set, every collision is appended (tests compare engines with it).
   virtual void record_collisions(std::vector<CollisionRecord>* log) = 0;
   // Calendar years started (a benchmark statistic).
   virtual std::int64_t calendar_years() const = 0;
 };
+
+// Kinetic energy per particle and total momentum of the engine's particles,
+// summed in id order with compensation (common/compensated_sum.h).
+double kinetic_energy_per_particle(const EngineBase& e);
+Vec3 total_momentum(const EngineBase& e);
 
 template <class Rule>
 class Engine final : public EngineBase {
@@ -86,7 +113,11 @@ class Engine final : public EngineBase {
   RunStatus run_until(double t_stop, std::int64_t max_events, const volatile std::sig_atomic_t* interrupt) override;
   void synchronize() override;
   double now() const override { return now_; }
-  const Particles& particles() const override { return p_; }
+  std::size_t size() const override { return m_.size(); }
+  double box() const override { return L_; }
+  const Motion* motion() const override { return m_.data(); }
+  const Image* images() const override { return image_.data(); }
+  Particles snapshot() const override;
   const EngineCounters& counters() const override { return c_; }
   void record_collisions(std::vector<CollisionRecord>* log) override { log_ = log; }
   std::int64_t calendar_years() const override { return calendar_.years(); }
@@ -98,14 +129,18 @@ class Engine final : public EngineBase {
   void collide(int i, int j);
   void note_collision_gap(int i, double gap, int partner);
   Vec3 image_shift(int from_cell, int to_cell) const;
+  // Earliest contact of particle i (at now_, at ri with vi) with the particles
+  // of one cell, whose images are shifted by s; updates best/code.
+  void scan_cell(int i, const Vec3& ri, const Vec3& vi, int cell, const Vec3& s, double& best, int& code) const;
 
-  Particles p_;
+  double L_;
+  std::vector<Motion> m_;
+  std::vector<Image> image_;
   Rule rule_;
   CellGrid grid_;
   EventCalendar calendar_;
   std::vector<double> event_time_;
   std::vector<std::int32_t> partner_;        // >= 0: partner id; < 0: cell face to cross (-1 - face)
-  std::vector<std::uint32_t> count_;         // collisions of each particle since the last rebuild
   std::vector<std::uint32_t> partner_count_; // partner's count when the event was predicted
   std::vector<std::uint16_t> stall_;         // consecutive collisions without time advancing (dissipative rules)
   double now_;

@@ -120,7 +120,7 @@ Particles initial_state(const Scene& s) {
     Engine<ElasticRule> melt(std::move(p), ElasticRule{}, 0.0);
     melt.run_until(s.equilibrate, std::numeric_limits<std::int64_t>::max(), nullptr);
     melt.synchronize();
-    p = melt.particles();
+    p = melt.snapshot();
     std::fill(p.t.begin(), p.t.end(), 0.0);
     std::fill(p.image.begin(), p.image.end(), Image{0, 0, 0});
     draw_velocities(p, T0, rng);

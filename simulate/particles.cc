@@ -1,23 +1,8 @@
 #include "simulate/particles.h"
 
-#include <cmath>
+#include "common/compensated_sum.h"
 
 namespace coolgas {
-namespace {
-
-// Neumaier's compensated sum: exact to about one rounding regardless of N.
-struct CompensatedSum {
-  double sum = 0, c = 0;
-  void add(double x) {
-    const double s = sum + x;
-    c += std::fabs(sum) >= std::fabs(x) ? (sum - s) + x : (x - s) + sum;
-    sum = s;
-  }
-  double value() const { return sum + c; }
-};
-
-}  // namespace
-
 double kinetic_energy_per_particle(const Particles& p) {
   CompensatedSum s;
   for (const Vec3& v : p.v) s.add(0.5 * dot(v, v));

@@ -35,8 +35,8 @@ struct Particles {
   }
 };
 
-// Kinetic energy per particle, Σ ½ v² / N (unit masses), summed with
-// Neumaier compensation so that E/E0 stays accurate down to 1e-12 and below.
+// Kinetic energy per particle, Σ ½ v² / N (unit masses), and total momentum,
+// summed in id order with compensation (common/compensated_sum.h).
 double kinetic_energy_per_particle(const Particles& p);
 Vec3 total_momentum(const Particles& p);
 

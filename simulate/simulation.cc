@@ -47,14 +47,14 @@ std::string read_file(const std::string& path) {
 }
 
 ObservableRow observe(const EngineBase& e) {
-  const Vec3 p = total_momentum(e.particles());
-  return {e.now(), e.counters().collisions, e.counters().below_delta, kinetic_energy_per_particle(e.particles()),
-          {p.x, p.y, p.z}};
+  const Vec3 p = total_momentum(e);
+  return {e.now(), e.counters().collisions, e.counters().below_delta, kinetic_energy_per_particle(e), {p.x, p.y, p.z}};
 }
 
 FrameView frame(const EngineBase& e) {
-  const Particles& p = e.particles();
-  return {e.now(), e.counters().collisions, e.counters().below_delta, &p.r[0].x, p.image[0].data(), &p.v[0].x};
+  const Motion* m = e.motion();
+  return {e.now(),    e.counters().collisions, e.counters().below_delta, &m[0].r.x, e.images()[0].data(),
+          &m[0].v.x, kMotionStride,           kMotionStride};
 }
 
 // Drives the engine from stop to stop, writing as it goes.
@@ -119,7 +119,7 @@ class Driver {
     std::ostringstream s;
     s.precision(3);
     s << "t = " << t << " / " << scene_.t_end << "  collisions " << coll << " (" << coll / std::max(secs, 1e-9)
-      << "/s)  E/E0 = " << kinetic_energy_per_particle(engine_.particles()) / e0_ << "  ETA ~"
+      << "/s)  E/E0 = " << kinetic_energy_per_particle(engine_) / e0_ << "  ETA ~"
       << Progress::format_duration(eta);
     progress_.show(s.str());
   }

@@ -1,0 +1,73 @@
+// Engine speed: collisions per second of wall time on one core (set-up
+// excluded) and memory per particle, for the workloads of the simulator issue:
+//   W1  elastic,               N = 108000, phi = 0.208
+//   W2  r0 = 0.1, delta = 1e-3, N = 108000, phi = 0.208
+// each from the Gaussian start for 50 collisions per particle.
+// usage: engine_bench [W1|W2|all] [N] [collisions_per_particle]
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <string>
+
+#include "simulate/engine_factory.h"
+#include "simulate/initial_state.h"
+
+namespace {
+
+// Peak resident memory of this process so far (VmHWM), bytes.
+double peak_rss_bytes() {
+  std::ifstream f("/proc/self/status");
+  std::string key;
+  double kb = 0;
+  while (f >> key) {
+    if (key == "VmHWM:") {
+      f >> kb;
+      break;
+    }
+    std::getline(f, key);
+  }
+  return kb * 1024.0;
+}
+
+void run(const char* name, coolgas::Scene s, double per_particle) {
+  using clock = std::chrono::steady_clock;
+  const auto t_setup = clock::now();
+  auto e = coolgas::make_engine(s, coolgas::initial_state(s), 0.0);
+  const double setup = std::chrono::duration<double>(clock::now() - t_setup).count();
+  const auto target = static_cast<std::int64_t>(per_particle * double(s.N) / 2.0);  // two particles per collision
+  const auto t0 = clock::now();
+  while (e->counters().collisions < target) e->run_until(e->now() * 1.05 + 0.1, 1 << 20, nullptr);
+  const double secs = std::chrono::duration<double>(clock::now() - t0).count();
+  const auto& c = e->counters();
+  std::printf("%s\tN=%lld\tphi=%.3f\tcollisions=%lld\tt=%.4g\twall=%.2fs\tcollisions/s=%.0f\tevents/collision=%.2f"
+              "\tstale/collision=%.2f\tpeak_rss/particle=%.0fB\tsetup=%.2fs\tcalendar_years=%lld\n",
+              name, (long long)s.N, s.phi, (long long)c.collisions, e->now(), secs, double(c.collisions) / secs,
+              double(c.events) / double(c.collisions), double(c.stale) / double(c.collisions),
+              peak_rss_bytes() / double(s.N), setup, (long long)e->calendar_years());
+}
+
+coolgas::Scene workload(bool inelastic, std::int64_t n) {
+  coolgas::Scene s;
+  s.N = n;
+  s.phi = 0.208;
+  s.L = std::cbrt(double(n) * M_PI / (6.0 * s.phi));
+  s.t_end = 1e9;
+  if (inelastic) {
+    s.model = coolgas::CollisionModel::kInelastic;
+    s.r0 = 0.1;
+    s.delta = 1e-3;
+  }
+  return s;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string which = argc > 1 ? argv[1] : "all";
+  const std::int64_t n = argc > 2 ? std::atoll(argv[2]) : 108000;
+  const double per = argc > 3 ? std::atof(argv[3]) : 50;
+  if (which == "W1" || which == "all") run("W1", workload(false, n), per);
+  if (which == "W2" || which == "all") run("W2", workload(true, n), per);
+}
