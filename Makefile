@@ -38,10 +38,12 @@ test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 demo: build
-	@echo "(the demo simulation arrives with coolgas-simulate)"
+	$(MAKE) -C pipelines/demo BIN=$(abspath $(BUILD))/bin OUT=$(abspath out/demo)
 
+# Speed figures for the README (one core each; see tests/bench/).
 bench: build
-	@echo "benchmarks: see tests/bench/"
+	$(BUILD)/bench/engine_bench all
+	$(BUILD)/bench/smoluchowski_bench 1
 
 clean:
 	rm -rf $(BUILD)

@@ -98,7 +98,7 @@ void Engine<Rule>::scan_cell(int i, const Vec3& ri, const Vec3& vi, int cell, co
     const Vec3 dr{mj.r.x + mj.v.x * dtj + s.x - ri.x, mj.r.y + mj.v.y * dtj + s.y - ri.y,
                   mj.r.z + mj.v.z * dtj + s.z - ri.z};
     const Vec3 dv{mj.v.x - vi.x, mj.v.y - vi.y, mj.v.z - vi.z};
-    const double t = time_to_contact(dr, dv);
+    const double t = time_to_contact_before(dr, dv, best);
     if (t < best) best = t, code = j;
   }
 }

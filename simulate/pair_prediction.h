@@ -26,6 +26,23 @@ inline double time_to_contact(const Vec3& dr, const Vec3& dv, double sigma2 = 1.
   return gap2 / (-b + std::sqrt(disc));
 }
 
+// As time_to_contact, but kNever for any contact not earlier than `limit`,
+// decided before the square root where possible: contact cannot come before
+// gap2 / (2|b|), since sqrt(disc) <= |b|. The margin keeps the shortcut from
+// ever rejecting a time that would round below `limit`, so the result equals
+// time_to_contact whenever that is < limit.
+inline double time_to_contact_before(const Vec3& dr, const Vec3& dv, double limit, double sigma2 = 1.0) {
+  const double b = dot(dr, dv);
+  if (b >= 0) return kNever;
+  const double gap2 = dot(dr, dr) - sigma2;
+  if (gap2 <= 0) return 0.0;
+  if (gap2 > -2.0 * b * limit * (1.0 + 1e-12)) return kNever;
+  const double v2 = dot(dv, dv);
+  const double disc = b * b - v2 * gap2;
+  if (disc <= 0) return kNever;
+  return gap2 / (-b + std::sqrt(disc));
+}
+
 // Applies the paper's Eq. (1) to velocities vi, vj with the unit normal n
 // pointing from i to j: the normal relative velocity is reversed and scaled
 // by r, the tangential one unchanged, momentum conserved. g = n·(vi − vj) > 0

@@ -8,6 +8,7 @@
 
 #include "simulate/collision_rules.h"
 #include "simulate/pair_prediction.h"
+#include "simulate/random.h"
 
 namespace coolgas {
 namespace {
@@ -81,6 +82,26 @@ TEST(PairPrediction, ContactTimeOfAHeadOnApproach) {
   EXPECT_EQ(time_to_contact({3, 2, 0}, {-1, 0, 0}), kNever);     // miss: impact parameter 2 > 1
   EXPECT_EQ(time_to_contact({0.999, 0, 0}, {-1, 0, 0}), 0.0);    // overlapping and approaching: now
   EXPECT_EQ(time_to_contact({0.999, 0, 0}, {1, 0, 0}), kNever);  // overlapping but separating
+}
+
+TEST(PairPrediction, TheEarlyExitNeverChangesAnEarlierContact) {
+  // The engine's filtered search must pick exactly what the plain formula
+  // picks: equal whenever the contact is earlier than the limit.
+  Random rng(5);
+  int earlier = 0;
+  for (int k = 0; k < 200000; ++k) {
+    const Vec3 dr{4 * rng.uniform() - 2, 4 * rng.uniform() - 2, 4 * rng.uniform() - 2};
+    const Vec3 dv{2 * rng.uniform() - 1, 2 * rng.uniform() - 1, 2 * rng.uniform() - 1};
+    const double limit = 3 * rng.uniform();
+    const double plain = time_to_contact(dr, dv), filtered = time_to_contact_before(dr, dv, limit);
+    if (plain < limit) {
+      ASSERT_EQ(filtered, plain);
+      ++earlier;
+    } else {
+      ASSERT_TRUE(filtered == kNever || filtered >= limit);
+    }
+  }
+  EXPECT_GT(earlier, 1000);  // the comparison was exercised
 }
 
 }  // namespace
