@@ -44,6 +44,7 @@ demo: build
 bench: build
 	$(BUILD)/bench/engine_bench all
 	$(BUILD)/bench/smoluchowski_bench 1
+	$(BUILD)/bench/cluster_bench
 
 clean:
 	rm -rf $(BUILD)

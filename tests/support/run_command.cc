@@ -1,11 +1,13 @@
 #include "tests/support/run_command.h"
 
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <vector>
 #include <stdexcept>
 
 namespace coolgas::test {
@@ -41,9 +43,23 @@ std::string bin(const std::string& program) { return std::string(COOLGAS_BIN_DIR
 std::string source(const std::string& relative) { return std::string(COOLGAS_SOURCE_DIR) + "/" + relative; }
 
 std::string scratch_dir(const std::string& name) {
-  const auto dir = std::filesystem::current_path() / "test-scratch" / name;
+  // ctest runs every test case as its own process, in parallel: a folder per
+  // test case keeps them from wiping each other's files.
+  // Fixtures set up outside any test case get a folder per process, removed at exit.
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const bool in_test = info != nullptr;
+  const std::string test = in_test ? std::string(info->test_suite_name()) + "." + info->name()
+                                   : "setup-" + std::to_string(::getpid());
+  const auto dir = std::filesystem::current_path() / "test-scratch" / name / test;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
+  if (!in_test) {
+    static std::vector<std::filesystem::path> setup_dirs;
+    if (setup_dirs.empty()) std::atexit([] {
+        for (const auto& d : setup_dirs) std::filesystem::remove_all(d);
+      });
+    setup_dirs.push_back(dir);
+  }
   return dir.string();
 }
 

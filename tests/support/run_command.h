@@ -17,7 +17,8 @@ CommandResult run_command(const std::string& command);
 std::string bin(const std::string& program);
 // Absolute path inside the source tree, e.g. source("pipelines/demo/scene.toml").
 std::string source(const std::string& relative);
-// A fresh empty directory under the build tree for this test.
+// A fresh empty directory under the build tree for this test case
+// (test-scratch/<name>/<Suite.Test>).
 std::string scratch_dir(const std::string& name);
 
 // Number of lines in s (a final line without newline counts).

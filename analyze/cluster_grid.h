@@ -1,0 +1,48 @@
+// The paper's cluster grid: the periodic box of side L cut into cubic cells
+// of side about one particle diameter.
+//
+// The paper uses cells of side exactly σ = 1, which tiles the box only when L
+// is an integer. We use ncell = floor(L) cells per side of width
+// w = L/ncell, so 1 <= w < 2 and w - 1 < 1/floor(L) (w = 1.0003 for the
+// paper's L = 272.07). Cell (i, j, k) has the flat index
+// i + ncell*(j + ncell*k): x runs fastest ("raster order").
+//
+// Which cells are occupied: cluster_occupancy.h; finding neighbouring occupied
+// cells: cluster_contacts.h; using them (the disjoint-set union): cluster_labeller.h.
+#pragma once
+#include <cmath>
+#include <cstdint>
+
+namespace coolgas {
+
+class ClusterGrid {
+ public:
+  // Grid for a periodic box of side L (InputError unless 1 <= L < 1251: the
+  // labeller's links are 32-bit).
+  explicit ClusterGrid(double L);
+
+  int per_side() const { return n_; }
+  double width() const { return width_; }
+  double box() const { return L_; }
+  std::int64_t cells() const { return std::int64_t(n_) * n_ * n_; }
+
+  // Cell of one coordinate: floor(x / w) clamped to [0, ncell-1], so positions
+  // a round-off outside [0, L) still land in the boundary cell. Computed as
+  // x * (1/w) without branches (a division per coordinate would cost more than
+  // the whole labelling); it differs from floor(x / w) only within an ulp of a
+  // cell edge. NaN goes to cell 0 (the frame reader rejects NaN anyway).
+  int cell_1d(double x) const {
+    double s = x * inv_width_;
+    s = s > 0 ? s : 0;
+    s = s < last_ ? s : last_;
+    return static_cast<int>(s);
+  }
+  std::int32_t cell_of(double x, double y, double z) const { return cell_1d(x) + n_ * (cell_1d(y) + n_ * cell_1d(z)); }
+
+ private:
+  double L_;
+  int n_;
+  double width_, inv_width_, last_;
+};
+
+}  // namespace coolgas

@@ -1,0 +1,21 @@
+// coolgas-clusters: the cluster statistics of every dump of a trajectory, as
+// the shared "mass distribution" or "cluster series" table
+// (data-schema/tsv-tables.md, "Shared table shapes").
+#pragma once
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace coolgas {
+
+struct ClustersOptions {
+  std::string input;          // trajectory file
+  int bins_per_decade = 10;   // logarithmic mass bins
+  bool series = false;        // one row per dump instead of N(m) blocks
+  std::vector<double> times;  // dumps nearest these times; empty = all dumps
+};
+
+// Writes the table for opt to out. InputError on bad input.
+void run_clusters(const ClustersOptions& opt, std::ostream& out);
+
+}  // namespace coolgas

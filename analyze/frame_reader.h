@@ -1,0 +1,72 @@
+// Reads the dumps (frames) of a coolgas trajectory file
+// (data-schema/h5md-profile.md) for the analysis tools.
+//
+// A Trajectory is opened for the per-particle elements a tool needs; it checks
+// they exist with the same shape (F, N, 3) and lists the dump times. A frame is
+// read element by element with one hyperslab read each, straight into the
+// frame's buffers, which are reused from frame to frame.
+//
+// To read another per-particle element (issue 4 adds id, mass, diameter), add
+// a Field bit, a buffer in Frame and a row in the element table of
+// frame_reader.cc.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "common/hdf5_file.h"
+#include "common/tsv.h"
+
+namespace coolgas {
+
+// Per-particle elements, combinable as a bit set.
+enum Field : unsigned { kPosition = 1u, kVelocity = 2u, kImage = 4u };
+
+// One dump. Arrays hold 3 numbers per particle, in particle-id order.
+struct Frame {
+  std::size_t dump = 0;  // index in the file
+  double time = 0;
+  std::int64_t step = 0;
+  double L = 0;  // box side at this dump
+  std::vector<double> position;
+  std::vector<double> velocity;
+  std::vector<std::int32_t> image;
+};
+
+class Trajectory {
+ public:
+  // Opens `path` for reading the elements in `fields` (InputError naming the
+  // file and the missing dataset if it is not a coolgas trajectory).
+  Trajectory(const std::string& path, unsigned fields);
+
+  const std::string& path() const { return path_; }
+  std::int64_t particles() const { return n_; }
+  const std::vector<double>& dump_times() const { return times_; }
+  // Index of the dump whose time is nearest t (the earlier one on a tie).
+  std::size_t nearest_dump(double t) const;
+  // The dumps nearest each of `times` in the order given; all dumps if `times` is empty.
+  std::vector<std::size_t> dumps_nearest(const std::vector<double>& times) const;
+
+  // Reads dump `dump` into `frame` (its buffers are reused). Non-finite
+  // numbers in a double element are an InputError naming dump and particle.
+  void read(std::size_t dump, Frame& frame) const;
+
+  // "input", then the /parameters attributes that are present (N, L, phi,
+  // model, r0, delta, seed), for the provenance block of a table.
+  Provenance provenance() const;
+
+ private:
+  [[noreturn]] void missing(const std::string& what) const;
+  void check_element(const std::string& element);
+  double box_side(std::size_t dump) const;
+
+  std::string path_;
+  unsigned fields_;
+  h5::Handle file_;
+  std::int64_t n_ = 0;
+  std::vector<double> times_;
+  std::vector<std::int64_t> steps_;
+};
+
+}  // namespace coolgas

@@ -1,0 +1,29 @@
+// coolgas-velocity: velocity statistics of every dump of a trajectory (the
+// paper's Fig. 5): the scaled distribution Φ(y), its tail -ln Φ(y) with the
+// fitted exponent β, and the kurtosis κ.
+#pragma once
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace coolgas {
+
+enum class VelocityTable {
+  kPhi,    // one block per dump: t y Phi Phi_err minus_ln_Phi
+  kTail,   // one block per dump: t y minus_ln_Phi minus_ln_Phi_err fit (the fitted points)
+  kSeries  // one row per dump: t v_rms kappa kappa_err beta beta_err tail_points
+};
+
+struct VelocityOptions {
+  std::string input;
+  VelocityTable table = VelocityTable::kPhi;
+  int bins = 120;             // histogram bins over [-ymax, ymax] (even)
+  double ymax = 6;            // range of y = v_alpha / v_rms
+  double tail_from = 1.5;     // fit the tail for y >= tail_from
+  double min_count = 25;      // fit only bins with at least this many samples (both signs)
+  std::vector<double> times;  // dumps nearest these times; empty = all dumps
+};
+
+void run_velocity(const VelocityOptions& opt, std::ostream& out);
+
+}  // namespace coolgas

@@ -1,0 +1,170 @@
+// Speed of coolgas-clusters on the paper's largest system: N = 8e6 particles at
+// phi = 0.208 (L = 272.1, a 272^3 cell grid).
+//   1. labelling + binning one frame (file reading excluded), for uniformly
+//      random centres and for a clustered configuration;
+//   2. reading one frame's positions from an H5MD file written by H5mdWriter
+//      (the file is deleted afterwards).
+// Prints one line per figure: medians of several repeats, wall-clock and
+// this thread's CPU time.
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <functional>
+#include <random>
+#include <vector>
+
+#include "analyze/cluster_labeller.h"
+#include "analyze/cluster_mass_distribution.h"
+#include "analyze/frame_reader.h"
+#include "common/h5md_writer.h"
+
+namespace {
+
+using coolgas::ClusterGrid;
+using coolgas::ClusterLabeller;
+using coolgas::MassHistogram;
+
+constexpr std::int64_t kN = 8'000'000;
+constexpr double kPhi = 0.208;
+const double kL = std::cbrt(kN * M_PI / (6 * kPhi));
+
+double wall_seconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+// CPU time of this thread: on a shared machine it tells what one core costs
+// when other processes also run.
+double cpu_seconds() {
+  timespec ts;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
+struct Timing {
+  double wall, cpu;  // medians over the repeats, seconds
+};
+
+Timing median_time(int repeats, const std::function<void()>& f) {
+  std::vector<double> wall, cpu;
+  for (int r = 0; r < repeats; ++r) {
+    const double w0 = wall_seconds(), c0 = cpu_seconds();
+    f();
+    wall.push_back(wall_seconds() - w0);
+    cpu.push_back(cpu_seconds() - c0);
+  }
+  std::sort(wall.begin(), wall.end());
+  std::sort(cpu.begin(), cpu.end());
+  return {wall[wall.size() / 2], cpu[cpu.size() / 2]};
+}
+
+std::vector<double> uniform_positions(std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, kL);
+  std::vector<double> pos(3 * kN);
+  for (double& x : pos) x = u(rng);
+  return pos;
+}
+
+// Clustered: 3/4 of the particles in Gaussian clumps strung along random-walk
+// filaments (extended clusters as in the paper's Fig. 3), the rest uniform.
+// Particle order is shuffled, as in a run where particles have mixed.
+std::vector<double> clustered_positions(std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, kL);
+  std::normal_distribution<double> g(0.0, 1.0);
+  std::vector<double> pos;
+  pos.reserve(3 * kN);
+  const std::int64_t in_filaments = 3 * kN / 4, per_clump = 200;
+  double c[3] = {u(rng), u(rng), u(rng)};
+  for (std::int64_t p = 0; p < in_filaments; ++p) {
+    if (p % per_clump == 0) {
+      if (p % (per_clump * 500) == 0) c[0] = u(rng), c[1] = u(rng), c[2] = u(rng);  // new filament
+      for (double& x : c) x += 2.5 * g(rng);
+    }
+    for (double x : c) pos.push_back(x + 1.5 * g(rng));
+  }
+  while (std::int64_t(pos.size()) < 3 * kN) pos.push_back(u(rng));
+  for (double& x : pos) x = std::fmod(std::fmod(x, kL) + kL, kL);
+  std::vector<std::int64_t> order(kN);
+  for (std::int64_t i = 0; i < kN; ++i) order[i] = i;
+  std::shuffle(order.begin(), order.end(), rng);
+  std::vector<double> shuffled(3 * kN);
+  for (std::int64_t i = 0; i < kN; ++i)
+    for (int d = 0; d < 3; ++d) shuffled[3 * i + d] = pos[3 * order[i] + d];
+  return shuffled;
+}
+
+void bench_labelling(const char* name, const std::vector<double>& pos) {
+  const ClusterGrid grid(kL);
+  ClusterLabeller lab;
+  MassHistogram hist(10, kN);
+  auto frame = [&] {
+    lab.label(grid, pos);
+    hist.clear();
+    lab.for_each_mass([&](std::int64_t m) { hist.add(m); });
+  };
+  frame();  // first call allocates the buffers; the tool reuses them from dump to dump
+  const Timing t = median_time(9, frame);
+  const auto& mo = hist.moments();
+  std::printf("label+bin %-9s N=%lld grid=%d^3: %.1f ms wall, %.1f ms cpu (clusters %lld, largest %lld = %.1f%%)\n",
+              name, (long long)kN, grid.per_side(), 1e3 * t.wall, 1e3 * t.cpu, (long long)mo.clusters,
+              (long long)mo.largest, 100.0 * double(mo.largest) / double(mo.mass));
+}
+
+// Drops the file's pages from the page cache (written back first), so the
+// next read comes from the disk; other files are not touched.
+void evict_from_page_cache(const std::string& path) {
+  const int fd = open(path.c_str(), O_RDONLY);
+  if (fd < 0) return;
+  fdatasync(fd);
+  posix_fadvise(fd, 0, 0, POSIX_FADV_DONTNEED);
+  close(fd);
+}
+
+void bench_frame_read(const std::vector<double>& pos) {
+  const auto dir = std::filesystem::temp_directory_path() / ("coolgas-cluster-bench-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "run.h5").string();
+  {
+    coolgas::RunParameters p;
+    p.N = kN;
+    p.L = kL;
+    p.phi = kPhi;
+    auto w = coolgas::H5mdWriter::create(path, p, true);
+    std::vector<std::int32_t> img(3 * kN, 0);
+    std::vector<double> vel(3 * kN, 0.5);
+    w.add_frame({0.0, 0, 0, pos.data(), img.data(), vel.data()});
+  }
+  const double mb = 3.0 * kN * sizeof(double) / 1e6;
+  coolgas::Frame frame;
+  {
+    evict_from_page_cache(path);
+    coolgas::Trajectory traj(path, coolgas::kPosition);
+    const Timing cold = median_time(1, [&] { traj.read(0, frame); });
+    std::printf("read positions of one frame (%.0f MB, from disk, finiteness check included): %.1f ms = %.0f MB/s\n",
+                mb, 1e3 * cold.wall, mb / cold.wall);
+  }
+  coolgas::Trajectory traj(path, coolgas::kPosition);
+  const Timing t = median_time(5, [&] { traj.read(0, frame); });
+  std::printf(
+      "read positions of one frame (%.0f MB, page cache warm, finiteness check included): %.1f ms = %.0f MB/s\n", mb,
+      1e3 * t.wall, mb / t.wall);
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+
+int main() {
+  std::printf("N = %lld, phi = %.3f, L = %.2f\n", (long long)kN, kPhi, kL);
+  const auto uniform = uniform_positions(1);
+  bench_labelling("uniform", uniform);
+  bench_labelling("clustered", clustered_positions(2));
+  bench_frame_read(uniform);
+  return 0;
+}

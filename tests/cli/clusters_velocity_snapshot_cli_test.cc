@@ -1,0 +1,161 @@
+// coolgas-clusters, coolgas-velocity and coolgas-snapshot run as a user
+// would: they read files written by the real H5MD writer, their --help states
+// units, and every bad input (empty file, wrong file type, missing datasets,
+// NaN, bad option, missing or failing gnuplot) gives exactly one error line,
+// exit code 2 and no half table.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <random>
+
+#include "common/h5md_writer.h"
+#include "common/hdf5_file.h"
+#include "tests/support/run_command.h"
+
+namespace coolgas {
+namespace {
+
+using test::bin;
+using test::run_command;
+
+const char* const kTools[] = {"coolgas-clusters", "coolgas-velocity", "coolgas-snapshot"};
+
+// Arguments that make each tool read `file` and otherwise succeed.
+std::string command(const std::string& tool, const std::string& file, const std::string& dir) {
+  std::string c = bin(tool) + " " + file;
+  if (tool == "coolgas-snapshot") c += " --time 0 -o " + dir + "/out.png";
+  return c;
+}
+
+// A run of N = 3000 uniformly placed particles with Gaussian velocities (two
+// dumps), optionally with a NaN at one coordinate of the second dump.
+void write_run(const std::string& path, double nan_at_position = false, bool nan_at_velocity = false) {
+  const std::int64_t n = 3000;
+  RunParameters p;
+  p.N = n;
+  p.L = 25;
+  p.seed = 9;
+  H5mdWriter w = H5mdWriter::create(path, p, true);
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> u(0, p.L);
+  std::normal_distribution<double> g(0, 1);
+  std::vector<double> pos(3 * n), vel(3 * n);
+  std::vector<std::int32_t> img(3 * n, 0);
+  for (int f = 0; f < 2; ++f) {
+    for (double& x : pos) x = u(rng);
+    for (double& v : vel) v = g(rng);
+    if (f == 1 && nan_at_position) pos[3 * 17 + 1] = std::numeric_limits<double>::quiet_NaN();
+    if (f == 1 && nan_at_velocity) vel[3 * 5] = std::numeric_limits<double>::quiet_NaN();
+    w.add_frame({double(10 * f), 100 * f, 0, pos.data(), img.data(), vel.data()});
+  }
+}
+
+class ClustersVelocitySnapshotCli : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir = new std::string(test::scratch_dir("clusters_velocity_snapshot_cli"));
+    write_run(*dir + "/run.h5");
+    write_run(*dir + "/nan_position.h5", true, false);
+    write_run(*dir + "/nan_velocity.h5", false, true);
+    std::ofstream(*dir + "/empty.h5");
+    std::ofstream(*dir + "/table.tsv") << "# t\tE\n0\t1\n";
+    // An HDF5 file with the H5MD root group but no particles.
+    h5::Handle f = h5::open_file(*dir + "/no_particles.h5", h5::Mode::kCreateTruncate);
+    h5::create_group(f.id(), "h5md");
+  }
+  static inline std::string* dir = nullptr;
+};
+
+void expect_one_error_line(const test::CommandResult& r, const std::string& needle) {
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(test::line_count(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find(needle), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;  // no half table
+}
+
+TEST_F(ClustersVelocitySnapshotCli, EveryToolRejectsBadFilesWithOneLine) {
+  for (const std::string tool : kTools) {
+    SCOPED_TRACE(tool);
+    expect_one_error_line(run_command(command(tool, *dir + "/empty.h5", *dir)), "cannot open");
+    expect_one_error_line(run_command(command(tool, *dir + "/table.tsv", *dir)), "not HDF5");
+    expect_one_error_line(run_command(command(tool, *dir + "/absent.h5", *dir)), "cannot open");
+    const std::string missing =
+        tool == "coolgas-velocity" ? "missing /particles/all/velocity" : "missing /particles/all/position";
+    expect_one_error_line(run_command(command(tool, *dir + "/no_particles.h5", *dir)), missing);
+  }
+}
+
+TEST_F(ClustersVelocitySnapshotCli, NaNInADumpIsOneErrorLineNamingDumpAndParticle) {
+  expect_one_error_line(run_command(bin("coolgas-clusters") + " " + *dir + "/nan_position.h5"), "particle 17");
+  expect_one_error_line(run_command(bin("coolgas-velocity") + " " + *dir + "/nan_velocity.h5"), "particle 5");
+  expect_one_error_line(
+      run_command(bin("coolgas-snapshot") + " " + *dir + "/nan_position.h5 --time 10 -o " + *dir + "/nan.png"),
+      "non-finite");
+  EXPECT_FALSE(std::filesystem::exists(*dir + "/nan.png"));
+}
+
+TEST_F(ClustersVelocitySnapshotCli, BadOptionsAreOneErrorLine) {
+  const std::string run = *dir + "/run.h5";
+  expect_one_error_line(run_command(bin("coolgas-clusters") + " " + run + " --bins-per-decade 0"), "bins");
+  expect_one_error_line(run_command(bin("coolgas-clusters") + " " + run + " --no-such-option"), "no-such-option");
+  expect_one_error_line(run_command(bin("coolgas-velocity") + " " + run + " --bins 7"), "--bins");
+  expect_one_error_line(run_command(bin("coolgas-velocity") + " " + run + " --series --tail-from 5.9"), "tail bins");
+  expect_one_error_line(
+      run_command(bin("coolgas-snapshot") + " " + run + " --time 0 -o " + *dir + "/x.png --colored 12"), "--colored");
+  expect_one_error_line(run_command(bin("coolgas-snapshot") + " " + run + " --time 0 -o " + *dir + "/no/dir/x.png"),
+                        "does not exist");
+}
+
+TEST_F(ClustersVelocitySnapshotCli, HelpStatesUnits) {
+  for (const std::string tool : kTools) {
+    const auto r = run_command(bin(tool) + " --help");
+    EXPECT_EQ(r.exit_code, 0) << tool;
+    EXPECT_NE(r.out.find("[1/omega0]"), std::string::npos) << tool << " --help names no time unit";
+    EXPECT_NE(r.out.find("sigma"), std::string::npos) << tool << " --help names no length or velocity unit";
+  }
+}
+
+// 3000 particles in 25^3 cells, about one per five cells: the masses add up
+// to N in every dump, whatever the clusters.
+TEST_F(ClustersVelocitySnapshotCli, ClusterSeriesCountsEveryParticle) {
+  const auto r = run_command(bin("coolgas-clusters") + " --series " + *dir + "/run.h5");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::istringstream in(r.out);
+  int rows = 0;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    double t, m0, m1;
+    ASSERT_EQ(std::sscanf(line.c_str(), "%lf %lf %lf", &t, &m0, &m1), 3);
+    EXPECT_NEAR(m1 * 25 * 25 * 25, 3000, 1e-9);  // M1 V = N
+    ++rows;
+  }
+  EXPECT_EQ(rows, 2);
+}
+
+TEST_F(ClustersVelocitySnapshotCli, SnapshotWritesAPngAndItsLegend) {
+  const std::string png = *dir + "/snap.png";
+  const auto r = run_command(bin("coolgas-snapshot") + " " + *dir + "/run.h5 --time 9 --colored 3 -o " + png);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream f(png, std::ios::binary);
+  char magic[8] = {};
+  f.read(magic, 8);
+  EXPECT_EQ(std::string(magic + 1, 3), "PNG");
+  EXPECT_NE(r.out.find("# dump_time: 10"), std::string::npos) << r.out;    // the dump nearest t = 9
+  EXPECT_EQ(test::line_count(r.out.substr(r.out.find("# rank"))), 1 + 3);  // column line + 3 clusters
+}
+
+TEST_F(ClustersVelocitySnapshotCli, SnapshotReportsMissingOrFailingGnuplot) {
+  const std::string run = *dir + "/run.h5", png = *dir + "/never.png";
+  expect_one_error_line(
+      run_command(bin("coolgas-snapshot") + " " + run + " --time 0 -o " + png + " --gnuplot /nonexistent/gnuplot"),
+      "install the gnuplot package");
+  expect_one_error_line(run_command(bin("coolgas-snapshot") + " " + run + " --time 0 -o " + png + " --gnuplot false"),
+                        "failed with exit code 1");
+  EXPECT_FALSE(std::filesystem::exists(png));
+}
+
+}  // namespace
+}  // namespace coolgas
