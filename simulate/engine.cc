@@ -6,6 +6,7 @@
 
 #include "common/compensated_sum.h"
 #include "simulate/pair_prediction.h"
+#include "simulate/spatial_order.h"
 
 namespace coolgas {
 
@@ -27,6 +28,8 @@ Engine<Rule>::Engine(Particles particles, const Rule& rule, double now, const En
   grid_.bind_next_links(&m_[0].next, sizeof(Motion) / sizeof(std::int32_t));
   image_ = std::move(particles.image);
   particles = Particles();  // the records hold it all now: free the copy before growing more arrays
+  id_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) id_[i] = std::int32_t(i);
   event_time_.assign(n, kNever);
   partner_.assign(n, -1);
   partner_count_.assign(n, 0);
@@ -40,11 +43,12 @@ Particles Engine<Rule>::snapshot() const {
   p.L = L_;
   p.resize(m_.size());
   for (std::size_t i = 0; i < m_.size(); ++i) {
-    p.r[i] = m_[i].r;
-    p.v[i] = m_[i].v;
-    p.t[i] = m_[i].t;
+    const auto id = static_cast<std::size_t>(id_[i]);
+    p.r[id] = m_[i].r;
+    p.v[id] = m_[i].v;
+    p.t[id] = m_[i].t;
+    p.image[id] = image_[i];
   }
-  p.image = image_;
   return p;
 }
 
@@ -71,11 +75,47 @@ void Engine<Rule>::synchronize() {
     }
     m_[i].count = 0;
   }
+  order_by_id();
+  built_ = false;
+}
+
+// Renumbers the particles along the Morton curve of their cells (ties by id,
+// so the order depends on the positions alone).
+template <class Rule>
+void Engine<Rule>::order_by_space() {
+  std::vector<std::pair<std::uint64_t, std::int32_t>> keys(m_.size());
+  for (std::size_t i = 0; i < m_.size(); ++i) {
+    const CellCoord c = grid_.coord(grid_.cell_of(m_[i].r.x, m_[i].r.y, m_[i].r.z));
+    keys[i] = {morton_key(std::uint32_t(c.x), std::uint32_t(c.y), std::uint32_t(c.z)), std::int32_t(i)};
+  }
+  std::sort(keys.begin(), keys.end());
+  std::vector<std::int32_t> order(m_.size());
+  for (std::size_t k = 0; k < keys.size(); ++k) order[k] = keys[k].second;
+  keys = {};
+  apply_permutation(m_, order);
+  apply_permutation(image_, order);
+  apply_permutation(id_, order);
+}
+
+template <class Rule>
+void Engine<Rule>::order_by_id() {
+  std::vector<std::int32_t> order(m_.size());  // order[id] = where particle id is now
+  for (std::size_t i = 0; i < m_.size(); ++i) order[static_cast<std::size_t>(id_[i])] = std::int32_t(i);
+  apply_permutation(m_, order);
+  apply_permutation(image_, order);
+  apply_permutation(id_, order);
+}
+
+// Everything but the particles, rebuilt from the particles (at now_).
+template <class Rule>
+void Engine<Rule>::rebuild() {
+  order_by_space();
   grid_.clear();
   for (std::size_t i = 0; i < m_.size(); ++i) grid_.insert(int(i), grid_.cell_of(m_[i].r.x, m_[i].r.y, m_[i].r.z));
   std::fill(stall_.begin(), stall_.end(), std::uint16_t{0});
   for (std::size_t i = 0; i < m_.size(); ++i) find_event(int(i));
   calendar_.reset(&event_time_, now_);
+  built_ = true;
 }
 
 // The periodic shift that brings a particle of cell `to` next to one in cell
@@ -89,9 +129,37 @@ Vec3 Engine<Rule>::image_shift(int from, int to) const {
 }
 
 template <class Rule>
-void Engine<Rule>::scan_cell(int i, const Vec3& ri, const Vec3& vi, int cell, const Vec3& s, double& best,
+void Engine<Rule>::neighbour_cells(const CellCoord& c, int home, int* cells, Vec3* shifts) const {
+  const int n = grid_.cells_per_side();
+  int k = 0;
+  if (c.x > 0 && c.y > 0 && c.z > 0 && c.x < n - 1 && c.y < n - 1 && c.z < n - 1) {
+    // Interior cell: no neighbour wraps; three runs of three consecutive indices per plane.
+    for (int oz = -1; oz <= 1; ++oz)
+      for (int oy = -1; oy <= 1; ++oy)
+        for (int ox = -1; ox <= 1; ++ox, ++k) {
+          cells[k] = home + (oz * n + oy) * n + ox;
+          shifts[k] = Vec3{};
+        }
+    return;
+  }
+  const double L = L_;
+  auto wrap = [n, L](int x, double& shift) {
+    shift = x < 0 ? -L : (x >= n ? L : 0.0);
+    return x < 0 ? x + n : (x >= n ? x - n : x);
+  };
+  for (int oz = -1; oz <= 1; ++oz)
+    for (int oy = -1; oy <= 1; ++oy)
+      for (int ox = -1; ox <= 1; ++ox, ++k) {
+        Vec3& s = shifts[k];
+        const int x = wrap(c.x + ox, s.x), y = wrap(c.y + oy, s.y), z = wrap(c.z + oz, s.z);
+        cells[k] = grid_.index({x, y, z});
+      }
+}
+
+template <class Rule>
+void Engine<Rule>::scan_list(int i, const Vec3& ri, const Vec3& vi, int first, const Vec3& s, double& best,
                              int& code) const {
-  for (int j = grid_.first(cell); j >= 0; j = m_[j].next) {
+  for (int j = first; j >= 0; j = m_[j].next) {
     if (j == i) continue;
     const Motion& mj = m_[j];
     const double dtj = now_ - mj.t;
@@ -123,30 +191,19 @@ void Engine<Rule>::find_event(int i) {
       if (t < best) best = t, code = -1 - 2 * d;
     }
   }
-  const int n = grid_.cells_per_side();
-  const Vec3 zero{};
-  if (c.x > 0 && c.y > 0 && c.z > 0 && c.x < n - 1 && c.y < n - 1 && c.z < n - 1) {
-    // Interior cell: no neighbour wraps, the 27 cells are three runs of
-    // three consecutive indices in each of three planes.
-    for (int oz = -1; oz <= 1; ++oz)
-      for (int oy = -1; oy <= 1; ++oy) {
-        const int row = home + (oz * n + oy) * n;
-        for (int ox = -1; ox <= 1; ++ox) scan_cell(i, ri, vi, row + ox, zero, best, code);
-      }
-  } else {
-    const double L = L_;
-    auto wrap = [n, L](int x, double& shift) {
-      shift = x < 0 ? -L : (x >= n ? L : 0.0);
-      return x < 0 ? x + n : (x >= n ? x - n : x);
-    };
-    for (int oz = -1; oz <= 1; ++oz)
-      for (int oy = -1; oy <= 1; ++oy)
-        for (int ox = -1; ox <= 1; ++ox) {
-          Vec3 s;
-          const int x = wrap(c.x + ox, s.x), y = wrap(c.y + oy, s.y), z = wrap(c.z + oz, s.z);
-          scan_cell(i, ri, vi, grid_.index({x, y, z}), s, best, code);
-        }
-  }
+  // The 27 neighbour cells and the periodic shift of each. Their list heads
+  // are read first, all together, and the first particle of each is
+  // prefetched: the misses then overlap instead of following one another
+  // (the search is bound by memory latency, not arithmetic).
+  int cells[27];
+  Vec3 shifts[27];
+  neighbour_cells(c, home, cells, shifts);
+  int heads[27];
+  for (int k = 0; k < 27; ++k) heads[k] = grid_.first(cells[k]);
+  for (int k = 0; k < 27; ++k)
+    if (heads[k] >= 0) __builtin_prefetch(&m_[heads[k]]);
+  for (int k = 0; k < 27; ++k)
+    if (heads[k] >= 0) scan_list(i, ri, vi, heads[k], shifts[k], best, code);
   event_time_[i] = now_ + best;
   partner_[i] = code;
   if (code >= 0) partner_count_[i] = m_[code].count;
@@ -181,8 +238,8 @@ void Engine<Rule>::note_collision_gap(int i, double gap, int partner) {
     }
     if (++stall_[i] < rule_.collapse_limit()) return;
     std::ostringstream s;
-    s << "inelastic collapse at t = " << now_ << ": particle " << i << " collided " << rule_.collapse_limit()
-      << " times in a row (last with particle " << partner << ") without simulated time advancing";
+    s << "inelastic collapse at t = " << now_ << ": particle " << id_[i] << " collided " << rule_.collapse_limit()
+      << " times in a row (last with particle " << id_[partner] << ") without simulated time advancing";
     throw CollapseError(s.str(), now_);
   }
 }
@@ -211,11 +268,12 @@ void Engine<Rule>::collide(int i, int j) {
   ++m_[i].count;
   ++m_[j].count;
   ++c_.collisions;
-  if (log_) log_->push_back({std::min(i, j), std::max(i, j), now_});
+  if (log_) log_->push_back({std::min(id_[i], id_[j]), std::max(id_[i], id_[j]), now_});
 }
 
 template <class Rule>
 RunStatus Engine<Rule>::run_until(double t_stop, std::int64_t max_events, const volatile std::sig_atomic_t* interrupt) {
+  if (!built_) rebuild();
   const std::int64_t last_event = c_.events + max_events;
   while (true) {
     if ((c_.events & kInterruptCheckMask) == 0) {

@@ -13,9 +13,12 @@
 //   - lazy positions: a particle is moved only at its own events;
 //   - memory laid out for the partner search, which is bound by memory
 //     latency: what it reads of a candidate (position, velocity, own time,
-//     collision count) sits in one 64-byte record, so a candidate costs one
-//     cache miss instead of four; every other field is an array of its own
-//     (structure of arrays). Measured in tests/bench/engine_bench.cc.
+//     collision count, cell link) sits in one 64-byte record, so a candidate
+//     costs one cache miss instead of four; every other field is an array of
+//     its own (structure of arrays). Particles are renumbered internally in
+//     the Morton order of their cells at every rebuild (spatial_order.h), so
+//     neighbours in space are neighbours in memory. Measured in
+//     tests/bench/engine_bench.cc.
 //   - the collision rule is a template parameter (collision_rules.h), so the
 //     hot loop of an elastic scene contains no inelastic code.
 //
@@ -79,15 +82,16 @@ class EngineBase {
   // the interrupt flag is looked at every few thousand events. Stopping early
   // changes nothing: the same events follow. Throws CollapseError.
   virtual RunStatus run_until(double t_stop, std::int64_t max_events, const volatile std::sig_atomic_t* interrupt) = 0;
-  // Brings every particle to now(), wraps positions into [0, L), and rebuilds
-  // the grid, the predictions and the calendar from the particles alone. A
-  // dump is taken right after this, so resuming from the dump rebuilds the
-  // identical state.
+  // Brings every particle to now(), wraps positions into [0, L) and puts them
+  // in id order; the next run_until() rebuilds the grid, the predictions and
+  // the calendar from the particles alone. A dump is taken right after this,
+  // so resuming from the dump rebuilds the identical state.
   virtual void synchronize() = 0;
   virtual double now() const = 0;
   virtual std::size_t size() const = 0;
   virtual double box() const = 0;
-  // Read access for observables and dumps: records and image counts in id order.
+  // Read access for observables and dumps: the records and image counts, in
+  // id order right after synchronize() (in between, in the engine's order).
   virtual const Motion* motion() const = 0;
   virtual const Image* images() const = 0;
   // A copy of the particles in the interchange format (tests, set-up).
@@ -124,18 +128,26 @@ class Engine final : public EngineBase {
 
  private:
   void advance(int i);
+  void rebuild();
+  void order_by_space();
+  void order_by_id();
   void find_event(int i);
   void cross(int i, int code);
   void collide(int i, int j);
   void note_collision_gap(int i, double gap, int partner);
   Vec3 image_shift(int from_cell, int to_cell) const;
+  // The 27 cells around `home` (coordinates c) and the periodic shift of each.
+  void neighbour_cells(const CellCoord& c, int home, int* cells, Vec3* shifts) const;
   // Earliest contact of particle i (at now_, at ri with vi) with the particles
-  // of one cell, whose images are shifted by s; updates best/code.
-  void scan_cell(int i, const Vec3& ri, const Vec3& vi, int cell, const Vec3& s, double& best, int& code) const;
+  // of one cell list starting at `first`, whose images are shifted by s;
+  // updates best/code.
+  void scan_list(int i, const Vec3& ri, const Vec3& vi, int first, const Vec3& s, double& best, int& code) const;
 
   double L_;
   std::vector<Motion> m_;
   std::vector<Image> image_;
+  std::vector<std::int32_t> id_;  // particle id of each internal index
+  bool built_ = false;            // in space order, with grid, predictions and calendar
   Rule rule_;
   CellGrid grid_;
   EventCalendar calendar_;

@@ -3,7 +3,12 @@
 //   W1  elastic,               N = 108000, phi = 0.208
 //   W2  r0 = 0.1, delta = 1e-3, N = 108000, phi = 0.208
 // each from the Gaussian start for 50 collisions per particle.
+// Rates are given per second of wall time and per second of this process's
+// CPU time: on an idle machine they agree; on a shared one the CPU figure is
+// the engine's own speed.
 // usage: engine_bench [W1|W2|all] [N] [collisions_per_particle]
+#include <sys/resource.h>
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -31,6 +36,12 @@ double peak_rss_bytes() {
   return kb * 1024.0;
 }
 
+double cpu_seconds() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
 void run(const char* name, coolgas::Scene s, double per_particle) {
   using clock = std::chrono::steady_clock;
   const auto t_setup = clock::now();
@@ -38,12 +49,15 @@ void run(const char* name, coolgas::Scene s, double per_particle) {
   const double setup = std::chrono::duration<double>(clock::now() - t_setup).count();
   const auto target = static_cast<std::int64_t>(per_particle * double(s.N) / 2.0);  // two particles per collision
   const auto t0 = clock::now();
+  const double cpu0 = cpu_seconds();
   while (e->counters().collisions < target) e->run_until(e->now() * 1.05 + 0.1, 1 << 20, nullptr);
   const double secs = std::chrono::duration<double>(clock::now() - t0).count();
+  const double cpu = cpu_seconds() - cpu0;
   const auto& c = e->counters();
-  std::printf("%s\tN=%lld\tphi=%.3f\tcollisions=%lld\tt=%.4g\twall=%.2fs\tcollisions/s=%.0f\tevents/collision=%.2f"
-              "\tstale/collision=%.2f\tpeak_rss/particle=%.0fB\tsetup=%.2fs\tcalendar_years=%lld\n",
+  std::printf("%s\tN=%lld\tphi=%.3f\tcollisions=%lld\tt=%.4g\twall=%.2fs\tcollisions/s=%.0f\tper_cpu_s=%.0f"
+              "\tevents/collision=%.2f\tstale/collision=%.2f\tpeak_rss/particle=%.0fB\tsetup=%.2fs\tcalendar_years=%lld\n",
               name, (long long)s.N, s.phi, (long long)c.collisions, e->now(), secs, double(c.collisions) / secs,
+              double(c.collisions) / cpu,
               double(c.events) / double(c.collisions), double(c.stale) / double(c.collisions),
               peak_rss_bytes() / double(s.N), setup, (long long)e->calendar_years());
 }
