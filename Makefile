@@ -38,7 +38,7 @@ test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 demo: build
-	$(MAKE) -C pipelines/demo BIN=$(abspath $(BUILD))/bin OUT=$(abspath out/demo)
+	$(MAKE) -C pipelines/demo -j $(JOBS) BIN=$(abspath $(BUILD))/bin OUT=$(abspath out/demo)
 
 # Speed figures for the README (one core each; see tests/bench/).
 bench: build

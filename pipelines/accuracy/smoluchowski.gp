@@ -4,11 +4,11 @@
 # Usage: gnuplot -e "in='smoluchowski_accuracy.tsv'; out='smoluchowski_accuracy.png'" smoluchowski.gp
 if (!exists("in")) in = 'out/smoluchowski_accuracy.tsv'
 if (!exists("out")) out = 'out/smoluchowski_accuracy.png'
-names = system(sprintf("grep '^# block: ' '%s' | sed 's/^# block: //'", in))
+names = system("grep '^# block: ' '" . in . "' | sed 's/^# block: //'")
 per_kernel = 5
 kernels = words(names) / per_kernel
-kernel_of(b) = system(sprintf("echo '%s' | cut -d/ -f1", word(names, b)))
-curve_of(b) = system(sprintf("echo '%s' | cut -d/ -f2-", word(names, b)))
+kernel_of(b) = system("echo '" . word(names, b) . "' | cut -d/ -f1")
+curve_of(b) = system("echo '" . word(names, b) . "' | cut -d/ -f2-")
 
 set terminal pngcairo size 1200, 450 * ((kernels + 1) / 2) font ",10"
 set output out

@@ -1,0 +1,35 @@
+# Paper Fig. 4: the largest cluster mass M_max(t) (coolgas-clusters --series)
+# for the gas (each table one run: the snapshot run and the runs of Fig. 2a)
+# and, when ba is not empty, for ballistic aggregation, with power-law fits
+# over window (coolgas-fit tables beside them: mmax_X.tsv -> fit_mmax_X.tsv).
+plots = system("dirname " . ARG0)
+load plots . "/common.gp"
+fitof(t) = system("echo " . q(t) . " | sed 's,/mmax_,/fit_mmax_,'")
+a(t) = -tsvval(fitof(t), "theta")
+ae(t) = tsvval(fitof(t), "theta_err")
+A(t) = tsvval(fitof(t), "A")
+lo(t) = tsvval(fitof(t), "t_min")
+hi(t) = tsvval(fitof(t), "t_max")
+label(t) = sprintf("L = %s, {/Symbol f} = %.3f", meta(t, "L"), real(meta(t, "phi")))
+ng = words(gas); nb = words(ba)
+
+set terminal pngcairo size 1000, 700 font "sans,11"
+set output out
+set title sprintf("Largest cluster M_{max}(t): gas (r_0 = %s, {/Symbol d} = %s)%s; lines: power-law fits over t = %s", \
+    meta(word(gas, 1), "r0"), meta(word(gas, 1), "delta"), (nb > 0 ? " and ballistic aggregation" : ""), window)
+set logscale xy
+set format x "10^{%L}"; set format y "10^{%L}"
+set grid
+set key top left
+set xlabel "t  [initial mean collision times 1/{/Symbol w}_0]"
+set ylabel "M_{max}(t)  [particles]"
+set xrange [0.01:*]
+gas_curves = "for [i = 1 : ng] word(gas, i) using 1:($1 > 0 ? $6 : NaN) with linespoints pt 7 ps 0.6 lc i title sprintf('gas %s', label(word(gas, i))), \
+  for [i = 1 : ng] [lo(word(gas, i)):hi(word(gas, i))] A(word(gas, i)) * x**a(word(gas, i)) with lines lw 2 lc i title sprintf('t^{%.2f ± %.2f}', a(word(gas, i)), ae(word(gas, i)))"
+ba_curves = "for [i = 1 : nb] word(ba, i) using 1:($1 > 0 ? $6 : NaN) with linespoints pt 5 ps 0.6 lc (ng + i) title sprintf('BA %s', label(word(ba, i))), \
+  for [i = 1 : nb] [lo(word(ba, i)):hi(word(ba, i))] A(word(ba, i)) * x**a(word(ba, i)) with lines lw 2 lc (ng + i) title sprintf('t^{%.2f ± %.2f}', a(word(ba, i)), ae(word(ba, i)))"
+if (nb > 0) {
+  eval "plot " . gas_curves . ", " . ba_curves
+} else {
+  eval "plot " . gas_curves
+}

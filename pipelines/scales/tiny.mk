@@ -1,0 +1,47 @@
+# SCALE = tiny: the end-to-end test (tests/cli/pipeline_test.cc), seconds in
+# all. The numbers it gives are not physics, only a check that every recipe
+# runs and every table parses.
+PHI := 0.208
+R0 := 0.1
+DELTA := 1e-4
+
+SIZE_L := 8 10 12
+SIZE_SEEDS := 1 2
+SIZE_T_END := 2000
+THETA_WINDOW := 10:300
+COLLAPSE_T_WINDOW := 10:
+COLLAPSE_ETA_WINDOW := 0.3:
+COLLAPSE_BOOTSTRAP := 10
+
+PARAM_L := 12
+PARAM_SEEDS := 1
+PARAM_T_END := 1000
+PARAM_PHIS := 0.104 0.208
+PARAM_R0S := 0.1 0.5
+PARAM_DELTAS := 1e-3 1e-4
+PARAM_FIT_WINDOW := 10:1000
+
+SNAP_L := 16
+SNAP_SEED := 1
+SNAP_T_END := 1000
+SNAP_DUMP_TIMES := 5, 10, 100, 500, 1000
+SNAPSHOT_TIME := 500
+NM_TIMES := 500 1000
+NM_FIT_WINDOW := 1:30
+MMAX_FIT_WINDOW := 10:1000
+PHI_EARLY_TIMES := 5 10
+PHI_LATE_TIMES := 500 1000
+
+SMOL_M := 4096
+SMOL_T_END := 30
+SMOL_TIMES := 3,30
+SMOL_FIT_WINDOW := 3:30
+
+BA_L := 16
+BA_PHIS := 0.208
+BA_SEED := 1
+BA_T_END := 200
+BA_DUMP_TIMES := 50, 100, 200
+BA_SNAPSHOT_TIME := 100
+BA_NM_TIMES := 100 200
+BA_PHI_TIMES := 100 200
