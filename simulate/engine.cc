@@ -30,9 +30,7 @@ Engine<Rule>::Engine(Particles particles, const Rule& rule, double now, const En
   particles = Particles();  // the records hold it all now: free the copy before growing more arrays
   id_.resize(n);
   for (std::size_t i = 0; i < n; ++i) id_[i] = std::int32_t(i);
-  event_time_.assign(n, kNever);
-  partner_.assign(n, -1);
-  partner_count_.assign(n, 0);
+  calendar_.resize(n);
   if constexpr (Rule::kDissipative) stall_.assign(n, 0);
   synchronize();
 }
@@ -113,8 +111,8 @@ void Engine<Rule>::rebuild() {
   grid_.clear();
   for (std::size_t i = 0; i < m_.size(); ++i) grid_.insert(int(i), grid_.cell_of(m_[i].r.x, m_[i].r.y, m_[i].r.z));
   std::fill(stall_.begin(), stall_.end(), std::uint16_t{0});
-  for (std::size_t i = 0; i < m_.size(); ++i) find_event(int(i));
-  calendar_.reset(&event_time_, now_);
+  for (std::size_t i = 0; i < m_.size(); ++i) calendar_.assign(int(i), find_event(int(i)));
+  calendar_.reset(now_);
   built_ = true;
 }
 
@@ -129,7 +127,7 @@ Vec3 Engine<Rule>::image_shift(int from, int to) const {
 }
 
 template <class Rule>
-void Engine<Rule>::neighbour_cells(const CellCoord& c, int home, int* cells, Vec3* shifts) const {
+void Engine<Rule>::neighbour_cells(const CellCoord& c, int home, int* cells, double (*shifts)[3]) const {
   const int n = grid_.cells_per_side();
   int k = 0;
   if (c.x > 0 && c.y > 0 && c.z > 0 && c.x < n - 1 && c.y < n - 1 && c.z < n - 1) {
@@ -138,7 +136,7 @@ void Engine<Rule>::neighbour_cells(const CellCoord& c, int home, int* cells, Vec
       for (int oy = -1; oy <= 1; ++oy)
         for (int ox = -1; ox <= 1; ++ox, ++k) {
           cells[k] = home + (oz * n + oy) * n + ox;
-          shifts[k] = Vec3{};
+          shifts[k][0] = shifts[k][1] = shifts[k][2] = 0.0;
         }
     return;
   }
@@ -150,21 +148,21 @@ void Engine<Rule>::neighbour_cells(const CellCoord& c, int home, int* cells, Vec
   for (int oz = -1; oz <= 1; ++oz)
     for (int oy = -1; oy <= 1; ++oy)
       for (int ox = -1; ox <= 1; ++ox, ++k) {
-        Vec3& s = shifts[k];
-        const int x = wrap(c.x + ox, s.x), y = wrap(c.y + oy, s.y), z = wrap(c.z + oz, s.z);
+        double* s = shifts[k];
+        const int x = wrap(c.x + ox, s[0]), y = wrap(c.y + oy, s[1]), z = wrap(c.z + oz, s[2]);
         cells[k] = grid_.index({x, y, z});
       }
 }
 
 template <class Rule>
-void Engine<Rule>::scan_list(int i, const Vec3& ri, const Vec3& vi, int first, const Vec3& s, double& best,
+void Engine<Rule>::scan_list(int i, const Vec3& ri, const Vec3& vi, int first, const double* s, double& best,
                              int& code) const {
   for (int j = first; j >= 0; j = m_[j].next) {
     if (j == i) continue;
     const Motion& mj = m_[j];
     const double dtj = now_ - mj.t;
-    const Vec3 dr{mj.r.x + mj.v.x * dtj + s.x - ri.x, mj.r.y + mj.v.y * dtj + s.y - ri.y,
-                  mj.r.z + mj.v.z * dtj + s.z - ri.z};
+    const Vec3 dr{mj.r.x + mj.v.x * dtj + s[0] - ri.x, mj.r.y + mj.v.y * dtj + s[1] - ri.y,
+                  mj.r.z + mj.v.z * dtj + s[2] - ri.z};
     const Vec3 dv{mj.v.x - vi.x, mj.v.y - vi.y, mj.v.z - vi.z};
     const double t = time_to_contact_before(dr, dv, best);
     if (t < best) best = t, code = j;
@@ -174,7 +172,7 @@ void Engine<Rule>::scan_list(int i, const Vec3& ri, const Vec3& vi, int first, c
 // Particle i is at now_; finds its earliest event: the first face of its cell
 // it will cross, or an earlier contact with a particle in the 27 cells around.
 template <class Rule>
-void Engine<Rule>::find_event(int i) {
+Event Engine<Rule>::find_event(int i) const {
   const Vec3 ri = m_[i].r, vi = m_[i].v;
   const double w = grid_.width();
   const int home = grid_.cell(i);
@@ -196,7 +194,7 @@ void Engine<Rule>::find_event(int i) {
   // prefetched: the misses then overlap instead of following one another
   // (the search is bound by memory latency, not arithmetic).
   int cells[27];
-  Vec3 shifts[27];
+  double shifts[27][3];  // plain (uninitialised) storage: filled by neighbour_cells
   neighbour_cells(c, home, cells, shifts);
   int heads[27];
   for (int k = 0; k < 27; ++k) heads[k] = grid_.first(cells[k]);
@@ -204,9 +202,7 @@ void Engine<Rule>::find_event(int i) {
     if (heads[k] >= 0) __builtin_prefetch(&m_[heads[k]]);
   for (int k = 0; k < 27; ++k)
     if (heads[k] >= 0) scan_list(i, ri, vi, heads[k], shifts[k], best, code);
-  event_time_[i] = now_ + best;
-  partner_[i] = code;
-  if (code >= 0) partner_count_[i] = m_[code].count;
+  return {now_ + best, code, code >= 0 ? m_[code].count : 0u};
 }
 
 template <class Rule>
@@ -281,27 +277,25 @@ RunStatus Engine<Rule>::run_until(double t_stop, std::int64_t max_events, const 
       if (c_.events >= last_event) return RunStatus::kEventBudget;
     }
     const int i = calendar_.top();
-    if (i < 0 || event_time_[i] > t_stop) break;
-    now_ = event_time_[i];
+    if (i < 0) break;
+    const Event ev = calendar_.event(i);
+    if (ev.time > t_stop) break;
+    now_ = ev.time;
     ++c_.events;
-    const int code = partner_[i];
+    const int code = ev.partner;
     if (code >= 0) {
-      if (m_[code].count != partner_count_[i]) {  // partner collided since: stale
+      if (m_[code].count != ev.partner_count) {  // partner collided since: stale
         ++c_.stale;
         advance(i);
-        find_event(i);
-        calendar_.update(i);
+        calendar_.schedule(i, find_event(i));
         continue;
       }
       collide(i, code);
-      find_event(i);
-      calendar_.update(i);
-      find_event(code);
-      calendar_.update(code);
+      calendar_.schedule(i, find_event(i));
+      calendar_.schedule(code, find_event(code));
     } else {
       cross(i, code);
-      find_event(i);
-      calendar_.update(i);
+      calendar_.schedule(i, find_event(i));
     }
   }
   now_ = std::max(now_, t_stop);

@@ -131,17 +131,17 @@ class Engine final : public EngineBase {
   void rebuild();
   void order_by_space();
   void order_by_id();
-  void find_event(int i);
+  Event find_event(int i) const;
   void cross(int i, int code);
   void collide(int i, int j);
   void note_collision_gap(int i, double gap, int partner);
   Vec3 image_shift(int from_cell, int to_cell) const;
   // The 27 cells around `home` (coordinates c) and the periodic shift of each.
-  void neighbour_cells(const CellCoord& c, int home, int* cells, Vec3* shifts) const;
+  void neighbour_cells(const CellCoord& c, int home, int* cells, double (*shifts)[3]) const;
   // Earliest contact of particle i (at now_, at ri with vi) with the particles
   // of one cell list starting at `first`, whose images are shifted by s;
   // updates best/code.
-  void scan_list(int i, const Vec3& ri, const Vec3& vi, int first, const Vec3& s, double& best, int& code) const;
+  void scan_list(int i, const Vec3& ri, const Vec3& vi, int first, const double* s, double& best, int& code) const;
 
   double L_;
   std::vector<Motion> m_;
@@ -150,10 +150,7 @@ class Engine final : public EngineBase {
   bool built_ = false;            // in space order, with grid, predictions and calendar
   Rule rule_;
   CellGrid grid_;
-  EventCalendar calendar_;
-  std::vector<double> event_time_;
-  std::vector<std::int32_t> partner_;        // >= 0: partner id; < 0: cell face to cross (-1 - face)
-  std::vector<std::uint32_t> partner_count_; // partner's count when the event was predicted
+  EventCalendar calendar_;  // each particle's event: partner >= 0, or the cell face to cross (-1 - face)
   std::vector<std::uint16_t> stall_;         // consecutive collisions without time advancing (dissipative rules)
   double now_;
   EngineCounters c_;

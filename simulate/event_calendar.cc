@@ -12,20 +12,23 @@ namespace {
 constexpr double kEventsPerBucket = 2.0;
 }  // namespace
 
-void EventCalendar::reset(const std::vector<double>* times, double now) {
-  times_ = times;
-  const std::size_t n = times->size();
-  next_.assign(n, kNone);
-  prev_.assign(n, kNone);
-  where_.assign(n, kNone);
+void EventCalendar::resize(std::size_t n) {
+  entry_.assign(n, Entry{});
   std::int32_t nb = 1;
   while (std::size_t(nb) < std::max<std::size_t>(n, 1)) nb *= 2;
   nb_ = nb;
   heads_.assign(std::size_t(nb_) + 1, kNone);
   heap_.clear();
+}
+
+void EventCalendar::reset(double now) {
+  std::fill(heads_.begin(), heads_.end(), kNone);
+  heap_.clear();
   // Put everything in overflow, then let start_year distribute it.
-  for (std::size_t p = 0; p < n; ++p)
-    if (std::isfinite((*times_)[p])) link(int(p), nb_);
+  for (std::size_t p = 0; p < entry_.size(); ++p) {
+    entry_[p].where = kNone;
+    if (std::isfinite(time(int(p)))) link(int(p), nb_);
+  }
   years_ = 0;
   start_year(now);
 }
@@ -37,14 +40,14 @@ void EventCalendar::start_year(double base) {
   ++years_;
   std::int64_t count = 0;
   double sum = 0;
-  for (int p = heads_[nb_]; p != kNone; p = next_[p]) {
-    sum += (*times_)[p] - base;
+  for (int p = heads_[nb_]; p != kNone; p = entry_[p].next) {
+    sum += time(p) - base;
     ++count;
   }
   if (count > 0) {
     const double mean = sum / double(count);
     double clipped = 0;
-    for (int p = heads_[nb_]; p != kNone; p = next_[p]) clipped += std::min((*times_)[p] - base, 3.0 * mean);
+    for (int p = heads_[nb_]; p != kNone; p = entry_[p].next) clipped += std::min(time(p) - base, 3.0 * mean);
     const double span = 2.0 * clipped / double(count);  // ~ the range holding most events
     const double w = span * kEventsPerBucket / double(count);
     if (w > 0 && std::isfinite(w)) width_ = w;
@@ -57,15 +60,15 @@ void EventCalendar::start_year(double base) {
   int p = heads_[nb_];
   heads_[nb_] = kNone;
   while (p != kNone) {
-    const int nxt = next_[p];
-    where_[p] = kNone;
+    const int nxt = entry_[p].next;
+    entry_[p].where = kNone;
     insert(p);  // bucket 0 is the current bucket: insert() puts it in the heap
     p = nxt;
   }
 }
 
 void EventCalendar::insert(int p) {
-  const double offset = ((*times_)[p] - base_) * inv_width_;
+  const double offset = (time(p) - base_) * inv_width_;
   if (offset < double(current_) + 1.0) {  // in (or, after a new year, before) the current bucket
     heap_push(p);
   } else if (offset >= double(nb_)) {
@@ -75,13 +78,14 @@ void EventCalendar::insert(int p) {
   }
 }
 
-void EventCalendar::update(int p) {
+void EventCalendar::schedule(int p, const Event& e) {
   erase(p);
-  if (std::isfinite((*times_)[p])) insert(p);
+  entry_[p].event = e;
+  if (std::isfinite(e.time)) insert(p);
 }
 
 void EventCalendar::erase(int p) {
-  const std::int32_t w = where_[p];
+  const std::int32_t w = entry_[p].where;
   if (w == kNone) return;
   if (w <= -2) heap_erase(-2 - w);
   else unlink(p);
@@ -99,8 +103,8 @@ bool EventCalendar::advance_bucket() {
     if (p == kNone) continue;
     heads_[current_] = kNone;
     while (p != kNone) {
-      const int nxt = next_[p];
-      where_[p] = kNone;
+      const int nxt = entry_[p].next;
+      entry_[p].where = kNone;
       heap_push(p);
       p = nxt;
     }
@@ -112,24 +116,25 @@ bool EventCalendar::advance_bucket() {
 }
 
 void EventCalendar::link(int p, int list) {
-  where_[p] = list;
-  prev_[p] = kNone;
-  next_[p] = heads_[list];
-  if (heads_[list] != kNone) prev_[heads_[list]] = p;
+  Entry& e = entry_[p];
+  e.where = list;
+  e.prev = kNone;
+  e.next = heads_[list];
+  if (heads_[list] != kNone) entry_[heads_[list]].prev = p;
   heads_[list] = p;
 }
 
 void EventCalendar::unlink(int p) {
-  const int list = where_[p];
-  if (prev_[p] != kNone) next_[prev_[p]] = next_[p];
-  else heads_[list] = next_[p];
-  if (next_[p] != kNone) prev_[next_[p]] = prev_[p];
-  where_[p] = kNone;
+  Entry& e = entry_[p];
+  if (e.prev != kNone) entry_[e.prev].next = e.next;
+  else heads_[e.where] = e.next;
+  if (e.next != kNone) entry_[e.next].prev = e.prev;
+  e.where = kNone;
 }
 
 void EventCalendar::heap_push(int p) {
   heap_.push_back(p);
-  where_[p] = -2 - std::int32_t(heap_.size() - 1);
+  entry_[p].where = -2 - std::int32_t(heap_.size() - 1);
   sift_up(int(heap_.size()) - 1);
 }
 
@@ -137,12 +142,12 @@ void EventCalendar::heap_erase(int pos) {
   const int p = heap_[pos];
   const int last = heap_.back();
   heap_.pop_back();
-  where_[p] = kNone;
+  entry_[p].where = kNone;
   if (pos == int(heap_.size())) return;
   heap_[pos] = last;
-  where_[last] = -2 - pos;
+  entry_[last].where = -2 - pos;
   sift_up(pos);
-  sift_down(-2 - where_[last]);
+  sift_down(-2 - entry_[last].where);
 }
 
 void EventCalendar::sift_up(int pos) {
@@ -151,11 +156,11 @@ void EventCalendar::sift_up(int pos) {
     const int parent = (pos - 1) / 2;
     if (!earlier(p, heap_[parent])) break;
     heap_[pos] = heap_[parent];
-    where_[heap_[pos]] = -2 - pos;
+    entry_[heap_[pos]].where = -2 - pos;
     pos = parent;
   }
   heap_[pos] = p;
-  where_[p] = -2 - pos;
+  entry_[p].where = -2 - pos;
 }
 
 void EventCalendar::sift_down(int pos) {
@@ -167,11 +172,11 @@ void EventCalendar::sift_down(int pos) {
     if (child + 1 < n && earlier(heap_[child + 1], heap_[child])) ++child;
     if (!earlier(heap_[child], p)) break;
     heap_[pos] = heap_[child];
-    where_[heap_[pos]] = -2 - pos;
+    entry_[heap_[pos]].where = -2 - pos;
     pos = child;
   }
   heap_[pos] = p;
-  where_[p] = -2 - pos;
+  entry_[p].where = -2 - pos;
 }
 
 }  // namespace coolgas

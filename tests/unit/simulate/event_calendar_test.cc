@@ -20,7 +20,9 @@ TEST(EventCalendar, PopsInTheSameOrderAsASortedSet) {
   std::vector<double> times(n);
   for (auto& t : times) t = rng.uniform();
   EventCalendar cal;
-  cal.reset(&times, 0.0);
+  cal.resize(n);
+  for (int i = 0; i < n; ++i) cal.assign(i, {times[i]});
+  cal.reset(0.0);
   std::set<std::pair<double, int>> ref;
   for (int i = 0; i < n; ++i) ref.insert({times[i], i});
   double now = 0;
@@ -35,7 +37,7 @@ TEST(EventCalendar, PopsInTheSameOrderAsASortedSet) {
     ref.erase({times[top], top});
     times[top] = now + scale * rng.uniform() * rng.uniform();
     ref.insert({times[top], top});
-    cal.update(top);
+    cal.schedule(top, {times[top]});
     const int other = int(rng.below(n));
     ref.erase({times[other], other});
     if (rng.uniform() < 0.05) {
@@ -44,25 +46,27 @@ TEST(EventCalendar, PopsInTheSameOrderAsASortedSet) {
       times[other] = now + scale * rng.uniform();
       ref.insert({times[other], other});
     }
-    cal.update(other);
+    cal.schedule(other, {times[other]});
   }
   EXPECT_GT(cal.years(), 10);  // the test crossed many calendar years
 }
 
 TEST(EventCalendar, TiesGoToTheSmallerId) {
-  std::vector<double> times = {2.0, 1.0, 1.0, 3.0};
   EventCalendar cal;
-  cal.reset(&times, 0.0);
+  cal.resize(4);
+  const double times[] = {2.0, 1.0, 1.0, 3.0};
+  for (int i = 0; i < 4; ++i) cal.assign(i, {times[i], 10 + i, 0});
+  cal.reset(0.0);
   EXPECT_EQ(cal.top(), 1);
-  times[1] = std::numeric_limits<double>::infinity();
-  cal.update(1);
+  EXPECT_EQ(cal.event(1).partner, 11);  // the event's payload travels with it
+  cal.schedule(1, {std::numeric_limits<double>::infinity()});
   EXPECT_EQ(cal.top(), 2);
 }
 
 TEST(EventCalendar, EmptyCalendarHasNoTop) {
-  std::vector<double> times(3, std::numeric_limits<double>::infinity());
   EventCalendar cal;
-  cal.reset(&times, 0.0);
+  cal.resize(3);
+  cal.reset(0.0);
   EXPECT_EQ(cal.top(), -1);
 }
 
