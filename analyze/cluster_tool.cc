@@ -1,5 +1,7 @@
 #include "analyze/cluster_tool.h"
 
+#include <cmath>
+
 #include <ostream>
 #include <span>
 #include <sstream>
@@ -56,7 +58,10 @@ void run_clusters(const ClustersOptions& opt, std::ostream& final_out) {
   Trajectory traj(opt.input, kPosition);
   Provenance prov = traj.provenance();
   prov.emplace_back("bins_per_decade", std::to_string(opt.bins_per_decade));
-  prov.emplace_back("cells", "floor(L)^3 cubic cells of side L/floor(L); face neighbours; periodic");
+  if (traj.aggregates())  // ballistic aggregation: the clusters are the aggregates themselves
+    prov.emplace_back("clusters", "the aggregates of the file (ballistic aggregation); mass in particles");
+  else
+    prov.emplace_back("cells", "floor(L)^3 cubic cells of side L/floor(L); face neighbours; periodic");
   for (double t : opt.times) prov.emplace_back("time", format_number(t));
   prov.emplace_back("table", opt.series ? "cluster series" : "mass distribution");
   TsvWriter out(os, "coolgas-clusters", prov, opt.series ? kSeriesColumns : kDistributionColumns);
@@ -66,9 +71,13 @@ void run_clusters(const ClustersOptions& opt, std::ostream& final_out) {
   Frame frame;
   for (std::size_t dump : traj.dumps_nearest(opt.times)) {
     traj.read(dump, frame);
-    labeller.label(grid_for(traj, frame), frame.position);
     hist.clear();
-    labeller.for_each_mass([&](std::int64_t m) { hist.add(m); });
+    if (traj.aggregates()) {
+      for (double m : frame.mass) hist.add(std::llround(m));
+    } else {
+      labeller.label(grid_for(traj, frame), frame.position);
+      labeller.for_each_mass([&](std::int64_t m) { hist.add(m); });
+    }
     const double volume = frame.L * frame.L * frame.L;
     if (opt.series) {
       write_series_row(out, frame.time, hist.moments(), volume);

@@ -12,15 +12,31 @@ namespace {
 
 struct ElementSpec {
   Field field;
-  const char* path;  // the H5MD element (group holding step, time, value)
+  const char* path;       // the H5MD element (group holding step, time, value)
+  hsize_t per_particle;   // numbers per particle: value is (F, N, 3) or (F, N)
 };
 
-// The per-particle elements a Trajectory can read, all of shape (F, N, 3).
+// The per-particle elements a Trajectory can read.
 constexpr ElementSpec kElements[] = {
-    {kPosition, "particles/all/position"},
-    {kVelocity, "particles/all/velocity"},
-    {kImage, "particles/all/image"},
+    {kPosition, "particles/all/position", 3},
+    {kVelocity, "particles/all/velocity", 3},
+    {kImage, "particles/all/image", 3},
+    {kId, "particles/all/id", 1},
+    {kMass, "particles/all/mass", 1},
 };
+
+// Moves the entries of present slots (keep[i]) to the front, `k` numbers each.
+template <class T>
+void compact(std::vector<T>& v, const std::vector<bool>& keep, std::size_t k) {
+  if (v.empty()) return;
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < keep.size(); ++i) {
+    if (!keep[i]) continue;
+    for (std::size_t c = 0; c < k; ++c) v[out * k + c] = v[i * k + c];
+    ++out;
+  }
+  v.resize(out * k);
+}
 
 std::string value_of(const ElementSpec& e) { return std::string(e.path) + "/value"; }
 
@@ -38,10 +54,12 @@ void check_finite(const std::vector<double>& v, const std::string& where) {
 Trajectory::Trajectory(const std::string& path, unsigned fields) : path_(path), fields_(fields) {
   if (fields == 0) throw std::logic_error("Trajectory opened for no element");
   file_ = h5::open_file(path, h5::Mode::kReadOnly);
+  aggregates_ = h5::exists(file_.id(), "particles/all/id/value");
+  if (aggregates_) fields_ |= kId | kMass;
   std::size_t frames = SIZE_MAX;
   for (const auto& e : kElements) {
-    if (!(fields & e.field)) continue;
-    check_element(e.path);
+    if (!(fields_ & e.field)) continue;
+    check_element(e.path, e.per_particle);
     h5::Handle value = h5::open_dataset(file_.id(), value_of(e));
     h5::Handle time = h5::open_dataset(file_.id(), std::string(e.path) + "/time");
     frames = std::min<std::size_t>({frames, h5::shape(value.id())[0], h5::shape(time.id())[0]});
@@ -67,15 +85,17 @@ void Trajectory::missing(const std::string& what) const {
   throw InputError(path_ + ": not a coolgas trajectory: missing /" + what);
 }
 
-// Checks that an element has value/time/step and that value is (F, N, 3) with
-// the same N as the elements checked before.
-void Trajectory::check_element(const std::string& element) {
+// Checks that an element has value/time/step and that value is (F, N, 3), or
+// (F, N) for one number per particle, with the same N as the elements checked before.
+void Trajectory::check_element(const std::string& element, hsize_t per_particle) {
   for (const char* d : {"/value", "/time", "/step"})
     if (!h5::exists(file_.id(), element + d)) missing(element + d);
   h5::Handle value = h5::open_dataset(file_.id(), element + "/value");
   const auto dims = h5::shape(value.id());
-  if (dims.size() != 3 || dims[2] != 3)
-    throw InputError(path_ + ": /" + element + "/value has the wrong shape (expected frames x particles x 3)");
+  const bool fits = per_particle == 1 ? dims.size() == 2 : (dims.size() == 3 && dims[2] == per_particle);
+  if (!fits)
+    throw InputError(path_ + ": /" + element + "/value has the wrong shape (expected frames x particles" +
+                     (per_particle == 1 ? ")" : " x 3)"));
   const auto n = static_cast<std::int64_t>(dims[1]);
   if (n < 1) throw InputError(path_ + ": /" + element + "/value holds no particles");
   if (n_ != 0 && n != n_)
@@ -148,8 +168,31 @@ void Trajectory::read(std::size_t dump, Frame& frame) const {
         frame.image.resize(size);
         h5::read_rows(value.id(), h5::Type::kInt32, dump, 1, frame.image.data());
         break;
+      case kId:
+        frame.id.resize(std::size_t(n_));
+        h5::read_rows(value.id(), h5::Type::kInt32, dump, 1, frame.id.data());
+        break;
+      case kMass:
+        frame.mass.resize(std::size_t(n_));
+        h5::read_rows(value.id(), h5::Type::kFloat64, dump, 1, frame.mass.data());
+        check_finite(frame.mass, where + e.path);
+        break;
     }
   }
+  if (aggregates_) keep_present(frame);
+}
+
+// Keeps the slots whose id is not the fill value -1: one entry per aggregate.
+void Trajectory::keep_present(Frame& frame) const {
+  std::vector<bool> keep(frame.id.size());
+  for (std::size_t i = 0; i < keep.size(); ++i) keep[i] = frame.id[i] >= 0;
+  compact(frame.position, keep, 3);
+  compact(frame.velocity, keep, 3);
+  compact(frame.image, keep, 3);
+  compact(frame.mass, keep, 1);
+  compact(frame.id, keep, 1);
+  if (frame.id.empty())
+    throw InputError(path_ + ": dump " + std::to_string(frame.dump) + " holds no aggregate (every id is -1)");
 }
 
 Provenance Trajectory::provenance() const {

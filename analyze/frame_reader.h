@@ -6,10 +6,16 @@
 // read element by element with one hyperslab read each, straight into the
 // frame's buffers, which are reused from frame to frame.
 //
-// To read another per-particle element (issue 4 adds id, mass, diameter), add
-// a Field bit, a buffer in Frame and a row in the element table of
-// frame_reader.cc.
+// To read another per-particle element, add a Field bit, a buffer in Frame
+// and a row in the element table of frame_reader.cc.
+//
+// Ballistic aggregation files (schema version 2, model "aggregation") keep N
+// slots per dump and mark empty ones with id -1 (H5MD's convention for a
+// varying number of particles). A Trajectory of such a file always reads id
+// and mass too and hands out only the aggregates present: the arrays of a
+// Frame then hold one entry per aggregate, with its mass in `mass`.
 #pragma once
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -21,7 +27,7 @@
 namespace coolgas {
 
 // Per-particle elements, combinable as a bit set.
-enum Field : unsigned { kPosition = 1u, kVelocity = 2u, kImage = 4u };
+enum Field : unsigned { kPosition = 1u, kVelocity = 2u, kImage = 4u, kId = 8u, kMass = 16u };
 
 // One dump. Arrays hold 3 numbers per particle, in particle-id order.
 struct Frame {
@@ -32,6 +38,11 @@ struct Frame {
   std::vector<double> position;
   std::vector<double> velocity;
   std::vector<std::int32_t> image;
+  // aggregation files only (empty otherwise): id and mass of each aggregate present
+  std::vector<std::int32_t> id;
+  std::vector<double> mass;
+
+  std::size_t particles() const { return id.empty() ? std::max({position.size(), velocity.size(), image.size()}) / 3 : id.size(); }
 };
 
 class Trajectory {
@@ -41,7 +52,8 @@ class Trajectory {
   Trajectory(const std::string& path, unsigned fields);
 
   const std::string& path() const { return path_; }
-  std::int64_t particles() const { return n_; }
+  std::int64_t particles() const { return n_; }  // N (slots, for aggregation files)
+  bool aggregates() const { return aggregates_; }  // an aggregation file: frames hold the aggregates present
   const std::vector<double>& dump_times() const { return times_; }
   // Index of the dump whose time is nearest t (the earlier one on a tie).
   std::size_t nearest_dump(double t) const;
@@ -58,11 +70,13 @@ class Trajectory {
 
  private:
   [[noreturn]] void missing(const std::string& what) const;
-  void check_element(const std::string& element);
+  void check_element(const std::string& element, hsize_t per_particle);
+  void keep_present(Frame& frame) const;
   double box_side(std::size_t dump) const;
 
   std::string path_;
   unsigned fields_;
+  bool aggregates_ = false;
   h5::Handle file_;
   std::int64_t n_ = 0;
   std::vector<double> times_;

@@ -2,6 +2,8 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <iterator>
+#include <stdexcept>
 
 #include "common/error.h"
 #include "common/version.h"
@@ -9,7 +11,11 @@
 namespace coolgas {
 namespace {
 
+// Version 1 for the elastic and inelastic models (their files are exactly as
+// before version 2 existed); version 2 for what version 2 added.
 constexpr std::int64_t kSchemaVersion = 1;
+constexpr std::int64_t kSchemaVersionEffects = 2;
+constexpr std::int32_t kAbsentId = -1;  // H5MD fill value of particles/all/id: no particle in this slot
 constexpr hsize_t kFrameChunk = 1;      // one frame per chunk: frames are large
 constexpr hsize_t kObservableChunk = 256;
 
@@ -45,6 +51,21 @@ const char* const kParticleElements[] = {"particles/all/box/edges", "particles/a
 const char* const kObservableElements[] = {"observables/kinetic_energy", "observables/collisions",
                                            "observables/collisions_per_particle",
                                            "observables/collisions_below_delta", "observables/total_momentum"};
+const char* const kAggregateParticleElements[] = {"particles/all/id", "particles/all/mass", "particles/all/diameter"};
+const char* const kAggregateObservableElements[] = {"observables/aggregates", "observables/mean_mass",
+                                                    "observables/largest_mass"};
+
+void create_aggregate_elements(hid_t f, hsize_t n, hsize_t frame_chunk, hsize_t observable_chunk) {
+  h5::Handle id = h5::create_group(f, "particles/all/id");
+  h5::create_series(id.id(), "step", h5::Type::kInt64, {}, frame_chunk);
+  h5::create_series(id.id(), "time", h5::Type::kFloat64, {}, frame_chunk);
+  h5::create_series(id.id(), "value", h5::Type::kInt32, {n}, frame_chunk, kAbsentId);
+  create_element(f, "particles/all/mass", h5::Type::kFloat64, {n}, frame_chunk);
+  create_element(f, "particles/all/diameter", h5::Type::kFloat64, {n}, frame_chunk);
+  create_element(f, "observables/aggregates", h5::Type::kInt64, {}, observable_chunk);
+  create_element(f, "observables/mean_mass", h5::Type::kFloat64, {}, observable_chunk);
+  create_element(f, "observables/largest_mass", h5::Type::kFloat64, {}, observable_chunk);
+}
 
 void write_metadata(hid_t file, const RunParameters& p) {
   h5::Handle h5md = h5::create_group(file, "h5md");
@@ -61,7 +82,8 @@ void write_metadata(hid_t file, const RunParameters& p) {
   h5::write_attr(box.id(), "boundary", std::vector<std::string>{"periodic", "periodic", "periodic"});
 
   h5::Handle par = h5::create_group(file, "parameters");
-  h5::write_attr(par.id(), "schema_version", kSchemaVersion);
+  const bool effects = p.model == "viscoelastic" || is_aggregation_model(p.model);
+  h5::write_attr(par.id(), "schema_version", effects ? kSchemaVersionEffects : kSchemaVersion);
   h5::write_attr(par.id(), "program_version", program_version());
   h5::write_attr(par.id(), "scene", p.scene_toml);
   h5::write_attr(par.id(), "seed", p.seed);
@@ -72,6 +94,7 @@ void write_metadata(hid_t file, const RunParameters& p) {
   h5::write_attr(par.id(), "model", p.model);
   h5::write_attr(par.id(), "r0", p.r0);
   h5::write_attr(par.id(), "delta", p.delta);
+  if (p.model == "viscoelastic") h5::write_attr(par.id(), "viscoelastic_b", p.viscoelastic_b);
 }
 
 }  // namespace
@@ -95,6 +118,8 @@ H5mdWriter H5mdWriter::create(const std::string& path, const RunParameters& para
   create_element(f, "observables/collisions_per_particle", h5::Type::kFloat64, {}, kObservableChunk);
   create_element(f, "observables/collisions_below_delta", h5::Type::kInt64, {}, kObservableChunk);
   create_element(f, "observables/total_momentum", h5::Type::kFloat64, {3}, kObservableChunk);
+  w.aggregation_ = is_aggregation_model(params.model);
+  if (w.aggregation_) create_aggregate_elements(f, n, kFrameChunk, kObservableChunk);
   h5::Handle restart = h5::create_group(f, "restart");
   h5::create_series(restart.id(), "time", h5::Type::kFloat64, {}, kObservableChunk);
   h5::create_series(restart.id(), "collisions", h5::Type::kInt64, {}, kObservableChunk);
@@ -116,9 +141,18 @@ H5mdWriter H5mdWriter::reopen(const std::string& path) {
   if (times.empty()) throw InputError("'" + path + "' holds no complete dump to resume from");
   const hsize_t frames = times.size();
   const double last = times.back();
+  w.aggregation_ = h5::exists(f, "particles/all/id");
+  std::vector<const char*> particle_elements(std::begin(kParticleElements), std::end(kParticleElements));
+  std::vector<const char*> observable_elements(std::begin(kObservableElements), std::end(kObservableElements));
+  if (w.aggregation_) {
+    particle_elements.insert(particle_elements.end(), std::begin(kAggregateParticleElements),
+                             std::end(kAggregateParticleElements));
+    observable_elements.insert(observable_elements.end(), std::begin(kAggregateObservableElements),
+                               std::end(kAggregateObservableElements));
+  }
   // Drop anything an interrupted burst wrote after the last complete frame.
-  for (const char* e : kParticleElements) truncate_element(f, e, frames);
-  for (const char* e : kObservableElements) {
+  for (const char* e : particle_elements) truncate_element(f, e, frames);
+  for (const char* e : observable_elements) {
     h5::Handle t = h5::open_dataset(f, std::string(e) + "/time");
     const auto ot = h5::read_all<double>(t.id());
     hsize_t keep = 0;
@@ -138,6 +172,10 @@ void H5mdWriter::write_pending() {
     append(f, "observables/collisions_per_particle", r.collisions, r.time, h5::Type::kFloat64, &per_particle);
     append(f, "observables/collisions_below_delta", r.collisions, r.time, h5::Type::kInt64, &r.below_delta);
     append(f, "observables/total_momentum", r.collisions, r.time, h5::Type::kFloat64, r.momentum.data());
+    if (!aggregation_) continue;
+    append(f, "observables/aggregates", r.collisions, r.time, h5::Type::kInt64, &r.aggregates);
+    append(f, "observables/mean_mass", r.collisions, r.time, h5::Type::kFloat64, &r.mean_mass);
+    append(f, "observables/largest_mass", r.collisions, r.time, h5::Type::kFloat64, &r.largest_mass);
   }
   pending_.clear();
 }
@@ -150,6 +188,12 @@ void H5mdWriter::add_frame(const FrameView& fr) {
   append(f, "particles/all/position", fr.collisions, fr.time, h5::Type::kFloat64, fr.position, fr.position_stride);
   append(f, "particles/all/image", fr.collisions, fr.time, h5::Type::kInt32, fr.image);
   append(f, "particles/all/velocity", fr.collisions, fr.time, h5::Type::kFloat64, fr.velocity, fr.velocity_stride);
+  if (aggregation_) {
+    if (!fr.id || !fr.mass || !fr.diameter) throw std::logic_error("aggregation frame without id, mass or diameter");
+    append(f, "particles/all/id", fr.collisions, fr.time, h5::Type::kInt32, fr.id);
+    append(f, "particles/all/mass", fr.collisions, fr.time, h5::Type::kFloat64, fr.mass);
+    append(f, "particles/all/diameter", fr.collisions, fr.time, h5::Type::kFloat64, fr.diameter);
+  }
   h5::Handle rt = h5::open_dataset(f, "restart/time");
   h5::Handle rc = h5::open_dataset(f, "restart/collisions");
   h5::Handle rb = h5::open_dataset(f, "restart/collisions_below_delta");
@@ -158,6 +202,8 @@ void H5mdWriter::add_frame(const FrameView& fr) {
   h5::append_row(rt.id(), h5::Type::kFloat64, &fr.time);  // last: marks the frame complete
   h5::flush(file_);
 }
+
+bool is_aggregation_model(const std::string& model) { return model == "aggregation"; }
 
 void H5mdWriter::flush() {
   write_pending();

@@ -22,15 +22,23 @@ struct RunParameters {
   double L = 0, phi = 0, T0 = 0;
   std::string model = "elastic";
   double r0 = 1, delta = 0;
+  double viscoelastic_b = 0;  // written for model "viscoelastic" only (schema version 2)
 };
+
+// Files of model "aggregation" hold, besides the version-1 layout, per-particle
+// id, mass and diameter and the aggregate observables (schema version 2).
+bool is_aggregation_model(const std::string& model);
 
 // One row of /observables.
 struct ObservableRow {
   double time = 0;
   std::int64_t collisions = 0;
   std::int64_t below_delta = 0;
-  double kinetic_energy = 0;  // per particle
+  double kinetic_energy = 0;  // per particle (aggregation: per initial particle)
   std::array<double, 3> momentum{};
+  // aggregation only
+  std::int64_t aggregates = 0;
+  double mean_mass = 0, largest_mass = 0;
 };
 
 // One dump: N particles in particle-id order. Particle i's position is
@@ -45,6 +53,10 @@ struct FrameView {
   const double* velocity = nullptr;
   int position_stride = 3;
   int velocity_stride = 3;
+  // aggregation only: per slot id (-1: absent), mass and diameter (0 when absent)
+  const std::int32_t* id = nullptr;
+  const double* mass = nullptr;
+  const double* diameter = nullptr;
 };
 
 class H5mdWriter {
@@ -73,6 +85,7 @@ class H5mdWriter {
   h5::Handle file_;
   std::int64_t n_ = 0;
   double box_ = 0;
+  bool aggregation_ = false;
   std::vector<ObservableRow> pending_;
 };
 

@@ -224,7 +224,7 @@ std::vector<hsize_t> shape(hid_t dataset) {
 }
 
 Handle create_series(hid_t loc, const std::string& name, Type type, const std::vector<hsize_t>& inner,
-                     hsize_t chunk_rows) {
+                     hsize_t chunk_rows, std::optional<std::int64_t> fill_value) {
   std::vector<hsize_t> dims{0}, maxdims{H5S_UNLIMITED}, chunk{chunk_rows};
   for (hsize_t d : inner) {
     dims.push_back(d);
@@ -234,6 +234,7 @@ Handle create_series(hid_t loc, const std::string& name, Type type, const std::v
   Handle space(check(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), maxdims.data()), "series space"));
   Handle dcpl(check(H5Pcreate(H5P_DATASET_CREATE), "dataset property list"));
   check_status(H5Pset_chunk(dcpl.id(), static_cast<int>(chunk.size()), chunk.data()), "chunking");
+  if (fill_value) check_status(H5Pset_fill_value(dcpl.id(), H5T_NATIVE_INT64, &*fill_value), "fill value");
   return Handle(check(H5Dcreate2(loc, name.c_str(), file_type(type), space.id(), H5P_DEFAULT, dcpl.id(), H5P_DEFAULT),
                       "create dataset '" + name + "'"));
 }

@@ -5,6 +5,7 @@
 #include <hdf5.h>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -66,8 +67,9 @@ enum class Type { kFloat64, kInt64, kInt32 };
 std::vector<hsize_t> shape(hid_t dataset);
 
 // Creates a chunked dataset whose first dimension grows: shape (0, inner...).
+// `fill_value`: the dataset's HDF5 fill value (H5MD marks absent particles with it).
 Handle create_series(hid_t loc, const std::string& name, Type type, const std::vector<hsize_t>& inner,
-                     hsize_t chunk_rows);
+                     hsize_t chunk_rows, std::optional<std::int64_t> fill_value = std::nullopt);
 // Appends one row (a block of prod(inner) elements) at the end of the first
 // dimension. With a row shape (N, k) and stride > k, the k elements of item i
 // are read from data[i * stride ...] (HDF5 gathers them; nothing is copied).

@@ -11,6 +11,37 @@ using enum DataType;
 using enum RowCount;
 using enum ValueRule;
 
+// Version 2 adds the effects of issue 4: the viscoelastic model's constant,
+// and for ballistic aggregation per-particle id (fill value -1 marks an
+// absent aggregate), mass and diameter, and the aggregate observables. All
+// optional: a file has them when its model uses them.
+void append_version_2(Profile& p) {
+  p.version = 2;
+  p.attributes.push_back({.group = "/parameters",
+                          .name = "viscoelastic_b",
+                          .type = kFloat64,
+                          .meaning = "viscoelastic material constant b",
+                          .presence = Presence::kOptional,
+                          .since = 2});
+  const auto optional2 = [](ElementSpec e) {
+    e.presence = Presence::kOptional;
+    e.since = 2;
+    return e;
+  };
+  p.elements.push_back(optional2({.path = "/particles/all/id", .type = kInt32, .row = {kParticles},
+                                  .meaning = "aggregate id, -1 if absent"}));
+  p.elements.push_back(optional2({.path = "/particles/all/mass", .row = {kParticles}, .rule = kFinite,
+                                  .meaning = "aggregate mass"}));
+  p.elements.push_back(optional2({.path = "/particles/all/diameter", .row = {kParticles}, .rule = kFinite,
+                                  .meaning = "aggregate diameter"}));
+  p.elements.push_back(optional2({.path = "/observables/aggregates", .type = kInt64, .rows = kObservableRows,
+                                  .meaning = "number of aggregates"}));
+  p.elements.push_back(optional2({.path = "/observables/mean_mass", .rows = kObservableRows, .rule = kFinite,
+                                  .meaning = "mean aggregate mass"}));
+  p.elements.push_back(optional2({.path = "/observables/largest_mass", .rows = kObservableRows, .rule = kFinite,
+                                  .meaning = "largest aggregate mass"}));
+}
+
 // Version 1, row for row as in data-schema/h5md-profile.md. Later versions append.
 Profile make_profile() {
   Profile p;
@@ -74,6 +105,7 @@ Profile make_profile() {
       {.path = "/restart/collisions", .meaning = "collisions at the dump"},
       {.path = "/restart/collisions_below_delta", .meaning = "collisions below delta at the dump"},
   };
+  append_version_2(p);
   p.schema_version = {"/parameters", "schema_version"};
   p.particle_count = {"/parameters", "N"};
   p.box_side = {"/parameters", "L"};

@@ -37,7 +37,7 @@ int main(int argc, char** argv) {
     }
     const auto report = coolgas::schema::validate(file);
     if (report.valid()) {
-      std::cout << coolgas::schema::valid_line(file, report.summary, coolgas::schema::h5md_profile().version) << "\n";
+      std::cout << coolgas::schema::valid_line(file, report.summary, report.summary.schema_version) << "\n";
       return coolgas::kExitOk;
     }
     for (const auto& p : report.problems) std::cout << coolgas::schema::problem_line(file, p) << "\n";

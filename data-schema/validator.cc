@@ -41,7 +41,8 @@ class Checker {
     check_shared_rows(RowCount::kFrames, profile_.frames_from);
     check_shared_rows(RowCount::kObservableRows, profile_.observable_rows_from);
     for (const DatasetSpec& d : profile_.datasets) guarded(d.path, [&] { check_dataset(d); });
-    report_.summary = {N_.value_or(0), rows_of(profile_.frames_from), rows_of(profile_.observable_rows_from)};
+    report_.summary = {N_.value_or(0), rows_of(profile_.frames_from), rows_of(profile_.observable_rows_from),
+                       file_version_};
     return std::move(report_);
   }
 

@@ -29,6 +29,7 @@ struct Summary {
   std::int64_t particles = 0;   // N
   hsize_t frames = 0;           // F
   hsize_t observable_rows = 0;  // K
+  int schema_version = 0;       // the file's /parameters/schema_version (the profile's when unreadable)
 };
 
 struct Report {

@@ -11,6 +11,9 @@
 // was made elastic by the δ cut-off. Adding a rule: a struct here, one
 // explicit instantiation in engine.cc, one case in make_engine().
 #pragma once
+#include <cmath>
+
+#include "simulate/viscoelastic_restitution.h"
 
 namespace coolgas {
 
@@ -40,6 +43,25 @@ struct ConstantRestitutionRule {
   // contact can resolve thousands of same-instant collisions (seen with
   // r0 = 0.1, delta = 1e-7), so only a far longer run means a hang.
   int collapse_limit() const { return delta > 0 ? 60000 : 200; }
+};
+
+// Viscoelastic spheres (simulate/viscoelastic_restitution.h): r = ε(b g^{1/5}),
+// which rises to 1 as the normal speed g goes to 0, so slow collisions are
+// nearly elastic and inelastic collapse cannot happen; δ (default 0) may
+// still make the slowest collisions exactly elastic. b is in (σ ω0)^{-1/5}.
+struct ViscoelasticRule {
+  static constexpr bool kDissipative = true;
+  ViscoelasticRule(double b_, double delta_) : b(b_), delta(delta_), eps(&ViscoelasticTable::get()) {}
+  double b;
+  double delta;
+  const ViscoelasticTable* eps;
+  double restitution(double g, bool& below_delta) const {
+    below_delta = g < delta;
+    return below_delta ? 1.0 : (*eps)(b * std::pow(g, 0.2));
+  }
+  // Collapse is impossible (ε -> 1 as g -> 0), but dense clusters resolve
+  // thousands of near-simultaneous collisions: only a far longer run is a hang.
+  int collapse_limit() const { return 60000; }
 };
 
 }  // namespace coolgas

@@ -319,5 +319,6 @@ Vec3 total_momentum(const EngineBase& e) {
 
 template class Engine<ElasticRule>;
 template class Engine<ConstantRestitutionRule>;
+template class Engine<ViscoelasticRule>;
 
 }  // namespace coolgas

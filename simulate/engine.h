@@ -101,6 +101,13 @@ class EngineBase {
   virtual void record_collisions(std::vector<CollisionRecord>* log) = 0;
   // Calendar years started (a benchmark statistic).
   virtual std::int64_t calendar_years() const = 0;
+  // Ballistic aggregation (aggregation_engine.h) changes the particles: per
+  // slot (id order) the mass and diameter, and the id, -1 once the slot's
+  // aggregate has merged into another. nullptr from engines whose particles
+  // never change (unit mass and diameter, all present).
+  virtual const double* masses() const { return nullptr; }
+  virtual const double* diameters() const { return nullptr; }
+  virtual const std::int32_t* ids() const { return nullptr; }
 };
 
 // Kinetic energy per particle and total momentum of the engine's particles,

@@ -3,12 +3,16 @@
 #pragma once
 #include <memory>
 
+#include "simulate/aggregation_engine.h"
 #include "simulate/engine.h"
 #include "simulate/scene.h"
 
 namespace coolgas {
 
+// `aggregates` (aggregation only; resume): the slots' masses, diameters and
+// ids; by default every particle is a unit sphere.
 std::unique_ptr<EngineBase> make_engine(const Scene& scene, Particles particles, double now,
-                                        const EngineCounters& counters = {});
+                                        const EngineCounters& counters = {},
+                                        const AggregateState* aggregates = nullptr);
 
 }  // namespace coolgas

@@ -7,6 +7,35 @@
 
 namespace coolgas {
 
+namespace {
+
+// The aggregates of dump `row`: slots whose id is the fill value -1 are empty.
+AggregateState read_aggregates(hid_t file, const std::string& path, hsize_t row, std::size_t n) {
+  AggregateState a;
+  a.id.resize(n);
+  a.mass.resize(n);
+  a.diameter.resize(n);
+  for (const char* need : {"particles/all/mass/value", "particles/all/diameter/value"})
+    if (!h5::exists(file, need)) throw InputError("cannot resume from '" + path + "': missing /" + need);
+  h5::Handle id = h5::open_dataset(file, "particles/all/id/value");
+  h5::Handle mass = h5::open_dataset(file, "particles/all/mass/value");
+  h5::Handle diam = h5::open_dataset(file, "particles/all/diameter/value");
+  h5::read_rows(id.id(), h5::Type::kInt32, row, 1, a.id.data());
+  h5::read_rows(mass.id(), h5::Type::kFloat64, row, 1, a.mass.data());
+  h5::read_rows(diam.id(), h5::Type::kFloat64, row, 1, a.diameter.data());
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool present = a.id[i] >= 0;
+    if ((present && (a.id[i] != std::int32_t(i) || !(a.mass[i] >= 1) || !(a.diameter[i] >= 1))) ||
+        (!present && a.id[i] != -1))
+      throw InputError("cannot resume from '" + path + "': slot " + std::to_string(i) +
+                       " of the last dump holds id " + std::to_string(a.id[i]) +
+                       " with mass and diameter below 1 or in the wrong slot (ids are slot numbers, -1 when absent)");
+  }
+  return a;
+}
+
+}  // namespace
+
 ResumePoint read_resume_point(const std::string& path) {
   h5::Handle f = h5::open_file(path, h5::Mode::kReadOnly);
   const hid_t id = f.id();
@@ -38,6 +67,7 @@ ResumePoint read_resume_point(const std::string& path) {
   h5::read_rows(vel.id(), h5::Type::kFloat64, last, 1, rp.particles.v.data());
   h5::read_rows(img.id(), h5::Type::kInt32, last, 1, rp.particles.image.data());
   std::fill(rp.particles.t.begin(), rp.particles.t.end(), rp.time);
+  if (h5::exists(id, "particles/all/id/value")) rp.aggregates = read_aggregates(id, path, last, n);
   return rp;
 }
 

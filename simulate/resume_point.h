@@ -1,7 +1,9 @@
 // Reading the state to resume from: the last complete dump of a trajectory.
 #pragma once
+#include <optional>
 #include <string>
 
+#include "simulate/aggregation_engine.h"
 #include "simulate/engine.h"
 #include "simulate/particles.h"
 
@@ -12,6 +14,7 @@ struct ResumePoint {
   double time = 0;
   EngineCounters counters;  // collisions and below_delta at the dump
   Particles particles;      // positions, velocities, images at `time`
+  std::optional<AggregateState> aggregates;  // ids, masses, diameters (aggregation files only)
 };
 
 // Throws InputError naming the file when it is missing, not HDF5, not a

@@ -22,11 +22,18 @@ const std::vector<SceneKey>& scene_keys() {
       {"system.equilibrate", "float",
        "elastic collision times run before t = 0 so the positions form an equilibrium fluid, then velocities "
        "are drawn afresh (default 5; 0 starts from the raw packing)"},
-      {"collision.model", "string", "\"elastic\" (default) or \"inelastic\" (paper Eq. 1 with the delta cut-off)"},
+      {"collision.model", "string",
+       "\"elastic\" (default), \"inelastic\" (paper Eq. 1 with the delta cut-off), \"viscoelastic\" (restitution "
+       "rising to 1 as the impact speed falls; see collision.viscoelastic_b) or \"aggregation\" (ballistic "
+       "aggregation: spheres that touch merge, volumes add, momentum conserved)"},
       {"collision.r0", "float", "coefficient of restitution, in (0, 1] (inelastic)"},
       {"collision.delta", "float",
        "cut-off: collisions with normal relative speed below delta are elastic, >= 0, in units of "
-       "diameter per initial collision time (inelastic; the paper uses 1e-4)"},
+       "diameter per initial collision time (inelastic, viscoelastic; the paper uses 1e-4; default 0)"},
+      {"collision.viscoelastic_b", "float",
+       "viscoelastic material constant b = A alpha^{2/5} (Schwager & Poeschel 1998), > 0, in units of "
+       "(diameter per initial collision time)^(-1/5): r = 1 - 1.15344 b v^(1/5) + 0.79826 b^2 v^(2/5) - ... for "
+       "normal impact speed v (viscoelastic)"},
       {"run.t_end", "float", "simulated time to stop at, > 0, in initial mean collision times"},
       {"output.observables_per_decade", "integer", "observables recorded per decade of time (default 20)"},
       {"output.dumps_per_decade", "integer", "trajectory dumps per decade of time (default 5)"},
@@ -158,6 +165,35 @@ void check_ranges(const Scene& s) {
   if (!box.empty()) throw InputError(box);
 }
 
+// Each model takes only its own collision.* keys, so a typo in the model
+// name cannot silently drop a parameter.
+void check_model_keys(const Scene& s, const std::map<std::string, toml::value>& kv) {
+  const std::string model = "collision.model = \"" + s.model_name() + "\"";
+  auto refuse = [&](const char* key, const char* fix) {
+    if (kv.count(key)) throw InputError(std::string(key) + " is set but " + model + " does not use it; " + fix);
+  };
+  switch (s.model) {
+    case CollisionModel::kElastic:
+      if (s.r0 != 1.0 || s.delta != 0.0)
+        throw InputError("collision.r0/delta are set but collision.model = \"elastic\"; set model = \"inelastic\"");
+      refuse("collision.viscoelastic_b", "set model = \"viscoelastic\"");
+      break;
+    case CollisionModel::kInelastic:
+      refuse("collision.viscoelastic_b", "set model = \"viscoelastic\" or remove it");
+      break;
+    case CollisionModel::kViscoelastic:
+      refuse("collision.r0", "the viscoelastic restitution follows from collision.viscoelastic_b; remove r0");
+      if (!(s.viscoelastic_b > 0 && std::isfinite(s.viscoelastic_b)))
+        out_of_range("collision.viscoelastic_b", s.viscoelastic_b,
+                     "must be > 0 for model = \"viscoelastic\" (e.g. 0.1 gives r = 0.9 at impact speed 1)");
+      break;
+    case CollisionModel::kAggregation:
+      for (const char* key : {"collision.r0", "collision.delta", "collision.viscoelastic_b"})
+        refuse(key, "aggregates stick; remove it");
+      break;
+  }
+}
+
 Scene build_scene(const std::map<std::string, toml::value>& kv) {
   Scene s;
   auto get = [&](const char* k) -> const toml::value* {
@@ -176,12 +212,16 @@ Scene build_scene(const std::map<std::string, toml::value>& kv) {
     const std::string m = as_string("collision.model", *v);
     if (m == "elastic") s.model = CollisionModel::kElastic;
     else if (m == "inelastic") s.model = CollisionModel::kInelastic;
-    else throw InputError("collision.model = \"" + m + "\" is not known: use \"elastic\" or \"inelastic\"");
+    else if (m == "viscoelastic") s.model = CollisionModel::kViscoelastic;
+    else if (m == "aggregation") s.model = CollisionModel::kAggregation;
+    else
+      throw InputError("collision.model = \"" + m +
+                       "\" is not known: use \"elastic\", \"inelastic\", \"viscoelastic\" or \"aggregation\"");
   }
   if (auto v = get("collision.r0")) s.r0 = as_float("collision.r0", *v);
   if (auto v = get("collision.delta")) s.delta = as_float("collision.delta", *v);
-  if (s.model == CollisionModel::kElastic && (s.r0 != 1.0 || s.delta != 0.0))
-    throw InputError("collision.r0/delta are set but collision.model = \"elastic\"; set model = \"inelastic\"");
+  if (auto v = get("collision.viscoelastic_b")) s.viscoelastic_b = as_float("collision.viscoelastic_b", *v);
+  check_model_keys(s, kv);
   if (auto v = get("run.t_end")) s.t_end = as_float("run.t_end", *v);
   else throw InputError("the scene must give run.t_end (the simulated time to stop at)");
   if (auto v = get("output.observables_per_decade")) s.observables_per_decade = int(as_int("output.observables_per_decade", *v));
@@ -213,7 +253,15 @@ Scene parse_scene(const std::string& toml_text, const std::string& source, const
   return build_scene(kv);
 }
 
-std::string Scene::model_name() const { return model == CollisionModel::kElastic ? "elastic" : "inelastic"; }
+std::string Scene::model_name() const {
+  switch (model) {
+    case CollisionModel::kElastic: return "elastic";
+    case CollisionModel::kInelastic: return "inelastic";
+    case CollisionModel::kViscoelastic: return "viscoelastic";
+    case CollisionModel::kAggregation: return "aggregation";
+  }
+  return "?";
+}
 
 std::string Scene::to_toml() const {
   std::ostringstream s;
@@ -227,7 +275,9 @@ std::string Scene::to_toml() const {
     << "\ninit = \"" << (init == InitialPositions::kRandom ? "random" : "fcc") << "\"\nequilibrate = " << num(equilibrate)
     << "\n\n"
     << "[collision]\nmodel = \"" << model_name() << "\"\n";
-  if (model != CollisionModel::kElastic) s << "r0 = " << num(r0) << "\ndelta = " << num(delta) << "\n";
+  if (model == CollisionModel::kInelastic) s << "r0 = " << num(r0) << "\ndelta = " << num(delta) << "\n";
+  if (model == CollisionModel::kViscoelastic)
+    s << "viscoelastic_b = " << num(viscoelastic_b) << "\ndelta = " << num(delta) << "\n";
   s << "\n[run]\nt_end = " << num(t_end) << "\n\n[output]\nobservables_per_decade = " << observables_per_decade
     << "\ndumps_per_decade = " << dumps_per_decade << "\nt_min = " << num(t_min) << "\ndump_times = [";
   for (std::size_t i = 0; i < dump_times.size(); ++i) s << (i ? ", " : "") << num(dump_times[i]);

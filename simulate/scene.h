@@ -9,7 +9,9 @@
 namespace coolgas {
 
 enum class InitialPositions { kRandom, kFcc };
-enum class CollisionModel { kElastic, kInelastic };
+// kViscoelastic: velocity-dependent restitution (collision_rules.h);
+// kAggregation: ballistic aggregation, spheres that touch merge (aggregation_engine.h).
+enum class CollisionModel { kElastic, kInelastic, kViscoelastic, kAggregation };
 
 struct Scene {
   // system
@@ -26,6 +28,7 @@ struct Scene {
   CollisionModel model = CollisionModel::kElastic;
   double r0 = 1.0;
   double delta = 0.0;
+  double viscoelastic_b = 0.0;  // b = A alpha^{2/5} of the viscoelastic model, (sigma omega0)^{-1/5}
   // run
   double t_end = 0;
   // output

@@ -47,14 +47,27 @@ std::string read_file(const std::string& path) {
 }
 
 ObservableRow observe(const EngineBase& e) {
+  if (e.masses()) {  // aggregation: masses differ, and the aggregate observables are asked for
+    const AggregateSummary a = summarize_aggregates(e);
+    ObservableRow row{e.now(), e.counters().collisions, e.counters().below_delta, a.kinetic_energy,
+                      {a.momentum.x, a.momentum.y, a.momentum.z}};
+    row.aggregates = a.aggregates;
+    row.mean_mass = a.mean_mass;
+    row.largest_mass = a.largest_mass;
+    return row;
+  }
   const Vec3 p = total_momentum(e);
   return {e.now(), e.counters().collisions, e.counters().below_delta, kinetic_energy_per_particle(e), {p.x, p.y, p.z}};
 }
 
 FrameView frame(const EngineBase& e) {
   const Motion* m = e.motion();
-  return {e.now(),    e.counters().collisions, e.counters().below_delta, &m[0].r.x, e.images()[0].data(),
-          &m[0].v.x, kMotionStride,           kMotionStride};
+  FrameView f{e.now(),    e.counters().collisions, e.counters().below_delta, &m[0].r.x, e.images()[0].data(),
+              &m[0].v.x, kMotionStride,           kMotionStride};
+  f.id = e.ids();  // all three nullptr unless the model is aggregation
+  f.mass = e.masses();
+  f.diameter = e.diameters();
+  return f;
 }
 
 // Drives the engine from stop to stop, writing as it goes.
@@ -119,7 +132,7 @@ class Driver {
     std::ostringstream s;
     s.precision(3);
     s << "t = " << t << " / " << scene_.t_end << "  collisions " << coll << " (" << coll / std::max(secs, 1e-9)
-      << "/s)  E/E0 = " << kinetic_energy_per_particle(engine_) / e0_ << "  ETA ~"
+      << "/s)  E/E0 = " << observe(engine_).kinetic_energy / e0_ << "  ETA ~"
       << Progress::format_duration(eta);
     progress_.show(s.str());
   }
@@ -149,8 +162,9 @@ RunParameters parameters_of(const Scene& s) {
   p.phi = s.phi;
   p.T0 = initial_temperature(s);
   p.model = s.model_name();
-  p.r0 = s.r0;
+  p.r0 = s.model == CollisionModel::kAggregation ? 0.0 : s.r0;  // aggregates keep no relative velocity
   p.delta = s.delta;
+  p.viscoelastic_b = s.viscoelastic_b;
   return p;
 }
 
@@ -173,8 +187,9 @@ int drive(const Scene& scene, EngineBase& engine, H5mdWriter& writer, bool quiet
   try {
     return driver.run();
   } catch (const CollapseError& e) {
-    const std::string hint = scene.delta > 0 ? "; increase collision.delta (now " + format_number(scene.delta) + ")"
-                                             : "; set collision.delta > 0 (the paper uses 1e-4)";
+    const std::string hint = scene.model == CollisionModel::kAggregation ? ""
+                             : scene.delta > 0 ? "; increase collision.delta (now " + format_number(scene.delta) + ")"
+                                               : "; set collision.delta > 0 (the paper uses 1e-4)";
     return driver.finish_collapsed(e.what() + hint);
   }
 }
@@ -217,7 +232,8 @@ int resume(const SimulationRequest& req) {
               << "; nothing to do (extend it with --set run.t_end=...)\n";
     return kExitOk;
   }
-  auto engine = make_engine(scene, std::move(rp.particles), rp.time, rp.counters);
+  auto engine = make_engine(scene, std::move(rp.particles), rp.time, rp.counters,
+                            rp.aggregates ? &*rp.aggregates : nullptr);
   H5mdWriter writer = H5mdWriter::reopen(req.resume);
   writer.update_scene(scene.to_toml());
   return drive(scene, *engine, writer, req.quiet);
