@@ -29,13 +29,7 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_flag("--series", opt.series, "one row per dump: M0, M1, M2, M_avg, M_max, largest_fraction");
     app.add_option("--time", opt.times, "analyse only the dump nearest this time [1/omega0] (repeatable)");
-    try {
-      app.parse(argc, argv);
-    } catch (const CLI::Success& e) {
-      return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-      throw coolgas::InputError(e.what());
-    }
+    if (coolgas::parse_command_line(app, argc, argv)) return 0;
     coolgas::run_clusters(opt, std::cout);
     return 0;
   });

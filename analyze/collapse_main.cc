@@ -34,13 +34,7 @@ int main(int argc, char** argv) {
     app.add_option("--t-column", o.columns.t, "name of the time column")->capture_default_str();
     app.add_option("--e-column", o.columns.E, "name of the energy column")->capture_default_str();
     app.add_flag("--summary", o.summary, "write one row: theta theta_err z z_err quality [eta eta_err]");
-    try {
-      app.parse(argc, argv);
-    } catch (const CLI::Success& e) {
-      return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-      throw coolgas::InputError(e.what());
-    }
+    if (coolgas::parse_command_line(app, argc, argv)) return 0;
     o.t_window = coolgas::parse_window(t_window, "--t-window");
     if (!eta_window.empty()) o.eta_window = coolgas::parse_window(eta_window, "--eta-window");
     coolgas::write_collapse_table(o, std::cout);

@@ -18,13 +18,7 @@ int main(int argc, char** argv) {
         "E_over_E0 and E_over_E0_err [dimensionless; E0 = the run's first row, t = 0], runs [count]."};
     app.add_option("runs", o.inputs, "trajectory files RUN.h5 written by coolgas-simulate")->required();
     app.add_option("--per-decade", o.per_decade, "grid points per decade of t (>= 1)")->capture_default_str();
-    try {
-      app.parse(argc, argv);
-    } catch (const CLI::Success& e) {
-      return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-      throw coolgas::InputError(e.what());
-    }
+    if (coolgas::parse_command_line(app, argc, argv)) return 0;
     coolgas::write_energy_table(o, std::cout);
     return 0;
   });

@@ -36,13 +36,7 @@ int main(int argc, char** argv) {
     app.add_option("--smooth", o.smooth_decades, "local slope: half width of the fit window [decades of t]")
         ->capture_default_str();
     app.add_flag("--curve", o.curve, "power/haff: write rows t, E, E_fit over the window, results as '# key: value' lines");
-    try {
-      app.parse(argc, argv);
-    } catch (const CLI::Success& e) {
-      return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-      throw coolgas::InputError(e.what());
-    }
+    if (coolgas::parse_command_line(app, argc, argv)) return 0;
     o.mode = power ? coolgas::FitMode::kPowerLaw : haff ? coolgas::FitMode::kHaff : coolgas::FitMode::kLocalSlope;
     o.window = coolgas::parse_window(window, "--window");
     if (!err.empty()) o.columns.err = err;

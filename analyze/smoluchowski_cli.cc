@@ -7,6 +7,7 @@
 #include "analyze/smoluchowski_accuracy.h"
 #include "analyze/smoluchowski_run.h"
 #include "common/error.h"
+#include "common/tool_main.h"
 #include "common/tsv.h"
 
 namespace coolgas::smoluchowski {
@@ -99,13 +100,7 @@ int smoluchowski_main(int argc, char** argv, std::ostream& out, std::ostream& er
   app.get_formatter()->column_width(34);
   Raw r;
   define(app, r);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    throw InputError(std::string(e.what()) + " (see --help)");
-  }
+  if (parse_command_line(app, argc, argv)) return kExitOk;
   if (r.accuracy) {
     write_accuracy_table(out, r.accuracy_quick ? AccuracyScope::Quick : AccuracyScope::Full);
     return kExitOk;

@@ -31,13 +31,7 @@ int main(int argc, char** argv) {
     app.add_option("--max-points", o.scene.max_points, "3d view: most particles drawn")->capture_default_str();
     app.add_option("--size", o.size_px, "picture width and height [pixels]")->capture_default_str();
     app.add_option("--gnuplot", o.gnuplot, "gnuplot program to run")->capture_default_str();
-    try {
-      app.parse(argc, argv);
-    } catch (const CLI::Success& e) {
-      return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-      throw coolgas::InputError(e.what());
-    }
+    if (coolgas::parse_command_line(app, argc, argv)) return 0;
     o.scene.view = view == "3d" ? coolgas::SnapshotView::k3d : coolgas::SnapshotView::kSlab;
     coolgas::run_snapshot(o, std::cout);
     return 0;

@@ -32,13 +32,7 @@ int main(int argc, char** argv) {
     app.add_option("--min-count", o.min_count, "fit only bins with at least this many samples (+y and -y)")
         ->capture_default_str();
     app.add_option("--time", o.times, "analyse only the dump nearest this time [1/omega0] (repeatable)");
-    try {
-      app.parse(argc, argv);
-    } catch (const CLI::Success& e) {
-      return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-      throw coolgas::InputError(e.what());
-    }
+    if (coolgas::parse_command_line(app, argc, argv)) return 0;
     o.table = tail     ? coolgas::VelocityTable::kTail
               : series ? coolgas::VelocityTable::kSeries
                        : coolgas::VelocityTable::kPhi;

@@ -19,4 +19,16 @@ int run_tool(const std::string& tool, const std::function<int()>& body) {
   }
 }
 
+bool parse_command_line(CLI::App& app, int argc, char** argv) {
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {
+    app.exit(e);
+    return true;
+  } catch (const CLI::ParseError& e) {
+    throw InputError(std::string(e.what()) + " (see --help)");
+  }
+  return false;
+}
+
 }  // namespace coolgas

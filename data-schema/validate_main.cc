@@ -28,13 +28,7 @@ int main(int argc, char** argv) {
     CLI::App app(kDescription, "coolgas-validate");
     std::string file;
     app.add_option("FILE", file, "trajectory file (HDF5) to check")->required();
-    try {
-      app.parse(argc, argv);
-    } catch (const CLI::Success& e) {
-      return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-      throw coolgas::InputError(e.what());
-    }
+    if (coolgas::parse_command_line(app, argc, argv)) return 0;
     const auto report = coolgas::schema::validate(file);
     if (report.valid()) {
       std::cout << coolgas::schema::valid_line(file, report.summary, report.summary.schema_version) << "\n";

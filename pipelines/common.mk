@@ -9,8 +9,7 @@
 #   LAUNCH  prefix of every simulation command, e.g. 'srun -n1 -c1' (Slurm);
 #           empty by default. make -j200 LAUNCH='srun -n1 -c1' spreads the
 #           independent runs over a cluster.
-#   BA      1 adds the ballistic-aggregation runs and curves (needs
-#           collision.model = "aggregation" in coolgas-simulate); default 0
+#   BA      1 (default) adds the ballistic-aggregation runs and curves; 0 leaves them out
 #   ARCHIVE with the target 'reanalyze': a folder of archived runs (*.h5, named
 #           as in $(OUT)/runs) to redraw every figure from, without simulating
 #
@@ -31,7 +30,7 @@ include $(PIPE)scales/$(SCALE).mk
 BIN ?= ../../build/bin
 OUT ?= ../../out/$(SCALE)
 LAUNCH ?=
-BA ?= 0
+BA ?= 1
 ARCHIVE ?=
 
 # Output grids of the runs (scene [output] tables).
@@ -263,9 +262,14 @@ $(TABLES)/mmax_%.tsv: $(RUNS)/%.h5
 $(TABLES)/fit_mmax_%.tsv: $(TABLES)/mmax_%.tsv $(call knob,mmax_fit,$(MMAX_FIT_WINDOW))
 	$(BIN)/coolgas-fit --power --t-column t --e-column M_max --no-weights --window $(MMAX_FIT_WINDOW) $< > $@
 
+# Aggregates grow from the start and outgrow small boxes early: their own window.
+$(TABLES)/fit_mmax_ba_%.tsv: $(TABLES)/mmax_ba_%.tsv $(call knob,ba_mmax_fit,$(BA_MMAX_FIT_WINDOW))
+	$(BIN)/coolgas-fit --power --t-column t --e-column M_max --no-weights --window $(BA_MMAX_FIT_WINDOW) $< > $@
+
 $(OUT)/fig4_largest_mass.png: $(MMAX_GAS) $(MMAX_BA) $(subst mmax_,fit_mmax_,$(MMAX_GAS) $(MMAX_BA)) \
     $(PLOTS)/fig4_largest_mass.gp
-	gnuplot -e "gas='$(MMAX_GAS)'; ba='$(MMAX_BA)'; window='$(MMAX_FIT_WINDOW)'; out='$@'" $(PLOTS)/fig4_largest_mass.gp
+	gnuplot -e "gas='$(MMAX_GAS)'; ba='$(MMAX_BA)'; window='$(MMAX_FIT_WINDOW)'; ba_window='$(BA_MMAX_FIT_WINDOW)'; out='$@'" \
+	  $(PLOTS)/fig4_largest_mass.gp
 
 # ---- Fig. 5: Phi(y) early and late, kurtosis kappa(t), tails -ln Phi(y)
 $(TABLES)/phi_early.tsv: $(SNAP_RUN) $(call knob,phi_early,$(PHI_EARLY_TIMES))
@@ -314,6 +318,14 @@ $(OUT)/smoluchowski.png: $(TABLES)/smoluchowski_nm.tsv $(TABLES)/smoluchowski_se
 	  fit_max='$(TABLES)/fit_smoluchowski_M_max.tsv'; fit_avg='$(TABLES)/fit_smoluchowski_M_avg.tsv'; \
 	  gas_nm='$(TABLES)/nm_gas.tsv'; gas_series='$(call mmax_table,$(SNAP_RUN))'; out='$@'" $(PLOTS)/smoluchowski.gp
 
+# ---- theta_BA: E(t) of each aggregation run (per initial particle) and its power law
+BA_FITS := $(foreach r,$(BA_RUNS),$(TABLES)/fit_energy_$(notdir $(basename $(r))).tsv)
+$(TABLES)/energy_ba_%.tsv: $(RUNS)/ba_%.h5
+	@mkdir -p $(@D)
+	$(BIN)/coolgas-energy $< > $@
+$(TABLES)/fit_energy_ba_%.tsv: $(TABLES)/energy_ba_%.tsv $(call knob,ba_theta_fit,$(BA_THETA_WINDOW))
+	$(BIN)/coolgas-fit --power --window $(BA_THETA_WINDOW) $< > $@
+
 # ---- The measured exponents, one row (exponents.tsv) and against the paper (exponents.md)
 EXPONENT_INPUTS := $(TABLES)/collapse.tsv $(TABLES)/fit_size_Lmax.tsv $(TABLES)/fit_nm_gas.tsv \
   $(TABLES)/nm_gas.tsv $(TABLES)/fit_$(notdir $(call mmax_table,$(SNAP_RUN))) $(TABLES)/velocity_series.tsv \
@@ -321,6 +333,6 @@ EXPONENT_INPUTS := $(TABLES)/collapse.tsv $(TABLES)/fit_size_Lmax.tsv $(TABLES)/
 $(OUT)/exponents.tsv: $(EXPONENT_INPUTS) $(PIPE)tsv-value.sh
 	sh $(PIPE)exponents.sh $(TABLES) $(notdir $(basename $(SNAP_RUN))) "$(lastword $(PHI_LATE_TIMES))" > $@
 
-$(OUT)/exponents.md: $(OUT)/exponents.tsv $(PARAM_FITS) $(PIPE)exponents-md.sh
-	sh $(PIPE)exponents-md.sh $< $(TABLES) "$(SCALE)" "$(PARAM_SETS)" > $@
+$(OUT)/exponents.md: $(OUT)/exponents.tsv $(PARAM_FITS) $(BA_FITS) $(PIPE)exponents-md.sh
+	sh $(PIPE)exponents-md.sh $< $(TABLES) "$(SCALE)" "$(PARAM_SETS)" "$(BA_FITS)" > $@
 	@echo "$(SCALE) pipeline: figures and tables in $(OUT)"; cat $@

@@ -1,5 +1,5 @@
 #!/bin/sh
-# exponents-md.sh EXPONENTS_TSV TABLES SCALE "PARAM_SETS"
+# exponents-md.sh EXPONENTS_TSV TABLES SCALE "PARAM_SETS" ["BA_FITS"]
 # Writes the measured exponents beside the paper's values as a Markdown table
 # (the README's comparison table is a copy of the demo's).
 set -e
@@ -7,6 +7,7 @@ tsv=$1
 tables=$2
 scale=$3
 sets=$4
+ba_fits=${5:-}
 here=$(dirname "$0")
 v() { sh "$here/tsv-value.sh" "$tsv" "$1"; }
 f() { awk "BEGIN { printf \"%.3f\", $1 }"; }
@@ -27,4 +28,10 @@ echo "| β, -ln Φ(y) ~ y^β at late times (Fig. 5) | $(f "$(v beta_late)") ± $
 echo "| κ at late times | $(f "$(v kappa_late)") | > 0, saturates |"
 echo "| M_max ~ t^a, Smoluchowski Eq. 4 | $(f "$(v smol_mmax_exponent)") | 6/5 |"
 echo "| M_avg ~ t^a, Smoluchowski Eq. 4 | $(f "$(v smol_mavg_exponent)") | 6/5 |"
-echo "| θ_BA, ballistic aggregation | (needs collision.model = \"aggregation\"; BA = 1) | 1.283 (φ = 0.005) … 1.206 (φ = 0.208) |"
+if [ -z "$ba_fits" ]; then
+  echo "| θ_BA, ballistic aggregation | (run with BA = 1) | 1.283 (φ = 0.005) … 1.206 (φ = 0.208) |"
+fi
+for fit in $ba_fits; do
+  phi=$(basename "$fit" .tsv | sed 's/^fit_energy_ba_phi//; s/_s[0-9]*$//')
+  echo "| θ_BA at φ = $phi, ballistic aggregation | $(f "$(sh "$here/tsv-value.sh" "$fit" theta)") ± $(f "$(sh "$here/tsv-value.sh" "$fit" theta_err)") | 1.283 (φ = 0.005) … 1.206 (φ = 0.208) |"
+done

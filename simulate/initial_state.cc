@@ -8,57 +8,14 @@
 
 #include "common/error.h"
 #include "common/tsv.h"
-#include "simulate/cell_grid.h"
 #include "simulate/engine.h"
 #include "simulate/enskog.h"
 #include "simulate/random.h"
+#include "simulate/rsa_voxels.h"
 
 namespace coolgas {
 
 namespace {
-
-// Attempts per particle before random sequential addition gives up. At
-// phi = 0.35 (near its jamming limit 0.384) it needs about 30 on average.
-constexpr double kMaxAttemptsPerParticle = 2000;
-
-bool overlaps_any(const Particles& p, const CellGrid& grid, const Vec3& x) {
-  const CellCoord c = grid.coord(grid.cell_of(x.x, x.y, x.z));
-  const int n = grid.cells_per_side();
-  for (int oz = -1; oz <= 1; ++oz)
-    for (int oy = -1; oy <= 1; ++oy)
-      for (int ox = -1; ox <= 1; ++ox) {
-        const CellCoord nb{(c.x + ox + n) % n, (c.y + oy + n) % n, (c.z + oz + n) % n};
-        for (int j = grid.first(grid.index(nb)); j >= 0; j = grid.next(j)) {
-          Vec3 d{p.r[j].x - x.x, p.r[j].y - x.y, p.r[j].z - x.z};
-          for (int k = 0; k < 3; ++k) d[k] -= p.L * std::round(d[k] / p.L);
-          if (dot(d, d) < 1.0) return true;
-        }
-      }
-  return false;
-}
-
-// Random sequential addition: draw a uniform point, keep it if it overlaps
-// no sphere placed so far; the cell grid makes each check O(1).
-void place_random(Particles& p, std::int64_t N, Random& rng) {
-  CellGrid grid(p.L, 1.0, std::size_t(N));
-  const double budget = kMaxAttemptsPerParticle * double(N);
-  double attempts = 0;
-  for (std::int64_t i = 0; i < N; ++i) {
-    Vec3 x;
-    do {
-      if (++attempts > budget) {
-        const double reached = double(i) * M_PI / (6.0 * p.L * p.L * p.L);
-        throw InputError("random sequential addition stalled at phi = " + format_number(reached) +
-                         " (placed " + std::to_string(i) + " of " + std::to_string(N) +
-                         " spheres); use system.init = \"fcc\" or a lower phi");
-      }
-      x = {rng.uniform() * p.L, rng.uniform() * p.L, rng.uniform() * p.L};
-      for (int d = 0; d < 3; ++d) x[d] = std::min(x[d], std::nextafter(p.L, 0.0));
-    } while (overlaps_any(p, grid, x));
-    p.r[i] = x;
-    grid.insert(int(i), grid.cell_of(x.x, x.y, x.z));
-  }
-}
 
 // N of the 4k³ sites of the smallest FCC lattice holding N, chosen at random.
 void place_fcc(Particles& p, std::int64_t N, Random& rng) {
@@ -112,7 +69,7 @@ Particles initial_state(const Scene& s) {
   p.L = s.L;
   p.resize(std::size_t(s.N));
   Random rng(std::uint64_t(s.seed));
-  if (s.init == InitialPositions::kRandom) place_random(p, s.N, rng);
+  if (s.init == InitialPositions::kRandom) place_random_sequential(p, s.N, rng);
   else place_fcc(p, s.N, rng);
   const double T0 = initial_temperature(s);
   draw_velocities(p, T0, rng);

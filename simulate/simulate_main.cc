@@ -33,13 +33,7 @@ int main(int argc, char** argv) {
     app.add_flag("--force", req.force, "overwrite an existing output file");
     app.add_flag("-q,--quiet", req.quiet, "no progress line on stderr");
     app.footer(scene_help());
-    try {
-      app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-      return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-      throw coolgas::InputError(e.what());
-    }
+    if (coolgas::parse_command_line(app, argc, argv)) return 0;
     if (req.scene_path.empty() == req.resume.empty())
       throw coolgas::InputError("give either a scene file or --resume FILE (see --help)");
     return coolgas::run_simulation(req);

@@ -15,8 +15,10 @@ ng = words(gas); nb = words(ba)
 
 set terminal pngcairo size 1000, 700 font "sans,11"
 set output out
-set title sprintf("Largest cluster M_{max}(t): gas (r_0 = %s, {/Symbol d} = %s)%s; lines: power-law fits over t = %s", \
-    meta(word(gas, 1), "r0"), meta(word(gas, 1), "delta"), (nb > 0 ? " and ballistic aggregation" : ""), window)
+if (!exists("ba_window")) ba_window = ""
+set title sprintf("Largest cluster M_{max}(t): gas (r_0 = %s, {/Symbol d} = %s)%s; lines: power-law fits over t = %s%s", \
+    meta(word(gas, 1), "r0"), meta(word(gas, 1), "delta"), (nb > 0 ? " and ballistic aggregation" : ""), window, \
+    (nb > 0 ? " (BA: ".ba_window.")" : ""))
 set logscale xy
 set format x "10^{%L}"; set format y "10^{%L}"
 set grid
