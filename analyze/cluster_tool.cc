@@ -17,10 +17,11 @@ namespace coolgas {
 namespace {
 
 const std::vector<std::string> kDistributionColumns = {"t", "m", "dm", "N", "x", "y"};
+const std::vector<std::string> kScaledColumns = {"t", "x", "y"};
 const std::vector<std::string> kSeriesColumns = {"t", "M0", "M1", "M2", "M_avg", "M_max", "largest_fraction"};
 
 // One block of the mass distribution: N = count / (V dm), x = m / M_avg, y = N M_avg².
-void write_distribution(TsvWriter& out, double t, const MassHistogram& h, double volume) {
+void write_distribution(TsvWriter& out, double t, const MassHistogram& h, double volume, bool scaled_only) {
   const ClusterMoments& mo = h.moments();
   const double m_avg = mo.mean();
   out.block("t = " + format_number(t) + "; M_avg = " + format_number(m_avg) + "; M_max = " +
@@ -30,7 +31,9 @@ void write_distribution(TsvWriter& out, double t, const MassHistogram& h, double
     if (h.count(k) == 0) continue;
     const double dm = double(b.width(k));
     const double n = double(h.count(k)) / (volume * dm);
-    out.row({t, b.center(k), dm, n, b.center(k) / m_avg, n * m_avg * m_avg});
+    const double x = b.center(k) / m_avg, y = n * m_avg * m_avg;
+    if (scaled_only) out.row({t, x, y});
+    else out.row({t, b.center(k), dm, n, x, y});
   }
 }
 
@@ -63,8 +66,10 @@ void run_clusters(const ClustersOptions& opt, std::ostream& final_out) {
   else
     prov.emplace_back("cells", "floor(L)^3 cubic cells of side L/floor(L); face neighbours; periodic");
   for (double t : opt.times) prov.emplace_back("time", format_number(t));
-  prov.emplace_back("table", opt.series ? "cluster series" : "mass distribution");
-  TsvWriter out(os, "coolgas-clusters", prov, opt.series ? kSeriesColumns : kDistributionColumns);
+  if (opt.series && opt.scaled) throw InputError("--series and --scaled exclude each other: choose one table");
+  prov.emplace_back("table", opt.series ? "cluster series" : (opt.scaled ? "scaled mass distribution" : "mass distribution"));
+  TsvWriter out(os, "coolgas-clusters", prov,
+                opt.series ? kSeriesColumns : (opt.scaled ? kScaledColumns : kDistributionColumns));
 
   MassHistogram hist(opt.bins_per_decade, traj.particles());
   ClusterLabeller labeller;
@@ -82,7 +87,7 @@ void run_clusters(const ClustersOptions& opt, std::ostream& final_out) {
     if (opt.series) {
       write_series_row(out, frame.time, hist.moments(), volume);
     } else {
-      write_distribution(out, frame.time, hist, volume);
+      write_distribution(out, frame.time, hist, volume, opt.scaled);
     }
   }
   final_out << os.str();

@@ -12,6 +12,7 @@ struct ClustersOptions {
   std::string input;          // trajectory file
   int bins_per_decade = 10;   // logarithmic mass bins
   bool series = false;        // one row per dump instead of N(m) blocks
+  bool scaled = false;        // N(m) blocks with only t, x = m/M_avg, y = N M_avg^2 (paper Fig. 3)
   std::vector<double> times;  // dumps nearest these times; empty = all dumps
 };
 

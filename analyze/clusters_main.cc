@@ -28,6 +28,8 @@ int main(int argc, char** argv) {
     app.add_option("--bins-per-decade", opt.bins_per_decade, "logarithmic mass bins per decade (>= 1)")
         ->capture_default_str();
     app.add_flag("--series", opt.series, "one row per dump: M0, M1, M2, M_avg, M_max, largest_fraction");
+    app.add_flag("--scaled", opt.scaled,
+                 "N(m,t) scaled by the mean size as in the paper's Fig. 3: columns t, x = m/M_avg, y = N M_avg^2");
     app.add_option("--time", opt.times, "analyse only the dump nearest this time [1/omega0] (repeatable)");
     if (coolgas::parse_command_line(app, argc, argv)) return 0;
     coolgas::run_clusters(opt, std::cout);

@@ -74,12 +74,19 @@ Particles initial_state(const Scene& s) {
   const double T0 = initial_temperature(s);
   draw_velocities(p, T0, rng);
   if (s.equilibrate > 0) {
-    Engine<ElasticRule> melt(std::move(p), ElasticRule{}, 0.0);
-    melt.run_until(s.equilibrate, std::numeric_limits<std::int64_t>::max(), nullptr);
-    melt.synchronize();
-    p = melt.snapshot();
-    std::fill(p.t.begin(), p.t.end(), 0.0);
-    std::fill(p.image.begin(), p.image.end(), Image{0, 0, 0});
+    // Only the relaxed positions are kept (velocities are drawn afresh), and
+    // only they coexist with the engine: this is the set-up's memory peak.
+    std::vector<Vec3> relaxed(p.size());
+    {
+      Engine<ElasticRule> melt(std::move(p), ElasticRule{}, 0.0);
+      melt.run_until(s.equilibrate, std::numeric_limits<std::int64_t>::max(), nullptr);
+      melt.synchronize();  // id order, wrapped
+      for (std::size_t i = 0; i < relaxed.size(); ++i) relaxed[i] = melt.motion()[i].r;
+    }
+    p = Particles();
+    p.L = s.L;
+    p.resize(relaxed.size());
+    p.r = std::move(relaxed);
     draw_velocities(p, T0, rng);
   }
   return p;

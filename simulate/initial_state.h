@@ -10,7 +10,7 @@
 namespace coolgas {
 
 // Throws InputError if the positions cannot be placed (random sequential
-// addition stalling, a lattice too dense for the box).
+// addition saturating, a lattice too dense for the box).
 Particles initial_state(const Scene& scene);
 
 // The temperature of the initial state (per velocity component).

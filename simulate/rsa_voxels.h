@@ -4,6 +4,12 @@
 // then the voxel method of Zhang & Torquato, PRE 88, 053312 (2013), which
 // samples only sub-cells not yet known to be covered, so that the cost per
 // sphere stays bounded up to saturation (phi = 0.384) instead of diverging.
+//
+// Known limit: N = 1e6 at phi = 0.35 takes ~70 s and ~470 B per particle of
+// voxel lists. Most voxels leave the lists only when a trial lands in them;
+// most are covered by several spheres together but never by one. The next
+// step is an index of voxels per cell, so that placing a sphere removes the
+// voxels it covers at once, and voxels packed into 8 bytes.
 #pragma once
 #include <cstdint>
 
