@@ -152,20 +152,10 @@ void AggregationEngine::scan_cell(int i, int cell, const Vec3& shift, double& be
 // cross, or an earlier contact with an aggregate in the 27 cells around.
 void AggregationEngine::find_event(int i) {
   const Vec3 ri = m_[i].r, vi = m_[i].v;
-  const double w = grid_->width();
   const CellCoord c = grid_->coord(grid_->cell(i));
-  const int cc[3] = {c.x, c.y, c.z};
-  double best = kNever;
-  int code = -1;
-  for (int d = 0; d < 3; ++d) {
-    if (vi[d] > 0) {
-      const double t = std::max(0.0, ((cc[d] + 1) * w - ri[d]) / vi[d]);
-      if (t < best) best = t, code = -1 - (2 * d + 1);
-    } else if (vi[d] < 0) {
-      const double t = std::max(0.0, (cc[d] * w - ri[d]) / vi[d]);
-      if (t < best) best = t, code = -1 - 2 * d;
-    }
-  }
+  const CellExit exit = first_cell_exit(*grid_, grid_->cell(i), ri, vi);
+  double best = exit.time;
+  int code = exit.face >= 0 ? -1 - exit.face : -1;
   const int n = grid_->cells_per_side();
   auto wrapped = [n, this](int x, double& shift) {
     shift = x < 0 ? -L_ : (x >= n ? L_ : 0.0);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -53,6 +54,23 @@ void CellGrid::remove(int p) {
   else head_[c] = nxt;
   if (nxt >= 0) prev_[nxt] = prev_[p];
   cell_[p] = -1;
+}
+
+CellExit first_cell_exit(const CellGrid& grid, int cell, const Vec3& r, const Vec3& v) {
+  const double w = grid.width();
+  const CellCoord c = grid.coord(cell);
+  const int cc[3] = {c.x, c.y, c.z};
+  CellExit exit{std::numeric_limits<double>::infinity(), -1};
+  for (int d = 0; d < 3; ++d) {
+    if (v[d] > 0) {
+      const double t = std::max(0.0, ((cc[d] + 1) * w - r[d]) / v[d]);
+      if (t < exit.time) exit = {t, 2 * d + 1};
+    } else if (v[d] < 0) {
+      const double t = std::max(0.0, (cc[d] * w - r[d]) / v[d]);
+      if (t < exit.time) exit = {t, 2 * d};
+    }
+  }
+  return exit;
 }
 
 void CellGrid::clear() {

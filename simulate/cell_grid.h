@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "simulate/particles.h"
+
 namespace coolgas {
 
 struct CellCoord {
@@ -60,6 +62,16 @@ class CellGrid {
   std::size_t stride_ = 1;
   std::int32_t& link(int p) { return next_[std::size_t(p) * stride_]; }
 };
+
+// When a particle at r (at the current time) moving with v first leaves its
+// cell, and through which face: 2 d + 1 for the upper face along axis d, 2 d
+// for the lower one. time is never negative (a particle a hair past a face by
+// round-off crosses at once) and infinite for a particle at rest.
+struct CellExit {
+  double time;
+  int face;
+};
+CellExit first_cell_exit(const CellGrid& grid, int cell, const Vec3& r, const Vec3& v);
 
 // The smallest box the grid supports: three cells of the given width, so that
 // the 27 neighbours of a cell are 27 distinct cells.

@@ -174,21 +174,11 @@ void Engine<Rule>::scan_list(int i, const Vec3& ri, const Vec3& vi, int first, c
 template <class Rule>
 Event Engine<Rule>::find_event(int i) const {
   const Vec3 ri = m_[i].r, vi = m_[i].v;
-  const double w = grid_.width();
   const int home = grid_.cell(i);
   const CellCoord c = grid_.coord(home);
-  const int cc[3] = {c.x, c.y, c.z};
-  double best = kNever;
-  int code = -1;
-  for (int d = 0; d < 3; ++d) {
-    if (vi[d] > 0) {
-      const double t = std::max(0.0, ((cc[d] + 1) * w - ri[d]) / vi[d]);
-      if (t < best) best = t, code = -1 - (2 * d + 1);
-    } else if (vi[d] < 0) {
-      const double t = std::max(0.0, (cc[d] * w - ri[d]) / vi[d]);
-      if (t < best) best = t, code = -1 - 2 * d;
-    }
-  }
+  const CellExit exit = first_cell_exit(grid_, home, ri, vi);
+  double best = exit.time;
+  int code = exit.face >= 0 ? -1 - exit.face : -1;
   // The 27 neighbour cells and the periodic shift of each. Their list heads
   // are read first, all together, and the first particle of each is
   // prefetched: the misses then overlap instead of following one another
