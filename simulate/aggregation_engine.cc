@@ -175,21 +175,7 @@ void AggregationEngine::find_event(int i) {
 
 void AggregationEngine::cross(int i, int code) {
   advance(i);
-  const int face = -1 - code, d = face / 2;
-  const bool up = face % 2 == 1;
-  CellCoord c = grid_->coord(grid_->cell(i));
-  int* cd = d == 0 ? &c.x : (d == 1 ? &c.y : &c.z);
-  const int n = grid_->cells_per_side();
-  if (up && ++*cd == n) {
-    *cd = 0;
-    m_[i].r[d] -= L_;
-    ++image_[i][d];
-  } else if (!up && --*cd < 0) {
-    *cd = n - 1;
-    m_[i].r[d] += L_;
-    --image_[i][d];
-  }
-  grid_->move(i, grid_->index(c));
+  grid_->move(i, cell_across_face(*grid_, grid_->cell(i), -1 - code, L_, m_[i].r, image_[i]));
 }
 
 Vec3 AggregationEngine::separation(int a, int b) const {

@@ -73,6 +73,24 @@ CellExit first_cell_exit(const CellGrid& grid, int cell, const Vec3& r, const Ve
   return exit;
 }
 
+int cell_across_face(const CellGrid& grid, int cell, int face, double L, Vec3& r, Image& image) {
+  const int d = face / 2;
+  const bool up = face % 2 == 1;
+  CellCoord c = grid.coord(cell);
+  int* cd = d == 0 ? &c.x : (d == 1 ? &c.y : &c.z);
+  const int n = grid.cells_per_side();
+  if (up && ++*cd == n) {
+    *cd = 0;
+    r[d] -= L;
+    ++image[d];
+  } else if (!up && --*cd < 0) {
+    *cd = n - 1;
+    r[d] += L;
+    --image[d];
+  }
+  return grid.index(c);
+}
+
 void CellGrid::clear() {
   std::fill(head_.begin(), head_.end(), -1);
   std::fill(cell_.begin(), cell_.end(), -1);

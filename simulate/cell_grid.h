@@ -73,6 +73,11 @@ struct CellExit {
 };
 CellExit first_cell_exit(const CellGrid& grid, int cell, const Vec3& r, const Vec3& v);
 
+// The cell a particle enters when it crosses `face` (as numbered by
+// CellExit) of `cell`. Leaving the box through a face wraps it: r moves by
+// ∓L along that axis and the image count by ±1, so r stays in the box.
+int cell_across_face(const CellGrid& grid, int cell, int face, double L, Vec3& r, Image& image);
+
 // The smallest box the grid supports: three cells of the given width, so that
 // the 27 neighbours of a cell are 27 distinct cells.
 std::string check_box_fits_grid(double L, double min_width);
