@@ -24,6 +24,7 @@ class CellGrid {
  public:
   // Cells of side >= min_width (the largest diameter) in a box of side L, for n particles.
   CellGrid(double L, double min_width, std::size_t n);
+  CellGrid() = default;  // no cells: a placeholder to assign to, or to free a grid
 
   int cells_per_side() const { return n_; }
   double width() const { return w_; }
@@ -35,13 +36,14 @@ class CellGrid {
   int cell_of(double x, double y, double z) const;
 
   int cell(int particle) const { return cell_[particle]; }
+  void prefetch_cell(int particle) const { __builtin_prefetch(&cell_[std::size_t(particle)]); }
   int first(int cell) const { return head_[cell]; }
   int next(int particle) const { return next_[std::size_t(particle) * stride_]; }
   // Keeps the forward links at base[i * stride] instead of in the grid.
   void bind_next_links(std::int32_t* base, std::size_t stride) {
     next_ = base;
     stride_ = stride;
-    own_next_.clear();
+    std::vector<std::int32_t>().swap(own_next_);  // free it, not just empty it
   }
 
   void insert(int particle, int cell);
@@ -53,12 +55,12 @@ class CellGrid {
   void clear();
 
  private:
-  int n_;
-  double w_;
+  int n_ = 0;
+  double w_ = 0;
   std::vector<std::int32_t> head_;  // first particle of each cell, -1 if empty
   std::vector<std::int32_t> prev_, cell_;
   std::vector<std::int32_t> own_next_;  // forward links, unless bound to the caller's records
-  std::int32_t* next_;
+  std::int32_t* next_ = nullptr;
   std::size_t stride_ = 1;
   std::int32_t& link(int p) { return next_[std::size_t(p) * stride_]; }
 };

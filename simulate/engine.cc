@@ -31,6 +31,7 @@ Engine<Rule>::Engine(Particles particles, const Rule& rule, double now, const En
   id_.resize(n);
   for (std::size_t i = 0; i < n; ++i) id_[i] = std::int32_t(i);
   calendar_.resize(n);
+  later_.resize(n);
   if constexpr (Rule::kDissipative) stall_.assign(n, 0);
   synchronize();
 }
@@ -77,18 +78,39 @@ void Engine<Rule>::synchronize() {
   built_ = false;
 }
 
+template <class Rule>
+std::vector<Vec3> Engine<Rule>::release_positions() {
+  synchronize();
+  calendar_ = EventCalendar();
+  grid_ = CellGrid();
+  image_ = {};
+  id_ = {};
+  later_ = {};
+  stall_ = {};
+  std::vector<Vec3> r(m_.size());
+  for (std::size_t i = 0; i < m_.size(); ++i) r[i] = m_[i].r;
+  m_ = {};
+  return r;
+}
+
 // Renumbers the particles along the Morton curve of their cells (ties by id,
-// so the order depends on the positions alone).
+// so the order depends on the positions alone). Key and index share one
+// 64-bit word, so the sort holds 8 bytes per particle, not 16: the curve
+// runs through blocks of cells when the grid has more than 2^10 per side.
 template <class Rule>
 void Engine<Rule>::order_by_space() {
-  std::vector<std::pair<std::uint64_t, std::int32_t>> keys(m_.size());
+  int coarse = 0;
+  while ((grid_.cells_per_side() - 1) >> coarse >= 1 << 10) ++coarse;
+  std::vector<std::uint64_t> keys(m_.size());
   for (std::size_t i = 0; i < m_.size(); ++i) {
     const CellCoord c = grid_.coord(grid_.cell_of(m_[i].r.x, m_[i].r.y, m_[i].r.z));
-    keys[i] = {morton_key(std::uint32_t(c.x), std::uint32_t(c.y), std::uint32_t(c.z)), std::int32_t(i)};
+    const std::uint64_t cell_key =
+        morton_key(std::uint32_t(c.x) >> coarse, std::uint32_t(c.y) >> coarse, std::uint32_t(c.z) >> coarse);
+    keys[i] = cell_key << 32 | i;  // i is the id: called right after synchronize()
   }
   std::sort(keys.begin(), keys.end());
   std::vector<std::int32_t> order(m_.size());
-  for (std::size_t k = 0; k < keys.size(); ++k) order[k] = keys[k].second;
+  for (std::size_t k = 0; k < keys.size(); ++k) order[k] = std::int32_t(keys[k] & 0xffffffffu);
   keys = {};
   apply_permutation(m_, order);
   apply_permutation(image_, order);
@@ -127,72 +149,119 @@ Vec3 Engine<Rule>::image_shift(int from, int to) const {
 }
 
 template <class Rule>
-void Engine<Rule>::neighbour_cells(const CellCoord& c, int home, int* cells, double (*shifts)[3]) const {
+int Engine<Rule>::neighbour_cells(const CellCoord& c, const int* lo, const int* hi, int* cells,
+                                  double (*shifts)[3]) const {
   const int n = grid_.cells_per_side();
   int k = 0;
   if (c.x > 0 && c.y > 0 && c.z > 0 && c.x < n - 1 && c.y < n - 1 && c.z < n - 1) {
-    // Interior cell: no neighbour wraps; three runs of three consecutive indices per plane.
-    for (int oz = -1; oz <= 1; ++oz)
-      for (int oy = -1; oy <= 1; ++oy)
-        for (int ox = -1; ox <= 1; ++ox, ++k) {
+    // Interior cell: no neighbour wraps; runs of consecutive indices per row.
+    const int home = grid_.index(c);
+    for (int oz = lo[2]; oz <= hi[2]; ++oz)
+      for (int oy = lo[1]; oy <= hi[1]; ++oy)
+        for (int ox = lo[0]; ox <= hi[0]; ++ox, ++k) {
           cells[k] = home + (oz * n + oy) * n + ox;
           shifts[k][0] = shifts[k][1] = shifts[k][2] = 0.0;
         }
-    return;
+    return k;
   }
   const double L = L_;
   auto wrap = [n, L](int x, double& shift) {
     shift = x < 0 ? -L : (x >= n ? L : 0.0);
     return x < 0 ? x + n : (x >= n ? x - n : x);
   };
-  for (int oz = -1; oz <= 1; ++oz)
-    for (int oy = -1; oy <= 1; ++oy)
-      for (int ox = -1; ox <= 1; ++ox, ++k) {
+  for (int oz = lo[2]; oz <= hi[2]; ++oz)
+    for (int oy = lo[1]; oy <= hi[1]; ++oy)
+      for (int ox = lo[0]; ox <= hi[0]; ++ox, ++k) {
         double* s = shifts[k];
         const int x = wrap(c.x + ox, s[0]), y = wrap(c.y + oy, s[1]), z = wrap(c.z + oz, s[2]);
         cells[k] = grid_.index({x, y, z});
       }
+  return k;
 }
 
 template <class Rule>
 void Engine<Rule>::scan_list(int i, const Vec3& ri, const Vec3& vi, int first, const double* s, double& best,
                              int& code) const {
   for (int j = first; j >= 0; j = m_[j].next) {
-    if (j == i) continue;
     const Motion& mj = m_[j];
     const double dtj = now_ - mj.t;
     const Vec3 dr{mj.r.x + mj.v.x * dtj + s[0] - ri.x, mj.r.y + mj.v.y * dtj + s[1] - ri.y,
                   mj.r.z + mj.v.z * dtj + s[2] - ri.z};
     const Vec3 dv{mj.v.x - vi.x, mj.v.y - vi.y, mj.v.z - vi.z};
-    const double t = time_to_contact_before(dr, dv, best);
-    if (t < best) best = t, code = j;
+    const double t = j == i ? kNever : time_to_contact_unbranched(dr, dv);
+    const bool earlier = t < best;  // selects, not branches (see time_to_contact_unbranched)
+    best = earlier ? t : best;
+    code = earlier ? j : code;
   }
+}
+
+// Earliest contact of particle i (at now_) with the particles of the given
+// cells, if earlier than best (relative to now_); updates best and partner.
+// The non-empty cells are picked out first without branching (about two in
+// three cells are empty, at random), their list heads read all together and
+// the first particle of each prefetched: the misses then overlap instead of
+// following one another (the search is bound by memory latency).
+template <class Rule>
+void Engine<Rule>::scan_cells(int i, const Vec3& ri, const Vec3& vi, const int* cells, const double (*shifts)[3],
+                              int count, double& best, int& partner) const {
+  int heads[27], which[27], n = 0;
+  for (int k = 0; k < count; ++k) {
+    heads[n] = grid_.first(cells[k]);
+    which[n] = k;
+    n += heads[n] >= 0;
+  }
+  for (int k = 0; k < n; ++k) __builtin_prefetch(&m_[heads[k]]);
+  for (int k = 0; k < n; ++k) scan_list(i, ri, vi, heads[k], shifts[which[k]], best, partner);
+}
+
+// The event of particle i (at now_ at ri with vi) given its earliest
+// collision: that collision, or its first cell crossing if that comes first
+// (ties go to the crossing); the collision is then kept in later_.
+template <class Rule>
+Event Engine<Rule>::earliest(int i, const Vec3& ri, const Vec3& vi, const Event& collision) {
+  const CellExit exit = first_cell_exit(grid_, grid_.cell(i), ri, vi);
+  if (collision.time < now_ + exit.time) return collision;
+  later_[i] = collision;
+  return {now_ + exit.time, exit.face >= 0 ? -1 - exit.face : -1, 0u};
 }
 
 // Particle i is at now_; finds its earliest event: the first face of its cell
 // it will cross, or an earlier contact with a particle in the 27 cells around.
 template <class Rule>
-Event Engine<Rule>::find_event(int i) const {
+Event Engine<Rule>::find_event(int i) {
   const Vec3 ri = m_[i].r, vi = m_[i].v;
-  const int home = grid_.cell(i);
-  const CellCoord c = grid_.coord(home);
-  const CellExit exit = first_cell_exit(grid_, home, ri, vi);
-  double best = exit.time;
-  int code = exit.face >= 0 ? -1 - exit.face : -1;
-  // The 27 neighbour cells and the periodic shift of each. Their list heads
-  // are read first, all together, and the first particle of each is
-  // prefetched: the misses then overlap instead of following one another
-  // (the search is bound by memory latency, not arithmetic).
+  static constexpr int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
   int cells[27];
   double shifts[27][3];  // plain (uninitialised) storage: filled by neighbour_cells
-  neighbour_cells(c, home, cells, shifts);
-  int heads[27];
-  for (int k = 0; k < 27; ++k) heads[k] = grid_.first(cells[k]);
-  for (int k = 0; k < 27; ++k)
-    if (heads[k] >= 0) __builtin_prefetch(&m_[heads[k]]);
-  for (int k = 0; k < 27; ++k)
-    if (heads[k] >= 0) scan_list(i, ri, vi, heads[k], shifts[k], best, code);
-  return {now_ + best, code, code >= 0 ? m_[code].count : 0u};
+  const int count = neighbour_cells(grid_.coord(grid_.cell(i)), lo, hi, cells, shifts);
+  double best = kNever;
+  int partner = -1;
+  scan_cells(i, ri, vi, cells, shifts, count, best, partner);
+  if (partner < 0) return earliest(i, ri, vi, Event{});
+  return earliest(i, ri, vi, {now_ + best, partner, m_[partner].count});
+}
+
+// Particle i has just crossed `face` into a new cell, its velocity unchanged.
+// Its kept collision is still the earliest with the particles that were its
+// neighbours if that partner has not collided since (any other that has
+// collided has searched again itself, and found i if due); only the layer
+// of 9 cells beyond the new cell has to be searched.
+template <class Rule>
+Event Engine<Rule>::find_event_after_crossing(int i, int face) {
+  const Event kept = later_[i];
+  if (kept.partner >= 0 && m_[kept.partner].count != kept.partner_count) return find_event(i);
+  const Vec3 ri = m_[i].r, vi = m_[i].v;
+  const int d = face / 2, side = face % 2 == 1 ? 1 : -1;
+  int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
+  lo[d] = hi[d] = side;
+  int cells[9];
+  double shifts[9][3];
+  const int count = neighbour_cells(grid_.coord(grid_.cell(i)), lo, hi, cells, shifts);
+  double best = kept.time - now_;
+  int partner = -1;
+  scan_cells(i, ri, vi, cells, shifts, count, best, partner);
+  if (partner < 0) return earliest(i, ri, vi, kept);
+  return earliest(i, ri, vi, {now_ + best, partner, m_[partner].count});
 }
 
 template <class Rule>
@@ -254,6 +323,15 @@ RunStatus Engine<Rule>::run_until(double t_stop, std::int64_t max_events, const 
     }
     const int i = calendar_.top();
     if (i < 0) break;
+    for (int k = 0; k < 2; ++k)
+      if (const int next = calendar_.runner_up(k); next >= 0) {
+        // Its calendar entry is in cache (it was touched when the bucket was
+        // sorted); what the event will read next is not.
+        __builtin_prefetch(&m_[next]);
+        grid_.prefetch_cell(next);
+        const int partner = calendar_.event(next).partner;
+        if (partner >= 0) __builtin_prefetch(&m_[partner]);
+      }
     const Event ev = calendar_.event(i);
     if (ev.time > t_stop) break;
     now_ = ev.time;
@@ -271,7 +349,7 @@ RunStatus Engine<Rule>::run_until(double t_stop, std::int64_t max_events, const 
       calendar_.schedule(code, find_event(code));
     } else {
       cross(i, code);
-      calendar_.schedule(i, find_event(i));
+      calendar_.schedule(i, find_event_after_crossing(i, -1 - code));
     }
   }
   now_ = std::max(now_, t_stop);

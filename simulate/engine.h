@@ -5,7 +5,9 @@
 //   - cell grid (cell_grid.h): a particle looks for partners in 27 cells;
 //     crossing into a new cell is an event of its own;
 //   - one scheduled event per particle, the earliest of its predicted
-//     collisions and its next cell crossing; events are invalidated lazily:
+//     collisions and its next cell crossing (the earliest collision is kept
+//     too, so a crossing searches only the 9 new neighbour cells); events are
+//     invalidated lazily:
 //     each particle counts its collisions, an event remembers its partner's
 //     count when predicted, and a mismatch when it comes due means "stale,
 //     predict again";
@@ -132,19 +134,28 @@ class Engine final : public EngineBase {
   const EngineCounters& counters() const override { return c_; }
   void record_collisions(std::vector<CollisionRecord>* log) override { log_ = log; }
   std::int64_t calendar_years() const override { return calendar_.years(); }
+  // The positions at now(), wrapped, in id order; the engine is spent (only
+  // destruction is left). Its other arrays are freed first, so the positions
+  // never coexist with the whole engine (the set-up's memory peak).
+  std::vector<Vec3> release_positions();
 
  private:
   void advance(int i);
   void rebuild();
   void order_by_space();
   void order_by_id();
-  Event find_event(int i) const;
+  Event find_event(int i);
+  Event find_event_after_crossing(int i, int face);
+  Event earliest(int i, const Vec3& ri, const Vec3& vi, const Event& collision);
+  void scan_cells(int i, const Vec3& ri, const Vec3& vi, const int* cells, const double (*shifts)[3], int count,
+                  double& best, int& partner) const;
   void cross(int i, int code);
   void collide(int i, int j);
   void note_collision_gap(int i, double gap, int partner);
   Vec3 image_shift(int from_cell, int to_cell) const;
-  // The 27 cells around `home` (coordinates c) and the periodic shift of each.
-  void neighbour_cells(const CellCoord& c, int home, int* cells, double (*shifts)[3]) const;
+  // The cells around c at offsets o[d] in [lo[d], hi[d]] (each within -1..1)
+  // and the periodic shift of each; returns how many.
+  int neighbour_cells(const CellCoord& c, const int* lo, const int* hi, int* cells, double (*shifts)[3]) const;
   // Earliest contact of particle i (at now_, at ri with vi) with the particles
   // of one cell list starting at `first`, whose images are shifted by s;
   // updates best/code.
@@ -158,6 +169,12 @@ class Engine final : public EngineBase {
   Rule rule_;
   CellGrid grid_;
   EventCalendar calendar_;  // each particle's event: partner >= 0, or the cell face to cross (-1 - face)
+  // For a particle whose event is a cell crossing: its earliest predicted
+  // collision with the particles around (partner -1 and time +inf if none),
+  // still valid at the crossing if that partner has not collided since. The
+  // crossing then needs to search only the 9 cells that became neighbours,
+  // not all 27 (crossings are about 40 % of all events).
+  std::vector<Event> later_;
   std::vector<std::uint16_t> stall_;         // consecutive collisions without time advancing (dissipative rules)
   double now_;
   EngineCounters c_;

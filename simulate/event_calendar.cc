@@ -102,6 +102,8 @@ bool EventCalendar::advance_bucket() {
     int p = heads_[current_];
     if (p == kNone) continue;
     heads_[current_] = kNone;
+    // The next bucket's first event is loaded while this one is sorted.
+    if (current_ + 1 < nb_ && heads_[current_ + 1] != kNone) __builtin_prefetch(&entry_[heads_[current_ + 1]]);
     while (p != kNone) {
       const int nxt = entry_[p].next;
       entry_[p].where = kNone;

@@ -44,6 +44,10 @@ class EventCalendar {
   const Event& event(int particle) const { return entry_[particle].event; }
   // The particle with the earliest event; -1 if there are no events.
   int top();
+  // The particles likely to come due after top() (its children in the heap,
+  // -1 where there are none): the engine prefetches their data early.
+  int runner_up(int k) const { return k + 1 < int(heap_.size()) ? heap_[std::size_t(k) + 1] : -1; }
+  void prefetch_event(int particle) const { __builtin_prefetch(&entry_[std::size_t(particle)]); }
 
   // Statistics for benchmarks: how many years were started.
   std::int64_t years() const { return years_; }

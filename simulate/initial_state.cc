@@ -76,12 +76,11 @@ Particles initial_state(const Scene& s) {
   if (s.equilibrate > 0) {
     // Only the relaxed positions are kept (velocities are drawn afresh), and
     // only they coexist with the engine: this is the set-up's memory peak.
-    std::vector<Vec3> relaxed(p.size());
+    std::vector<Vec3> relaxed;
     {
       Engine<ElasticRule> melt(std::move(p), ElasticRule{}, 0.0);
       melt.run_until(s.equilibrate, std::numeric_limits<std::int64_t>::max(), nullptr);
-      melt.synchronize();  // id order, wrapped
-      for (std::size_t i = 0; i < relaxed.size(); ++i) relaxed[i] = melt.motion()[i].r;
+      relaxed = melt.release_positions();
     }
     p = Particles();
     p.L = s.L;
