@@ -26,6 +26,7 @@ CellGrid::CellGrid(double L, double min_width, std::size_t n) {
   const std::string err = check_box_fits_grid(L, min_width);
   if (!err.empty()) throw std::invalid_argument(err);
   n_ = static_cast<int>(std::floor(L / (min_width * kWidthMargin)));
+  inv_n_ = 1.0 / n_;
   w_ = L / n_;
   head_.assign(static_cast<std::size_t>(cell_count()), -1);
   own_next_.assign(n, -1);

@@ -150,18 +150,16 @@ Vec3 Engine<Rule>::image_shift(int from, int to) const {
 
 template <class Rule>
 int Engine<Rule>::neighbour_cells(const CellCoord& c, const int* lo, const int* hi, int* cells,
-                                  double (*shifts)[3]) const {
+                                  double (*shifts)[3], bool& wraps) const {
   const int n = grid_.cells_per_side();
   int k = 0;
-  if (c.x > 0 && c.y > 0 && c.z > 0 && c.x < n - 1 && c.y < n - 1 && c.z < n - 1) {
-    // Interior cell: no neighbour wraps; runs of consecutive indices per row.
+  wraps = !(c.x > 0 && c.y > 0 && c.z > 0 && c.x < n - 1 && c.y < n - 1 && c.z < n - 1);
+  if (!wraps) {
+    // Interior cell (~90 % of them): no shifts; runs of consecutive indices per row.
     const int home = grid_.index(c);
     for (int oz = lo[2]; oz <= hi[2]; ++oz)
       for (int oy = lo[1]; oy <= hi[1]; ++oy)
-        for (int ox = lo[0]; ox <= hi[0]; ++ox, ++k) {
-          cells[k] = home + (oz * n + oy) * n + ox;
-          shifts[k][0] = shifts[k][1] = shifts[k][2] = 0.0;
-        }
+        for (int ox = lo[0]; ox <= hi[0]; ++ox, ++k) cells[k] = home + (oz * n + oy) * n + ox;
     return k;
   }
   const double L = L_;
@@ -180,19 +178,22 @@ int Engine<Rule>::neighbour_cells(const CellCoord& c, const int* lo, const int* 
 }
 
 template <class Rule>
-void Engine<Rule>::scan_list(int i, const Vec3& ri, const Vec3& vi, int first, const double* s, double& best,
+void Engine<Rule>::scan_list(const Vec3& ri, const Vec3& vi, int first, const double* s, double& best,
                              int& code) const {
+  double b = best;  // locals, not the references, so they can stay in registers
+  int c = code;
   for (int j = first; j >= 0; j = m_[j].next) {
     const Motion& mj = m_[j];
     const double dtj = now_ - mj.t;
     const Vec3 dr{mj.r.x + mj.v.x * dtj + s[0] - ri.x, mj.r.y + mj.v.y * dtj + s[1] - ri.y,
                   mj.r.z + mj.v.z * dtj + s[2] - ri.z};
     const Vec3 dv{mj.v.x - vi.x, mj.v.y - vi.y, mj.v.z - vi.z};
-    const double t = j == i ? kNever : time_to_contact_unbranched(dr, dv);
-    const bool earlier = t < best;  // selects, not branches (see time_to_contact_unbranched)
-    best = earlier ? t : best;
-    code = earlier ? j : code;
+    const double t = time_to_contact_unbranched(dr, dv);  // kNever for j == i
+    c = t < b ? j : c;  // selects, not branches (see time_to_contact_unbranched)
+    b = std::min(t, b);
   }
+  best = b;
+  code = c;
 }
 
 // Earliest contact of particle i (at now_) with the particles of the given
@@ -202,7 +203,7 @@ void Engine<Rule>::scan_list(int i, const Vec3& ri, const Vec3& vi, int first, c
 // the first particle of each prefetched: the misses then overlap instead of
 // following one another (the search is bound by memory latency).
 template <class Rule>
-void Engine<Rule>::scan_cells(int i, const Vec3& ri, const Vec3& vi, const int* cells, const double (*shifts)[3],
+void Engine<Rule>::scan_cells(const Vec3& ri, const Vec3& vi, const int* cells, const double (*shifts)[3],
                               int count, double& best, int& partner) const {
   int heads[27], which[27], n = 0;
   for (int k = 0; k < count; ++k) {
@@ -211,7 +212,8 @@ void Engine<Rule>::scan_cells(int i, const Vec3& ri, const Vec3& vi, const int* 
     n += heads[n] >= 0;
   }
   for (int k = 0; k < n; ++k) __builtin_prefetch(&m_[heads[k]]);
-  for (int k = 0; k < n; ++k) scan_list(i, ri, vi, heads[k], shifts[which[k]], best, partner);
+  static constexpr double kNoShift[3] = {0, 0, 0};
+  for (int k = 0; k < n; ++k) scan_list(ri, vi, heads[k], shifts ? shifts[which[k]] : kNoShift, best, partner);
 }
 
 // The event of particle i (at now_ at ri with vi) given its earliest
@@ -232,11 +234,12 @@ Event Engine<Rule>::find_event(int i) {
   const Vec3 ri = m_[i].r, vi = m_[i].v;
   static constexpr int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
   int cells[27];
-  double shifts[27][3];  // plain (uninitialised) storage: filled by neighbour_cells
-  const int count = neighbour_cells(grid_.coord(grid_.cell(i)), lo, hi, cells, shifts);
+  double shifts[27][3];  // plain (uninitialised) storage: filled by neighbour_cells if wraps
+  bool wraps;
+  const int count = neighbour_cells(grid_.coord(grid_.cell(i)), lo, hi, cells, shifts, wraps);
   double best = kNever;
   int partner = -1;
-  scan_cells(i, ri, vi, cells, shifts, count, best, partner);
+  scan_cells(ri, vi, cells, wraps ? shifts : nullptr, count, best, partner);
   if (partner < 0) return earliest(i, ri, vi, Event{});
   return earliest(i, ri, vi, {now_ + best, partner, m_[partner].count});
 }
@@ -256,10 +259,11 @@ Event Engine<Rule>::find_event_after_crossing(int i, int face) {
   lo[d] = hi[d] = side;
   int cells[9];
   double shifts[9][3];
-  const int count = neighbour_cells(grid_.coord(grid_.cell(i)), lo, hi, cells, shifts);
+  bool wraps;
+  const int count = neighbour_cells(grid_.coord(grid_.cell(i)), lo, hi, cells, shifts, wraps);
   double best = kept.time - now_;
   int partner = -1;
-  scan_cells(i, ri, vi, cells, shifts, count, best, partner);
+  scan_cells(ri, vi, cells, wraps ? shifts : nullptr, count, best, partner);
   if (partner < 0) return earliest(i, ri, vi, kept);
   return earliest(i, ri, vi, {now_ + best, partner, m_[partner].count});
 }

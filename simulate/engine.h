@@ -147,19 +147,23 @@ class Engine final : public EngineBase {
   Event find_event(int i);
   Event find_event_after_crossing(int i, int face);
   Event earliest(int i, const Vec3& ri, const Vec3& vi, const Event& collision);
-  void scan_cells(int i, const Vec3& ri, const Vec3& vi, const int* cells, const double (*shifts)[3], int count,
+  // shifts: the periodic shift of each cell, or nullptr if none wraps.
+  void scan_cells(const Vec3& ri, const Vec3& vi, const int* cells, const double (*shifts)[3], int count,
                   double& best, int& partner) const;
   void cross(int i, int code);
   void collide(int i, int j);
   void note_collision_gap(int i, double gap, int partner);
   Vec3 image_shift(int from_cell, int to_cell) const;
-  // The cells around c at offsets o[d] in [lo[d], hi[d]] (each within -1..1)
-  // and the periodic shift of each; returns how many.
-  int neighbour_cells(const CellCoord& c, const int* lo, const int* hi, int* cells, double (*shifts)[3]) const;
-  // Earliest contact of particle i (at now_, at ri with vi) with the particles
+  // The cells around c at offsets o[d] in [lo[d], hi[d]] (each within -1..1);
+  // returns how many. If some wrap around the box (wraps), shifts holds the
+  // periodic shift of each, else it is left untouched.
+  int neighbour_cells(const CellCoord& c, const int* lo, const int* hi, int* cells, double (*shifts)[3],
+                      bool& wraps) const;
+  // Earliest contact of a particle (at now_, at ri with vi) with the particles
   // of one cell list starting at `first`, whose images are shifted by s;
-  // updates best/code.
-  void scan_list(int i, const Vec3& ri, const Vec3& vi, int first, const double* s, double& best, int& code) const;
+  // updates best/code. The particle itself may be in the list: at distance 0
+  // it never approaches.
+  void scan_list(const Vec3& ri, const Vec3& vi, int first, const double* s, double& best, int& code) const;
 
   double L_;
   std::vector<Motion> m_;

@@ -2,7 +2,9 @@
 // engines use, so that the fast engine can be checked against the reference.
 #pragma once
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include "simulate/particles.h"
@@ -44,16 +46,25 @@ inline double time_to_contact_before(const Vec3& dr, const Vec3& dv, double limi
   return gap2 / (-b + std::sqrt(disc));
 }
 
-// time_to_contact (the same value, bit for bit) without data-dependent
-// branches, for the engine's partner search: whether a candidate approaches,
-// misses or overlaps is a coin toss the branch predictor loses, and the
-// mispredictions cost more than computing the square root every time.
+// time_to_contact (the same value, up to the sign of a zero result) without
+// data-dependent branches, for the engine's partner search: whether a
+// candidate approaches, misses or overlaps is a coin toss the branch
+// predictor loses, and mispredictions cost more than computing the square
+// root every time. The final choice is made on the bits, so the compiler
+// cannot turn it back into a branch. A particle paired with itself (dr = 0)
+// gets kNever.
 inline double time_to_contact_unbranched(const Vec3& dr, const Vec3& dv) {
   const double b = dot(dr, dv);
   const double gap2 = dot(dr, dr) - 1.0;
   const double disc = b * b - dot(dv, dv) * gap2;
-  const double hit = gap2 <= 0 ? 0.0 : gap2 / (-b + std::sqrt(std::max(disc, 0.0)));
-  return b < 0 && (gap2 <= 0 || disc > 0) ? hit : kNever;
+  // gap2 <= 0 (overlap by round-off) gives 0: contact at once.
+  // |disc| rather than max(disc, 0), which the compiler makes a branch around
+  // the root; where disc <= 0 matters the result is 0 or not a hit anyway.
+  const double t = std::max(gap2, 0.0) / (-b + std::sqrt(std::abs(disc)));
+  const bool hit = (b < 0) & ((gap2 <= 0) | (disc > 0));
+  const std::uint64_t keep = -std::uint64_t(hit);
+  return std::bit_cast<double>((std::bit_cast<std::uint64_t>(t) & keep) |
+                               (std::bit_cast<std::uint64_t>(kNever) & ~keep));
 }
 
 // Applies the paper's Eq. (1) to velocities vi, vj with the unit normal n
