@@ -1,6 +1,7 @@
 #include "simulate/engine.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 
@@ -11,6 +12,8 @@
 namespace coolgas {
 
 namespace {
+// Offsets -1..1 along each axis (lo[3], then hi[3]): all 27 cells around.
+constexpr std::array<int, 6> kAllAround = {-1, -1, -1, 1, 1, 1};
 // Inelastic collapse shows as one particle colliding again and again while
 // simulated time stops advancing: rule.collapse_limit() collisions in a row,
 // each less than kStallGap (relative to 1 + t) after the particle's previous
@@ -196,24 +199,32 @@ void Engine<Rule>::scan_list(const Vec3& ri, const Vec3& vi, int first, const do
   code = c;
 }
 
-// Earliest contact of particle i (at now_) with the particles of the given
-// cells, if earlier than best (relative to now_); updates best and partner.
-// The non-empty cells are picked out first without branching (about two in
-// three cells are empty, at random), their list heads read all together and
-// the first particle of each prefetched: the misses then overlap instead of
-// following one another (the search is bound by memory latency).
+// The first half of a partner search around particle i's cell: the cells
+// (offsets lo..hi), the non-empty ones picked out without branching (about
+// two in three cells are empty, at random), their list heads read all
+// together and the first particle of each prefetched, so that the misses
+// overlap instead of following one another (the search is bound by memory
+// latency). Two searches started one after the other overlap too.
 template <class Rule>
-void Engine<Rule>::scan_cells(const Vec3& ri, const Vec3& vi, const int* cells, const double (*shifts)[3],
-                              int count, double& best, int& partner) const {
-  int heads[27], which[27], n = 0;
+void Engine<Rule>::start_search(int i, const int* lo, const int* hi, Search& s) const {
+  int cells[27];
+  const int count = neighbour_cells(grid_.coord(grid_.cell(i)), lo, hi, cells, s.shifts, s.wraps);
+  s.n = 0;
   for (int k = 0; k < count; ++k) {
-    heads[n] = grid_.first(cells[k]);
-    which[n] = k;
-    n += heads[n] >= 0;
+    s.heads[s.n] = grid_.first(cells[k]);
+    s.which[s.n] = k;
+    s.n += s.heads[s.n] >= 0;
   }
-  for (int k = 0; k < n; ++k) __builtin_prefetch(&m_[heads[k]]);
+  for (int k = 0; k < s.n; ++k) __builtin_prefetch(&m_[s.heads[k]]);
+}
+
+// The second half: the earliest contact (at now_, at ri with vi) with the
+// particles of the search's cells, if earlier than best (relative to now_);
+// updates best and partner.
+template <class Rule>
+void Engine<Rule>::finish_search(const Vec3& ri, const Vec3& vi, const Search& s, double& best, int& partner) const {
   static constexpr double kNoShift[3] = {0, 0, 0};
-  for (int k = 0; k < n; ++k) scan_list(ri, vi, heads[k], shifts ? shifts[which[k]] : kNoShift, best, partner);
+  for (int k = 0; k < s.n; ++k) scan_list(ri, vi, s.heads[k], s.wraps ? s.shifts[s.which[k]] : kNoShift, best, partner);
 }
 
 // The event of particle i (at now_ at ri with vi) given its earliest
@@ -231,15 +242,18 @@ Event Engine<Rule>::earliest(int i, const Vec3& ri, const Vec3& vi, const Event&
 // it will cross, or an earlier contact with a particle in the 27 cells around.
 template <class Rule>
 Event Engine<Rule>::find_event(int i) {
+  Search s;
+  start_search(i, kAllAround.data(), kAllAround.data() + 3, s);
+  return finish_event(i, s);
+}
+
+// find_event() once the search of the 27 cells around i has been started.
+template <class Rule>
+Event Engine<Rule>::finish_event(int i, const Search& s) {
   const Vec3 ri = m_[i].r, vi = m_[i].v;
-  static constexpr int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
-  int cells[27];
-  double shifts[27][3];  // plain (uninitialised) storage: filled by neighbour_cells if wraps
-  bool wraps;
-  const int count = neighbour_cells(grid_.coord(grid_.cell(i)), lo, hi, cells, shifts, wraps);
   double best = kNever;
   int partner = -1;
-  scan_cells(ri, vi, cells, wraps ? shifts : nullptr, count, best, partner);
+  finish_search(ri, vi, s, best, partner);
   if (partner < 0) return earliest(i, ri, vi, Event{});
   return earliest(i, ri, vi, {now_ + best, partner, m_[partner].count});
 }
@@ -257,13 +271,11 @@ Event Engine<Rule>::find_event_after_crossing(int i, int face) {
   const int d = face / 2, side = face % 2 == 1 ? 1 : -1;
   int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
   lo[d] = hi[d] = side;
-  int cells[9];
-  double shifts[9][3];
-  bool wraps;
-  const int count = neighbour_cells(grid_.coord(grid_.cell(i)), lo, hi, cells, shifts, wraps);
+  Search s;
+  start_search(i, lo, hi, s);
   double best = kept.time - now_;
   int partner = -1;
-  scan_cells(ri, vi, cells, wraps ? shifts : nullptr, count, best, partner);
+  finish_search(ri, vi, s, best, partner);
   if (partner < 0) return earliest(i, ri, vi, kept);
   return earliest(i, ri, vi, {now_ + best, partner, m_[partner].count});
 }
@@ -349,8 +361,11 @@ RunStatus Engine<Rule>::run_until(double t_stop, std::int64_t max_events, const 
         continue;
       }
       collide(i, code);
-      calendar_.schedule(i, find_event(i));
-      calendar_.schedule(code, find_event(code));
+      Search si, sj;  // both started before either is finished: their misses overlap
+      start_search(i, kAllAround.data(), kAllAround.data() + 3, si);
+      start_search(code, kAllAround.data(), kAllAround.data() + 3, sj);
+      calendar_.schedule(i, finish_event(i, si));
+      calendar_.schedule(code, finish_event(code, sj));
     } else {
       cross(i, code);
       calendar_.schedule(i, find_event_after_crossing(i, -1 - code));

@@ -144,12 +144,20 @@ class Engine final : public EngineBase {
   void rebuild();
   void order_by_space();
   void order_by_id();
+  // A partner search in two halves (engine.cc): the non-empty cells around a
+  // particle with the periodic shift of each (if any wraps), then the
+  // contact times with their particles.
+  struct Search {
+    int heads[27], which[27], n;
+    double shifts[27][3];
+    bool wraps;
+  };
+  void start_search(int i, const int* lo, const int* hi, Search& s) const;
+  void finish_search(const Vec3& ri, const Vec3& vi, const Search& s, double& best, int& partner) const;
   Event find_event(int i);
+  Event finish_event(int i, const Search& s);
   Event find_event_after_crossing(int i, int face);
   Event earliest(int i, const Vec3& ri, const Vec3& vi, const Event& collision);
-  // shifts: the periodic shift of each cell, or nullptr if none wraps.
-  void scan_cells(const Vec3& ri, const Vec3& vi, const int* cells, const double (*shifts)[3], int count,
-                  double& best, int& partner) const;
   void cross(int i, int code);
   void collide(int i, int j);
   void note_collision_gap(int i, double gap, int partner);
