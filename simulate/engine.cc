@@ -346,7 +346,10 @@ RunStatus Engine<Rule>::run_until(double t_stop, std::int64_t max_events, const 
         __builtin_prefetch(&m_[next]);
         grid_.prefetch_cell(next);
         const int partner = calendar_.event(next).partner;
-        if (partner >= 0) __builtin_prefetch(&m_[partner]);
+        if (partner >= 0) {  // its record and its own calendar entry (to be rescheduled)
+          __builtin_prefetch(&m_[partner]);
+          calendar_.prefetch_event(partner);
+        }
       }
     const Event ev = calendar_.event(i);
     if (ev.time > t_stop) break;
