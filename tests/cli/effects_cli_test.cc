@@ -13,12 +13,15 @@
 
 #include "common/hdf5_file.h"
 #include "tests/support/run_command.h"
+#include "tests/support/simulate_cli.h"
 
 namespace coolgas {
 namespace {
 
 using test::bin;
 using test::run_command;
+using test::simulate;
+using test::write_file;
 
 const char* kAggregationScene = R"([system]
 N = 3000
@@ -30,25 +33,13 @@ model = "aggregation"
 t_end = 30
 )";
 
-std::string write(const std::string& dir, const std::string& name, const std::string& text) {
-  const std::string path = dir + "/" + name;
-  std::ofstream(path) << text;
-  return path;
-}
-
-std::string simulate(const std::string& args) { return bin("coolgas-simulate") + " -q " + args; }
-
 void expect_refused(const std::string& args, const std::string& needle, const std::string& out) {
-  const auto r = run_command(simulate(args));
-  EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
-  EXPECT_EQ(test::line_count(r.err), 1) << r.err;
-  EXPECT_NE(r.err.find(needle), std::string::npos) << r.err;
-  EXPECT_FALSE(std::filesystem::exists(out)) << args;
+  test::expect_simulate_refused(args, needle, out);
 }
 
 TEST(EffectsCli, BadParametersAreRefusedWithOneLine) {
   const std::string dir = test::scratch_dir("effects_bad_input");
-  const std::string scene = write(dir, "ba.toml", kAggregationScene), out = dir + "/out.h5";
+  const std::string scene = write_file(dir, "ba.toml", kAggregationScene), out = dir + "/out.h5";
   const std::string base = scene + " -o " + out + " ";
   expect_refused(base + "--set collision.model=sticky", "\"aggregation\"", out);
   expect_refused(base + "--set collision.r0=0.5", "collision.r0", out);
@@ -75,7 +66,7 @@ std::int64_t schema_version(const std::string& path) {
 
 TEST(EffectsCli, ViscoelasticRunValidatesAsVersion2AndElasticStaysVersion1) {
   const std::string dir = test::scratch_dir("effects_visco");
-  const std::string scene = write(dir, "ba.toml", kAggregationScene);
+  const std::string scene = write_file(dir, "ba.toml", kAggregationScene);
   const std::string visco = dir + "/visco.h5", elastic = dir + "/elastic.h5";
   ASSERT_EQ(run_command(simulate(scene + " -o " + visco +
                                  " --set collision.model=viscoelastic --set collision.viscoelastic_b=0.2"))
@@ -103,7 +94,7 @@ std::vector<T> read(const std::string& path, const std::string& dataset) {
 
 TEST(EffectsCli, AggregationRunValidatesResumesAndIsReadByTheTools) {
   const std::string dir = test::scratch_dir("effects_aggregation");
-  const std::string scene = write(dir, "ba.toml", kAggregationScene);
+  const std::string scene = write_file(dir, "ba.toml", kAggregationScene);
   const std::string whole = dir + "/whole.h5", parts = dir + "/parts.h5";
   ASSERT_EQ(run_command(simulate(scene + " -o " + whole)).exit_code, 0);
   const auto v = run_command(bin("coolgas-validate") + " " + whole);
@@ -156,7 +147,7 @@ TEST(EffectsCli, AggregationRunValidatesResumesAndIsReadByTheTools) {
 // run stops with exit code 4, one line naming the fix, and a valid last dump.
 TEST(EffectsCli, AggregatesOutgrowingASmallBoxStopTheRunCleanly) {
   const std::string dir = test::scratch_dir("effects_too_large");
-  const std::string scene = write(dir, "ba.toml", kAggregationScene), out = dir + "/tiny.h5";
+  const std::string scene = write_file(dir, "ba.toml", kAggregationScene), out = dir + "/tiny.h5";
   const auto r = run_command(simulate(scene + " -o " + out + " --set system.N=300 --set run.t_end=1000"));
   EXPECT_EQ(r.exit_code, 4) << r.err;
   EXPECT_EQ(test::line_count(r.err), 1) << r.err;

@@ -9,12 +9,14 @@
 
 #include "common/hdf5_file.h"
 #include "tests/support/run_command.h"
+#include "tests/support/simulate_cli.h"
 
 namespace coolgas {
 namespace {
 
 using test::bin;
 using test::run_command;
+using test::simulate;
 
 const char* kScene = R"([system]
 N = 2000
@@ -28,22 +30,10 @@ delta = 1e-4
 t_end = 20
 )";
 
-std::string write_scene(const std::string& dir) {
-  const std::string path = dir + "/gas.toml";
-  std::ofstream(path) << kScene;
-  return path;
-}
+std::string write_scene(const std::string& dir) { return test::write_file(dir, "gas.toml", kScene); }
 
-std::string simulate(const std::string& args) { return bin("coolgas-simulate") + " -q " + args; }
-
-// Expects exit code 2, one stderr line containing `needle`, and no file at `out`.
 void expect_refused(const std::string& args, const std::string& needle, const std::string& out) {
-  const auto r = run_command(simulate(args));
-  EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
-  EXPECT_EQ(test::line_count(r.err), 1) << r.err;
-  EXPECT_NE(r.err.find(needle), std::string::npos) << r.err;
-  EXPECT_FALSE(std::filesystem::exists(out)) << args;
-  EXPECT_FALSE(std::filesystem::exists(out + ".partial")) << args;
+  test::expect_simulate_refused(args, needle, out);
 }
 
 TEST(SimulateCli, BadInputIsRefusedWithOneLineAndNoFile) {

@@ -1,0 +1,34 @@
+// Helpers for the tests that drive coolgas-simulate as a user would.
+#pragma once
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "tests/support/run_command.h"
+
+namespace coolgas::test {
+
+// Writes `text` to dir/name and returns the path.
+inline std::string write_file(const std::string& dir, const std::string& name, const std::string& text) {
+  const std::string path = dir + "/" + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+// The command line of a quiet coolgas-simulate run with these arguments.
+inline std::string simulate(const std::string& args) { return bin("coolgas-simulate") + " -q " + args; }
+
+// Expects coolgas-simulate to refuse `args`: exit code 2, one stderr line
+// containing `needle`, and neither `out` nor its partial file left behind.
+inline void expect_simulate_refused(const std::string& args, const std::string& needle, const std::string& out) {
+  const auto r = run_command(simulate(args));
+  EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
+  EXPECT_EQ(line_count(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find(needle), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out)) << args;
+  EXPECT_FALSE(std::filesystem::exists(out + ".partial")) << args;
+}
+
+}  // namespace coolgas::test
