@@ -93,12 +93,14 @@ class Driver {
     return kExitOk;
   }
 
-  // Called after a CollapseError: the state is made consistent and dumped.
+  // Called after a CollapseError (or an aggregate too large for the box):
+  // the state is made consistent and dumped.
   int finish_collapsed(const std::string& message) {
     engine_.synchronize();
     writer_.add_observables(observe(engine_));
     writer_.add_frame(frame(engine_));
-    std::cerr << "coolgas-simulate: error: " << message << " (state at collapse written as the last dump)\n";
+    std::cerr << "coolgas-simulate: error: " << message << " (the state at t = " << engine_.now()
+              << " is written as the last dump)\n";
     return kExitCollapse;
   }
 
