@@ -266,13 +266,14 @@ Event Engine<Rule>::finish_event(int i, const Search& s) {
 template <class Rule>
 Event Engine<Rule>::find_event_after_crossing(int i, int face) {
   const Event kept = later_[i];
-  if (kept.partner >= 0 && m_[kept.partner].count != kept.partner_count) return find_event(i);
-  const Vec3 ri = m_[i].r, vi = m_[i].v;
+  if (kept.partner >= 0) __builtin_prefetch(&m_[kept.partner]);
   const int d = face / 2, side = face % 2 == 1 ? 1 : -1;
   int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
   lo[d] = hi[d] = side;
   Search s;
-  start_search(i, lo, hi, s);
+  start_search(i, lo, hi, s);  // before the partner is checked: both loads in flight together
+  if (kept.partner >= 0 && m_[kept.partner].count != kept.partner_count) return find_event(i);
+  const Vec3 ri = m_[i].r, vi = m_[i].v;
   double best = kept.time - now_;
   int partner = -1;
   finish_search(ri, vi, s, best, partner);
@@ -370,6 +371,7 @@ RunStatus Engine<Rule>::run_until(double t_stop, std::int64_t max_events, const 
       calendar_.schedule(i, finish_event(i, si));
       calendar_.schedule(code, finish_event(code, sj));
     } else {
+      __builtin_prefetch(&later_[i]);
       cross(i, code);
       calendar_.schedule(i, find_event_after_crossing(i, -1 - code));
     }
