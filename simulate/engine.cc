@@ -349,6 +349,7 @@ RunStatus Engine<Rule>::run_until(double t_stop, std::int64_t max_events, const 
         const int partner = calendar_.event(next).partner;
         if (partner >= 0) {  // its record and its own calendar entry (to be rescheduled)
           __builtin_prefetch(&m_[partner]);
+          grid_.prefetch_cell(partner);
           calendar_.prefetch_event(partner);
         }
       }
@@ -364,10 +365,13 @@ RunStatus Engine<Rule>::run_until(double t_stop, std::int64_t max_events, const 
         calendar_.schedule(i, find_event(i));
         continue;
       }
-      collide(i, code);
-      Search si, sj;  // both started before either is finished: their misses overlap
+      // Both searches are started before either is finished, and before the
+      // collision itself (they read only cells): their misses overlap with
+      // each other and with the collision's arithmetic.
+      Search si, sj;
       start_search(i, kAllAround.data(), kAllAround.data() + 3, si);
       start_search(code, kAllAround.data(), kAllAround.data() + 3, sj);
+      collide(i, code);
       calendar_.schedule(i, finish_event(i, si));
       calendar_.schedule(code, finish_event(code, sj));
     } else {
