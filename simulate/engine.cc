@@ -199,16 +199,16 @@ void Engine<Rule>::scan_list(const Vec3& ri, const Vec3& vi, int first, const do
   code = c;
 }
 
-// The first half of a partner search around particle i's cell: the cells
+// The first half of a partner search around cell `home`: the cells
 // (offsets lo..hi), the non-empty ones picked out without branching (about
 // two in three cells are empty, at random), their list heads read all
 // together and the first particle of each prefetched, so that the misses
 // overlap instead of following one another (the search is bound by memory
 // latency). Two searches started one after the other overlap too.
 template <class Rule>
-void Engine<Rule>::start_search(int i, const int* lo, const int* hi, Search& s) const {
+void Engine<Rule>::start_search(int home, const int* lo, const int* hi, Search& s) const {
   int cells[27];
-  const int count = neighbour_cells(grid_.coord(grid_.cell(i)), lo, hi, cells, s.shifts, s.wraps);
+  const int count = neighbour_cells(grid_.coord(home), lo, hi, cells, s.shifts, s.wraps);
   s.n = 0;
   for (int k = 0; k < count; ++k) {
     s.heads[s.n] = grid_.first(cells[k]);
@@ -243,7 +243,7 @@ Event Engine<Rule>::earliest(int i, const Vec3& ri, const Vec3& vi, const Event&
 template <class Rule>
 Event Engine<Rule>::find_event(int i) {
   Search s;
-  start_search(i, kAllAround.data(), kAllAround.data() + 3, s);
+  start_search(grid_.cell(i), kAllAround.data(), kAllAround.data() + 3, s);
   return finish_event(i, s);
 }
 
@@ -258,20 +258,25 @@ Event Engine<Rule>::finish_event(int i, const Search& s) {
   return earliest(i, ri, vi, {now_ + best, partner, m_[partner].count});
 }
 
-// Particle i has just crossed `face` into a new cell, its velocity unchanged.
-// Its kept collision is still the earliest with the particles that were its
-// neighbours if that partner has not collided since (any other that has
-// collided has searched again itself, and found i if due); only the layer
-// of 9 cells beyond the new cell has to be searched.
+// Particle i crosses `face` of its cell into the next one, its velocity
+// unchanged; returns its next event. Its kept collision is still the
+// earliest with the particles that were its neighbours if that partner has
+// not collided since (any other that has collided has searched again itself,
+// and found i if due); only the layer of 9 cells beyond the new cell has to
+// be searched. That search is started first, so its loads are in flight
+// while the grid is updated and the partner checked.
 template <class Rule>
-Event Engine<Rule>::find_event_after_crossing(int i, int face) {
+Event Engine<Rule>::cross(int i, int face) {
   const Event kept = later_[i];
   if (kept.partner >= 0) __builtin_prefetch(&m_[kept.partner]);
+  advance(i);
+  const int to = cell_across_face(grid_, grid_.cell(i), face, L_, m_[i].r, image_[i]);
   const int d = face / 2, side = face % 2 == 1 ? 1 : -1;
   int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
   lo[d] = hi[d] = side;
   Search s;
-  start_search(i, lo, hi, s);  // before the partner is checked: both loads in flight together
+  start_search(to, lo, hi, s);
+  grid_.move(i, to);
   if (kept.partner >= 0 && m_[kept.partner].count != kept.partner_count) return find_event(i);
   const Vec3 ri = m_[i].r, vi = m_[i].v;
   double best = kept.time - now_;
@@ -279,12 +284,6 @@ Event Engine<Rule>::find_event_after_crossing(int i, int face) {
   finish_search(ri, vi, s, best, partner);
   if (partner < 0) return earliest(i, ri, vi, kept);
   return earliest(i, ri, vi, {now_ + best, partner, m_[partner].count});
-}
-
-template <class Rule>
-void Engine<Rule>::cross(int i, int code) {
-  advance(i);
-  grid_.move(i, cell_across_face(grid_, grid_.cell(i), -1 - code, L_, m_[i].r, image_[i]));
 }
 
 template <class Rule>
@@ -369,15 +368,13 @@ RunStatus Engine<Rule>::run_until(double t_stop, std::int64_t max_events, const 
       // collision itself (they read only cells): their misses overlap with
       // each other and with the collision's arithmetic.
       Search si, sj;
-      start_search(i, kAllAround.data(), kAllAround.data() + 3, si);
-      start_search(code, kAllAround.data(), kAllAround.data() + 3, sj);
+      start_search(grid_.cell(i), kAllAround.data(), kAllAround.data() + 3, si);
+      start_search(grid_.cell(code), kAllAround.data(), kAllAround.data() + 3, sj);
       collide(i, code);
       calendar_.schedule(i, finish_event(i, si));
       calendar_.schedule(code, finish_event(code, sj));
     } else {
-      __builtin_prefetch(&later_[i]);
-      cross(i, code);
-      calendar_.schedule(i, find_event_after_crossing(i, -1 - code));
+      calendar_.schedule(i, cross(i, -1 - code));
     }
   }
   now_ = std::max(now_, t_stop);

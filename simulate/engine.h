@@ -152,13 +152,12 @@ class Engine final : public EngineBase {
     double shifts[27][3];
     bool wraps;
   };
-  void start_search(int i, const int* lo, const int* hi, Search& s) const;
+  void start_search(int home, const int* lo, const int* hi, Search& s) const;
   void finish_search(const Vec3& ri, const Vec3& vi, const Search& s, double& best, int& partner) const;
   Event find_event(int i);
   Event finish_event(int i, const Search& s);
-  Event find_event_after_crossing(int i, int face);
   Event earliest(int i, const Vec3& ri, const Vec3& vi, const Event& collision);
-  void cross(int i, int code);
+  Event cross(int i, int face);
   void collide(int i, int j);
   void note_collision_gap(int i, double gap, int partner);
   Vec3 image_shift(int from_cell, int to_cell) const;
