@@ -42,7 +42,7 @@ demo: build
 
 # Speed figures for the README (one core each; see tests/bench/).
 bench: build
-	$(BUILD)/bench/engine_bench all
+	$(BUILD)/bench/engine_bench all 108000 50 3
 	$(BUILD)/bench/smoluchowski_bench 1
 	$(BUILD)/bench/cluster_bench
 
