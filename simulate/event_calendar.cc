@@ -19,11 +19,13 @@ void EventCalendar::resize(std::size_t n) {
   nb_ = nb;
   heads_.assign(std::size_t(nb_) + 1, kNone);
   heap_.clear();
+  ahead_ = kNone;
 }
 
 void EventCalendar::reset(double now) {
   std::fill(heads_.begin(), heads_.end(), kNone);
   heap_.clear();
+  ahead_ = kNone;
   // Put everything in overflow, then let start_year distribute it.
   for (std::size_t p = 0; p < entry_.size(); ++p) {
     entry_[p].where = kNone;
@@ -94,6 +96,13 @@ void EventCalendar::erase(int p) {
 int EventCalendar::top() {
   while (heap_.empty())
     if (!advance_bucket()) return -1;
+  // One more step along the next bucket's list: its entries are in cache by
+  // the time it opens, instead of being loaded one miss after another. Only
+  // prefetches: a link that changed meanwhile costs nothing but the miss.
+  if (ahead_ != kNone) {
+    ahead_ = entry_[ahead_].next;
+    if (ahead_ != kNone) __builtin_prefetch(&entry_[ahead_]);
+  }
   return heap_[0];
 }
 
@@ -102,8 +111,9 @@ bool EventCalendar::advance_bucket() {
     int p = heads_[current_];
     if (p == kNone) continue;
     heads_[current_] = kNone;
-    // The next bucket's first event is loaded while this one is sorted.
-    if (current_ + 1 < nb_ && heads_[current_ + 1] != kNone) __builtin_prefetch(&entry_[heads_[current_ + 1]]);
+    // The next bucket's events are loaded while this one's are processed (top()).
+    ahead_ = current_ + 1 < nb_ ? heads_[current_ + 1] : kNone;
+    if (ahead_ != kNone) __builtin_prefetch(&entry_[ahead_]);
     while (p != kNone) {
       const int nxt = entry_[p].next;
       entry_[p].where = kNone;

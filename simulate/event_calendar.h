@@ -85,6 +85,7 @@ class EventCalendar {
   std::vector<std::int32_t> heap_;
   double base_ = 0, width_ = 1, inv_width_ = 1;
   std::int32_t nb_ = 1, current_ = 0;
+  std::int32_t ahead_ = kNone;  // how far top() has prefetched along the next bucket's list
   std::int64_t years_ = 0;
 };
 
