@@ -67,10 +67,13 @@ double initial_temperature(const Scene& s) {
 Particles initial_state(const Scene& s) {
   Particles p;
   p.L = s.L;
-  p.resize(std::size_t(s.N));
+  // Positions first, the other arrays only after the placement: its search
+  // structures and the positions are the set-up's memory peak.
+  p.r.resize(std::size_t(s.N));
   Random rng(std::uint64_t(s.seed));
   if (s.init == InitialPositions::kRandom) place_random_sequential(p, s.N, rng);
   else place_fcc(p, s.N, rng);
+  p.resize(std::size_t(s.N));
   const double T0 = initial_temperature(s);
   draw_velocities(p, T0, rng);
   if (s.equilibrate > 0) {
