@@ -1,0 +1,171 @@
+// Which sub-cubes of a cube an exclusion sphere (radius 1) covers whole, and
+// which it reaches into, as 64-bit masks over 4x4x4 sub-cubes: bit
+// (z * 4 + y) * 4 + x for the sub-cube [x, x+1] s × [y, y+1] s × [z, z+1] s
+// of the cube [0, 4s]^3, the sphere's centre r being relative to its corner.
+//
+// These masks are the inner loop of the voxel phase of random sequential
+// addition (every voxel is tested against every centre near it), so they
+// are computed four sub-cubes at a time in single precision, from face
+// coordinates rounded once from double (error below 3e-7 for coordinates
+// below 4, so sums of squares near 1 are off by less than 2e-6). Both tests
+// leave a margin far wider, 1e-5: a sub-cube counts as covered only if its
+// farthest corner is nearer than 1 - 1e-5, which is what matters for
+// exactness (covered space is never sampled again, so it must really be
+// covered); "reaches" is only a filter that spares work, and counting a
+// sphere as reaching where it does not is harmless. Everything is inline:
+// the calls cost as much as the work.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "simulate/particles.h"
+
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
+
+namespace coolgas {
+
+namespace sub_cubes {
+
+// Covered below 1 - kSlack, reached below 1 + kSlack (squared distances).
+constexpr float kSlack = 1e-5f;
+
+// Squared distances from the coordinate u to the farther face of the slabs
+// [k s, (k + 1) s], k = first .. first + 3 (far), and to the slabs (near, 0 inside).
+inline void slab_distances(double u, double s, int first, float far[4], float near[4]) {
+#ifdef __SSE2__
+  const __m128d uu = _mm_set1_pd(u), ss = _mm_set1_pd(s);
+  const auto face = [&](int k0) {  // faces k0, k0 + 1 in double, rounded once
+    return _mm_cvtpd_ps(_mm_sub_pd(uu, _mm_mul_pd(ss, _mm_setr_pd(k0, k0 + 1))));
+  };
+  const __m128 lo = _mm_movelh_ps(face(first), face(first + 2));
+  const __m128 hi = _mm_movelh_ps(face(first + 1), face(first + 3));
+  const __m128 sign = _mm_set1_ps(-0.0f);
+  const __m128 f = _mm_max_ps(_mm_andnot_ps(sign, lo), _mm_andnot_ps(sign, hi));
+  _mm_storeu_ps(far, _mm_mul_ps(f, f));
+  if (near != nullptr) {
+    const __m128 q = _mm_max_ps(_mm_max_ps(_mm_xor_ps(sign, lo), hi), _mm_setzero_ps());
+    _mm_storeu_ps(near, _mm_mul_ps(q, q));
+  }
+#else
+  for (int k = 0; k < 4; ++k) {
+    const float lo = float(u - (first + k) * s), hi = float(u - (first + k + 1) * s);
+    const float f = std::max(std::abs(lo), std::abs(hi));
+    far[k] = f * f;
+    if (near != nullptr) {
+      const float q = std::max(std::max(-lo, hi), 0.0f);
+      near[k] = q * q;
+    }
+  }
+#endif
+}
+
+// The bits of the 4x4x4 sub-cubes with dx[x] + dy[y] + dz[z] < limit.
+inline std::uint64_t below(const float dx[4], const float dy[4], const float dz[4], float limit) {
+#ifdef __SSE2__
+  const __m128 vx = _mm_loadu_ps(dx);
+  const __m128 vy = _mm_loadu_ps(dy);
+  std::uint64_t mask = 0;
+  for (int z = 0; z < 4; ++z) {  // no early exit: the branch would be unpredictable
+    const __m128 t = _mm_sub_ps(_mm_set1_ps(limit - dz[z]), vy);  // per y: what is left for x
+    const unsigned r0 = unsigned(_mm_movemask_ps(_mm_cmplt_ps(vx, _mm_shuffle_ps(t, t, 0x00))));
+    const unsigned r1 = unsigned(_mm_movemask_ps(_mm_cmplt_ps(vx, _mm_shuffle_ps(t, t, 0x55))));
+    const unsigned r2 = unsigned(_mm_movemask_ps(_mm_cmplt_ps(vx, _mm_shuffle_ps(t, t, 0xaa))));
+    const unsigned r3 = unsigned(_mm_movemask_ps(_mm_cmplt_ps(vx, _mm_shuffle_ps(t, t, 0xff))));
+    mask |= std::uint64_t(r0 | r1 << 4 | r2 << 8 | r3 << 12) << (16 * z);
+  }
+  return mask;
+#else
+  std::uint64_t mask = 0;
+  for (int z = 0; z < 4; ++z)
+    for (int y = 0; y < 4; ++y) {
+      const float t = limit - dz[z] - dy[y];
+      const unsigned row = unsigned(dx[0] < t) | unsigned(dx[1] < t) << 1 | unsigned(dx[2] < t) << 2 |
+                           unsigned(dx[3] < t) << 3;
+      mask |= std::uint64_t(row) << ((z * 4 + y) * 4);
+    }
+  return mask;
+#endif
+}
+
+}  // namespace sub_cubes
+
+// The single-sphere tests on one cube [lo, lo + side]^3, with the same margin.
+inline bool covers_cube(const Vec3& r, const Vec3& lo, double side) {
+  double far2 = 0;
+  for (int d = 0; d < 3; ++d) {
+    const double u = r[d] - lo[d];
+    const double f = std::max(std::abs(u), std::abs(u - side));
+    far2 += f * f;
+  }
+  return far2 < 1.0 - double(sub_cubes::kSlack);
+}
+
+inline bool reaches_cube(const Vec3& r, const Vec3& lo, double side) {
+  double near2 = 0;
+  for (int d = 0; d < 3; ++d) {
+    const double u = r[d] - lo[d];
+    const double q = std::max(std::max(-u, u - side), 0.0);
+    near2 += q * q;
+  }
+  return near2 < 1.0 + double(sub_cubes::kSlack);
+}
+
+// The 4x4x4 sub-cubes of side s that the sphere at r covers.
+inline std::uint64_t covered_sub_cubes(const Vec3& r, double s) {
+  float far[3][4];
+  for (int d = 0; d < 3; ++d) sub_cubes::slab_distances(r[d], s, 0, far[d], nullptr);
+  return sub_cubes::below(far[0], far[1], far[2], 1.0f - sub_cubes::kSlack);
+}
+
+// One sphere seen from one cell cut twice 4x4x4: 64 coarse cubes, each of
+// 64 voxels (side w/16). The face distances along each axis are computed
+// once for the cell's voxel slabs, then shared by every coarse cube.
+class SphereOverCell {
+ public:
+  SphereOverCell() = default;
+  SphereOverCell(const Vec3& r, double voxel_side) : r_(r), s_(voxel_side) {
+    for (int d = 0; d < 3; ++d) sub_cubes::slab_distances(r[d], 4 * voxel_side, 0, coarse_far_[d], near_[d]);
+    // A voxel of side s is at least s/2 farther away along each axis at
+    // its farthest corner than at its nearest point, so a sphere covers one
+    // only if its centre is nearer than 1 - s/2 to it (and so to its coarse cube).
+    const float deep = std::max(0.0f, 1.0f - float(voxel_side) / 2);
+    reached_ = sub_cubes::below(near_[0], near_[1], near_[2], deep * deep + sub_cubes::kSlack);
+  }
+  // Coarse cubes it covers whole; coarse cubes in which it may cover a voxel.
+  std::uint64_t covered_coarse() const {
+    return sub_cubes::below(coarse_far_[0], coarse_far_[1], coarse_far_[2], 1.0f - sub_cubes::kSlack);
+  }
+  std::uint64_t reached_coarse() const { return reached_; }
+  // Readies covered_voxels() for the given coarse cubes (among the reached).
+  void look_into(std::uint64_t cubes) {
+    // The coarse slabs along each axis that the cubes lie in.
+    constexpr std::uint64_t kSlab[3] = {0x1111111111111111ULL, 0x000f000f000f000fULL, 0xffffULL};
+    constexpr int kStride[3] = {1, 4, 16};
+    for (int d = 0; d < 3; ++d)
+      for (int q = 0; q < 4; ++q)
+        if (cubes & kSlab[d] << (kStride[d] * q)) sub_cubes::slab_distances(r_[d], s_, 4 * q, far_[d] + 4 * q, nullptr);
+  }
+  // The voxels of one coarse cube it covers whole.
+  std::uint64_t covered_voxels(int coarse) const {
+    const int x = coarse & 3, y = (coarse >> 2) & 3, z = coarse >> 4;
+    return sub_cubes::below(far_[0] + 4 * x, far_[1] + 4 * y, far_[2] + 4 * z, 1.0f - sub_cubes::kSlack);
+  }
+
+ private:
+  Vec3 r_;
+  double s_;
+  float far_[3][16];  // per axis and voxel slab: squared distance to the farther face (slabs looked into only)
+  float near_[3][4];  // per axis and coarse slab: squared distance to the slab (0 inside)
+  float coarse_far_[3][4];
+  std::uint64_t reached_;
+};
+
+// The corner of sub-cube `bit` of a cube at lo cut 4x4x4 with sides s.
+inline Vec3 sub_cube_corner(const Vec3& lo, int bit, double s) {
+  return {lo.x + (bit & 3) * s, lo.y + ((bit >> 2) & 3) * s, lo.z + (bit >> 4) * s};
+}
+
+}  // namespace coolgas
