@@ -1,0 +1,102 @@
+// The voxels of random sequential addition (Zhang & Torquato, PRE 88,
+// 053312, 2013): cubes whose union holds all the space still free (farther
+// than one diameter from every centre placed), drawn with probability
+// proportional to their volume.
+//
+// Each cell of the centre grid (side w) is cut into 4x4x4 coarse cubes of
+// side w/4, each of those into 4x4x4 voxels of side w/16: a coarse cube is a
+// 64-bit mask of its voxels still listed, and a cell keeps only its coarse
+// cubes with a voxel left, in one array. A voxel refined after a failed
+// trial becomes a brick, the mask of its own 4x4x4 sub-voxels two levels
+// down. A voxel leaves as soon as one exclusion sphere covers it whole: at
+// the build, when a sphere is placed next to it (cover), or when a trial in
+// it fails and a sphere around it covers it (refine). The union of the
+// listed voxels thus always holds all the free space.
+//
+// A voxel's weight is its volume in units of the finest voxel, 8^(finest -
+// level); cells are drawn by weight (rsa_weight_tree.h).
+#pragma once
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "simulate/particles.h"
+#include "simulate/random.h"
+#include "simulate/rsa_weight_tree.h"
+
+namespace coolgas {
+
+class FreeVoxels {
+ public:
+  FreeVoxels(std::size_t cells, double cell_width);
+
+  // The build: every cell in increasing order, with the centres around it
+  // (all those within reach, relative to the cell's corner); then sampling.
+  void add_cell(std::size_t cell, std::span<const Vec3> near);
+  void start_sampling();
+
+  struct Voxel {
+    std::size_t cell;
+    std::int32_t brick;  // -1: a voxel of a coarse cube, else the brick holding it
+    int coarse;          // the coarse cube (brick < 0)
+    int bit;             // in the mask
+    int level;           // side = cell width / 2^level
+    Vec3 lo;             // corner, relative to the cell's corner
+    double side;
+  };
+
+  bool empty() const { return tree_.total() == 0; }
+  // A voxel with probability proportional to its volume (not empty()).
+  Voxel draw(Random& rng) const;
+
+  // Removes the voxels that the exclusion sphere (radius 1) of a newly placed
+  // centre covers whole, in the given cells (those around it): r[k] is the
+  // centre relative to the corner of cells[k].
+  void cover(std::span<const std::size_t> cells, std::span<const Vec3> r);
+  // After a failed trial in v: removes v if one of the centres `near` (all
+  // those within reach, relative to v's cell corner) covers it, else
+  // replaces it by its sub-voxels two levels down that none of them covers.
+  // At the finest level v stays if it still holds a free point (exact test).
+  void refine(const Voxel& v, std::span<const Vec3> near);
+
+  // Bytes held, for the benchmark's memory figure.
+  std::size_t bytes() const;
+
+ private:
+  static constexpr int kCoarseLevel = 2, kVoxelLevel = 4;
+  struct Cell {
+    std::uint64_t weight = 0;  // total weight of its voxels
+    std::uint64_t listed = 0;  // which coarse cubes have voxels listed
+    std::uint32_t first = 0;   // where their masks start in masks_, in cube order
+    std::int32_t bricks = -1;  // first brick, -1 if none
+  };
+  struct Brick {
+    std::uint64_t mask;
+    std::uint64_t key;  // level of its sub-voxels << 48 | the refined voxel's x, y, z (16 bits each)
+    std::int32_t next;  // next brick of the same cell, -1 at the end
+  };
+
+  double side(int level) const;
+  int shift(int level) const { return 3 * (finest_ - level); }
+  std::uint64_t weight_of(std::uint64_t mask, int level) const;
+  Vec3 brick_corner(std::uint64_t key) const;
+  std::uint64_t* coarse_mask(const Cell& cell, int coarse);
+  void drop_coarse(Cell& cell, int coarse);
+  std::int64_t cover_cell(Cell& cell, const Vec3& r);
+
+  std::int32_t new_brick(const Brick& b);
+  void drop_brick(Cell& cell, std::int32_t id);
+  void add_weight(std::size_t cell, std::int64_t delta);
+  std::size_t find_cell(std::uint64_t& r) const;
+
+  double w_;
+  int finest_;  // the finest level: the weights of all cells sum below 2^62
+  std::vector<Cell> cells_;
+  std::vector<std::uint64_t> masks_;  // the coarse cubes' masks, by cell then cube
+  std::vector<Brick> bricks_;
+  std::vector<std::int32_t> unused_bricks_;
+  WeightTree tree_;
+  std::vector<Vec3> reaching_;  // scratch
+};
+
+}  // namespace coolgas
