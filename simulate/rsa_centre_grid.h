@@ -41,11 +41,24 @@ class CentreGrid {
   int wrap(int k) const { return k < 0 ? k + n_ : (k >= n_ ? k - n_ : k); }
 
   void insert(const Vec3& r, std::int32_t id);
+  // The coordinates of x's cell and x's offset from the cell's corner.
+  void locate(const Vec3& x, int cell[3], Vec3& offset) const {
+    for (int d = 0; d < 3; ++d) {
+      cell[d] = axis(x[d]);
+      offset[d] = x[d] - cell[d] * w_;
+    }
+  }
 
   // Whether a centre lies nearer than one diameter to x: exact(id) decides
   // for the centres that single precision cannot settle.
   template <class Exact>
   bool any_within_one(const Vec3& x, Exact&& exact) const;
+
+  // Calls f(cx, cy, cz, offset) for every centre, cell by cell: the
+  // coordinates of its cell and its offset from the cell's corner (to single
+  // precision).
+  template <class F>
+  void for_each_centre(F&& f) const;
 
   // Calls f(centre, id) with every centre in the 27 cells around `cell`,
   // relative to the cell's corner (to single precision: ~1e-7).
@@ -179,6 +192,20 @@ void CentreGrid::for_each_near(std::size_t cell, F&& f) const {
     if (bit(chained_, cells[j]))
       for (std::int32_t m = chain_[cells[j]]; m >= 0; m = more_[std::size_t(m)].next) at(more_[std::size_t(m)].slot);
   }
+}
+
+template <class F>
+void CentreGrid::for_each_centre(F&& f) const {
+  for (int z = 0; z < n_; ++z)
+    for (int y = 0; y < n_; ++y)
+      for (int x = 0; x < n_; ++x) {
+        const std::size_t c = std::size_t(index(x, y, z));
+        if (!bit(occupied_, c)) continue;
+        any_in(c, [&](const Slot& s) {
+          f(x, y, z, Vec3{s.x, s.y, s.z});
+          return false;
+        });
+      }
 }
 
 }  // namespace coolgas

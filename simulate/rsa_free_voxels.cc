@@ -46,9 +46,22 @@ std::uint64_t uniform_below(Random& rng, std::uint64_t range) {
 
 }  // namespace
 
-FreeVoxels::FreeVoxels(std::size_t cells, double cell_width) : w_(cell_width), cells_(cells), tree_(cells) {
+FreeVoxels::FreeVoxels(int cells_per_side, double cell_width)
+    : n_(cells_per_side), w_(cell_width), cells_(std::size_t(n_) * std::size_t(n_) * std::size_t(n_)), tree_(cells_.size()) {
   // A whole cell weighs 8^finest; bricks refine two levels at a time from level 4.
-  finest_ = std::min(16, ((62 - int(std::bit_width(cells))) / 3) & ~1);
+  finest_ = std::min(16, ((62 - int(std::bit_width(cells_.size()))) / 3) & ~1);
+}
+
+std::size_t FreeVoxels::cell_index(int x, int y, int z) const {
+  const auto wrap = [&](int k) { return k < 0 ? k + n_ : (k >= n_ ? k - n_ : k); };
+  return (std::size_t(wrap(z)) * std::size_t(n_) + std::size_t(wrap(y))) * std::size_t(n_) + std::size_t(wrap(x));
+}
+
+FreeVoxels::Views FreeVoxels::views_of(const Vec3& offset, bool voxels) const {
+  Views v;
+  for (int d = 0; d < 3; ++d)
+    for (int k = 0; k < 3; ++k) v.axis[d][k] = AxisView(offset[d] - (k - 1) * w_, side(kVoxelLevel), voxels);
+  return v;
 }
 
 double FreeVoxels::side(int level) const { return std::ldexp(w_, -level); }
@@ -74,47 +87,51 @@ void FreeVoxels::drop_coarse(Cell& cell, int coarse) {
   cell.listed &= ~(std::uint64_t(1) << coarse);
 }
 
-void FreeVoxels::add_cell(std::size_t cell, std::span<const Vec3> near) {
-  // The centres that may cover a voxel of the cell; the coarse cubes one of
-  // them covers whole are left out at once. (At most ~30: the centres are a
-  // diameter apart; any further ones are left out, which only keeps more
-  // voxels listed.)
-  SphereOverCell spheres[64];
-  std::size_t k = 0;
-  std::uint64_t covered = 0;
-  for (const Vec3& r : near) {
-    if (k == std::size(spheres)) break;
-    if (!reaches_cube(r, {0, 0, 0}, w_)) continue;
-    spheres[k] = SphereOverCell(r, side(kVoxelLevel));
-    if (spheres[k].reached_coarse() == 0) continue;
-    covered |= spheres[k].covered_coarse();
-    ++k;
-  }
-  // The voxels of the other coarse cubes, less those one sphere covers.
-  const std::uint64_t open = ~covered;
-  std::uint64_t mask[64];
-  for (std::uint64_t m = open; m != 0; m &= m - 1) mask[std::countr_zero(m)] = ~std::uint64_t(0);
-  for (std::size_t j = 0; j < k; ++j) {
-    const std::uint64_t cubes = spheres[j].reached_coarse() & open;
-    if (cubes == 0) continue;
-    spheres[j].look_into(cubes);
-    for (std::uint64_t m = cubes; m != 0; m &= m - 1) {
-      const int b = std::countr_zero(m);
-      mask[b] &= ~spheres[j].covered_voxels(b);
-    }
-  }
-  Cell& c = cells_[cell];
-  c.first = std::uint32_t(masks_.size());
-  for (std::uint64_t m = open; m != 0; m &= m - 1) {
-    const int b = std::countr_zero(m);
-    if (mask[b] == 0) continue;
-    masks_.push_back(mask[b]);
-    c.listed |= std::uint64_t(1) << b;
-    c.weight += weight_of(mask[b], kVoxelLevel);
+void FreeVoxels::mark_covered_coarse(int cx, int cy, int cz, const Vec3& offset) {
+  const Views v = views_of(offset, false);
+  for (int k = 0; k < 27; ++k) {
+    const int ox = k % 3, oy = k / 3 % 3, oz = k / 9;
+    const SphereOverCell s(v.axis[0][ox], v.axis[1][oy], v.axis[2][oz]);
+    const std::uint64_t covered = s.covered_coarse();
+    if (covered != 0) cells_[cell_index(cx + ox - 1, cy + oy - 1, cz + oz - 1)].listed |= covered;
   }
 }
 
-void FreeVoxels::start_sampling() {
+void FreeVoxels::mark_covered_voxels(int cx, int cy, int cz, const Vec3& offset) {
+  const Views v = views_of(offset, true);
+  const float reach2 = voxel_reach2(side(kVoxelLevel));
+  for (int k = 0; k < 27; ++k) {
+    const int ox = k % 3, oy = k / 3 % 3, oz = k / 9;
+    const SphereOverCell s(v.axis[0][ox], v.axis[1][oy], v.axis[2][oz]);
+    const std::uint64_t reached = s.reached_coarse(reach2);
+    if (reached == 0) continue;
+    const Cell& c = cells_[cell_index(cx + ox - 1, cy + oy - 1, cz + oz - 1)];
+    for (std::uint64_t m = reached & c.listed; m != 0; m &= m - 1) {
+      const int b = std::countr_zero(m);
+      masks_[c.first + std::uint32_t(rank_of(c.listed, b))] &= ~s.covered_voxels(b);
+    }
+  }
+}
+
+// Drops the emptied masks, moving the others up, and sets the weights.
+void FreeVoxels::finish_build() {
+  std::size_t to = 0;
+  for (Cell& c : cells_) {
+    const std::uint64_t open = c.listed;
+    const std::size_t from = c.first;
+    c.listed = 0;
+    c.first = std::uint32_t(to);
+    c.weight = 0;
+    std::size_t k = 0;
+    for (std::uint64_t m = open; m != 0; m &= m - 1, ++k) {
+      const std::uint64_t mask = masks_[from + k];
+      if (mask == 0) continue;
+      masks_[to++] = mask;
+      c.listed |= std::uint64_t(1) << std::countr_zero(m);
+      c.weight += weight_of(mask, kVoxelLevel);
+    }
+  }
+  masks_.resize(to);
   tree_.build(cells_.size(), [&](std::size_t c) { return cells_[c].weight; });
 }
 
@@ -165,33 +182,36 @@ FreeVoxels::Voxel FreeVoxels::draw(Random& rng) const {
   return v;
 }
 
-void FreeVoxels::cover(std::span<const std::size_t> cells, std::span<const Vec3> r) {
-  // The cells are scattered in memory: fetch them all before the work.
-  for (const std::size_t c : cells) __builtin_prefetch(&cells_[c]);
-  for (std::size_t k = 0; k < cells.size(); ++k)
-    if (reaches_cube(r[k], {0, 0, 0}, w_)) __builtin_prefetch(&masks_[cells_[cells[k]].first]);
-  for (std::size_t k = 0; k < cells.size(); ++k) {
-    if (!reaches_cube(r[k], {0, 0, 0}, w_)) continue;
-    const std::int64_t delta = cover_cell(cells_[cells[k]], r[k]);
+void FreeVoxels::cover(int cx, int cy, int cz, const Vec3& offset) {
+  std::size_t cells[27];
+  for (int k = 0; k < 27; ++k) {
+    cells[k] = cell_index(cx + k % 3 - 1, cy + k / 3 % 3 - 1, cz + k / 9 - 1);
+    __builtin_prefetch(&cells_[cells[k]]);  // scattered in memory: fetch them all first
+  }
+  const Views v = views_of(offset, true);
+  const float reach2 = voxel_reach2(side(kVoxelLevel));
+  for (int k = 0; k < 27; ++k) {
+    const SphereOverCell s(v.axis[0][k % 3], v.axis[1][k / 3 % 3], v.axis[2][k / 9]);
+    Cell& cell = cells_[cells[k]];
+    const std::uint64_t cubes = cell.listed != 0 ? s.reached_coarse(reach2) & cell.listed : 0;
+    if (cubes == 0 && cell.bricks < 0) continue;
+    const Vec3 r{offset.x - (k % 3 - 1) * w_, offset.y - (k / 3 % 3 - 1) * w_, offset.z - (k / 9 - 1) * w_};
+    const std::int64_t delta = cover_cell(cell, s, cubes, r);
     if (delta != 0) add_weight(cells[k], delta);
   }
 }
 
-// Removes one cell's voxels covered by the sphere at r; returns the weight change.
-std::int64_t FreeVoxels::cover_cell(Cell& cell, const Vec3& r) {
+// Removes one cell's voxels covered by the sphere seen as s, at r from the
+// cell's corner, in the given coarse cubes and the bricks; returns the weight change.
+std::int64_t FreeVoxels::cover_cell(Cell& cell, const SphereOverCell& s, std::uint64_t cubes, const Vec3& r) {
   std::int64_t delta = 0;
-  if (cell.listed != 0) {
-    SphereOverCell sphere(r, side(kVoxelLevel));
-    const std::uint64_t cubes = sphere.reached_coarse() & cell.listed;
-    if (cubes != 0) sphere.look_into(cubes);
-    for (std::uint64_t hit = cubes; hit != 0; hit &= hit - 1) {
-      const int b = std::countr_zero(hit);
-      std::uint64_t* m = coarse_mask(cell, b);
-      const std::uint64_t left = *m & ~sphere.covered_voxels(b);
-      delta -= std::int64_t(weight_of(*m ^ left, kVoxelLevel));
-      *m = left;
-      if (left == 0) drop_coarse(cell, b);
-    }
+  for (std::uint64_t hit = cubes; hit != 0; hit &= hit - 1) {
+    const int b = std::countr_zero(hit);
+    std::uint64_t* m = coarse_mask(cell, b);
+    const std::uint64_t left = *m & ~s.covered_voxels(b);
+    delta -= std::int64_t(weight_of(*m ^ left, kVoxelLevel));
+    *m = left;
+    if (left == 0) drop_coarse(cell, b);
   }
   for (std::int32_t id = cell.bricks; id >= 0;) {
     Brick& b = bricks_[std::size_t(id)];

@@ -16,24 +16,30 @@
 // A voxel's weight is its volume in units of the finest voxel, 8^(finest -
 // level); cells are drawn by weight (rsa_weight_tree.h).
 #pragma once
+#include <bit>
 #include <cstdint>
 #include <span>
 #include <vector>
 
 #include "simulate/particles.h"
 #include "simulate/random.h"
+#include "simulate/rsa_sub_cubes.h"
 #include "simulate/rsa_weight_tree.h"
 
 namespace coolgas {
 
 class FreeVoxels {
  public:
-  FreeVoxels(std::size_t cells, double cell_width);
+  // The cells of the centre grid: n^3 of side w.
+  FreeVoxels(int cells_per_side, double cell_width);
 
-  // The build: every cell in increasing order, with the centres around it
-  // (all those within reach, relative to the cell's corner); then sampling.
-  void add_cell(std::size_t cell, std::span<const Vec3> near);
-  void start_sampling();
+  // Lists the voxels of every cell from the centres placed so far:
+  // centres(f) calls f(cx, cy, cz, offset) for each, with the coordinates of
+  // its cell and its offset from the cell's corner, cell by cell. Each centre
+  // is seen from the 27 cells around its own, in two passes: the coarse cubes
+  // covered whole, then the voxels of the others.
+  template <class ForEachCentre>
+  void build(ForEachCentre&& centres);
 
   struct Voxel {
     std::size_t cell;
@@ -50,9 +56,9 @@ class FreeVoxels {
   Voxel draw(Random& rng) const;
 
   // Removes the voxels that the exclusion sphere (radius 1) of a newly placed
-  // centre covers whole, in the given cells (those around it): r[k] is the
-  // centre relative to the corner of cells[k].
-  void cover(std::span<const std::size_t> cells, std::span<const Vec3> r);
+  // centre covers whole, in the 27 cells around its own: cell (cx, cy, cz),
+  // offset from the cell's corner.
+  void cover(int cx, int cy, int cz, const Vec3& offset);
   // After a failed trial in v: removes v if one of the centres `near` (all
   // those within reach, relative to v's cell corner) covers it, else
   // replaces it by its sub-voxels two levels down that none of them covers.
@@ -76,19 +82,30 @@ class FreeVoxels {
     std::int32_t next;  // next brick of the same cell, -1 at the end
   };
 
+  // The 3 views along each axis of a centre at `offset` in its cell, from
+  // the cells at -1, 0, +1 along that axis.
+  struct Views {
+    AxisView axis[3][3];
+  };
+  Views views_of(const Vec3& offset, bool voxels) const;
+  std::size_t cell_index(int x, int y, int z) const;
+  void mark_covered_coarse(int cx, int cy, int cz, const Vec3& offset);
+  void mark_covered_voxels(int cx, int cy, int cz, const Vec3& offset);
+  void finish_build();
   double side(int level) const;
   int shift(int level) const { return 3 * (finest_ - level); }
   std::uint64_t weight_of(std::uint64_t mask, int level) const;
   Vec3 brick_corner(std::uint64_t key) const;
   std::uint64_t* coarse_mask(const Cell& cell, int coarse);
   void drop_coarse(Cell& cell, int coarse);
-  std::int64_t cover_cell(Cell& cell, const Vec3& r);
+  std::int64_t cover_cell(Cell& cell, const SphereOverCell& s, std::uint64_t cubes, const Vec3& r);
 
   std::int32_t new_brick(const Brick& b);
   void drop_brick(Cell& cell, std::int32_t id);
   void add_weight(std::size_t cell, std::int64_t delta);
   std::size_t find_cell(std::uint64_t& r) const;
 
+  int n_;
   double w_;
   int finest_;  // the finest level: the weights of all cells sum below 2^62
   std::vector<Cell> cells_;
@@ -98,5 +115,22 @@ class FreeVoxels {
   WeightTree tree_;
   std::vector<Vec3> reaching_;  // scratch
 };
+
+template <class ForEachCentre>
+void FreeVoxels::build(ForEachCentre&& centres) {
+  // Pass 1: the coarse cubes one sphere covers whole (kept in Cell::listed).
+  centres([&](int cx, int cy, int cz, const Vec3& offset) { mark_covered_coarse(cx, cy, cz, offset); });
+  // Every voxel of the other coarse cubes, in one mask per cube.
+  std::size_t total = 0;
+  for (Cell& c : cells_) {
+    c.listed = ~c.listed;
+    c.first = std::uint32_t(total);
+    total += std::size_t(std::popcount(c.listed));
+  }
+  masks_.assign(total, ~std::uint64_t(0));
+  // Pass 2: less the voxels one sphere covers whole.
+  centres([&](int cx, int cy, int cz, const Vec3& offset) { mark_covered_voxels(cx, cy, cz, offset); });
+  finish_build();
+}
 
 }  // namespace coolgas

@@ -120,47 +120,49 @@ inline std::uint64_t covered_sub_cubes(const Vec3& r, double s) {
   return sub_cubes::below(far[0], far[1], far[2], 1.0f - sub_cubes::kSlack);
 }
 
-// One sphere seen from one cell cut twice 4x4x4: 64 coarse cubes, each of
-// 64 voxels (side w/16). The face distances along each axis are computed
-// once for the cell's voxel slabs, then shared by every coarse cube.
+// A cell is cut twice 4x4x4: 64 coarse cubes of 64 voxels each (side s =
+// w/16). Along one axis, a centre's coordinate u relative to a cell's corner
+// against the cell's 4 coarse slabs and, if asked, its 16 voxel slabs:
+// computed once per centre and cell column, shared by the cells of the column.
+struct AxisView {
+  AxisView() = default;
+  AxisView(double u, double voxel_side, bool voxels) {
+    sub_cubes::slab_distances(u, 4 * voxel_side, 0, coarse_far, coarse_near);
+    if (voxels)
+      for (int q = 0; q < 4; ++q) sub_cubes::slab_distances(u, voxel_side, 4 * q, voxel_far + 4 * q, nullptr);
+  }
+  float coarse_far[4], coarse_near[4], voxel_far[16];
+};
+
+// A voxel of side s is at least s/2 farther away along each axis at its
+// farthest corner than at its nearest point, so a sphere covers one only if
+// its centre is nearer than 1 - s/2 to it (and so to its coarse cube): the
+// squared reach for SphereOverCell.
+inline float voxel_reach2(double voxel_side) {
+  const float deep = std::max(0.0f, 1.0f - float(voxel_side) / 2);
+  return deep * deep + sub_cubes::kSlack;
+}
+
+// One sphere seen from one cell, through its three axis views.
 class SphereOverCell {
  public:
-  SphereOverCell() = default;
-  SphereOverCell(const Vec3& r, double voxel_side) : r_(r), s_(voxel_side) {
-    for (int d = 0; d < 3; ++d) sub_cubes::slab_distances(r[d], 4 * voxel_side, 0, coarse_far_[d], near_[d]);
-    // A voxel of side s is at least s/2 farther away along each axis at
-    // its farthest corner than at its nearest point, so a sphere covers one
-    // only if its centre is nearer than 1 - s/2 to it (and so to its coarse cube).
-    const float deep = std::max(0.0f, 1.0f - float(voxel_side) / 2);
-    reached_ = sub_cubes::below(near_[0], near_[1], near_[2], deep * deep + sub_cubes::kSlack);
-  }
-  // Coarse cubes it covers whole; coarse cubes in which it may cover a voxel.
+  SphereOverCell(const AxisView& x, const AxisView& y, const AxisView& z) : x_(x), y_(y), z_(z) {}
+  // Coarse cubes it covers whole.
   std::uint64_t covered_coarse() const {
-    return sub_cubes::below(coarse_far_[0], coarse_far_[1], coarse_far_[2], 1.0f - sub_cubes::kSlack);
+    return sub_cubes::below(x_.coarse_far, y_.coarse_far, z_.coarse_far, 1.0f - sub_cubes::kSlack);
   }
-  std::uint64_t reached_coarse() const { return reached_; }
-  // Readies covered_voxels() for the given coarse cubes (among the reached).
-  void look_into(std::uint64_t cubes) {
-    // The coarse slabs along each axis that the cubes lie in.
-    constexpr std::uint64_t kSlab[3] = {0x1111111111111111ULL, 0x000f000f000f000fULL, 0xffffULL};
-    constexpr int kStride[3] = {1, 4, 16};
-    for (int d = 0; d < 3; ++d)
-      for (int q = 0; q < 4; ++q)
-        if (cubes & kSlab[d] << (kStride[d] * q)) sub_cubes::slab_distances(r_[d], s_, 4 * q, far_[d] + 4 * q, nullptr);
+  // Coarse cubes in which it may cover a voxel (reach2 from voxel_reach2).
+  std::uint64_t reached_coarse(float reach2) const {
+    return sub_cubes::below(x_.coarse_near, y_.coarse_near, z_.coarse_near, reach2);
   }
-  // The voxels of one coarse cube it covers whole.
+  // The voxels of one coarse cube it covers whole (the views with voxels).
   std::uint64_t covered_voxels(int coarse) const {
     const int x = coarse & 3, y = (coarse >> 2) & 3, z = coarse >> 4;
-    return sub_cubes::below(far_[0] + 4 * x, far_[1] + 4 * y, far_[2] + 4 * z, 1.0f - sub_cubes::kSlack);
+    return sub_cubes::below(x_.voxel_far + 4 * x, y_.voxel_far + 4 * y, z_.voxel_far + 4 * z, 1.0f - sub_cubes::kSlack);
   }
 
  private:
-  Vec3 r_;
-  double s_;
-  float far_[3][16];  // per axis and voxel slab: squared distance to the farther face (slabs looked into only)
-  float near_[3][4];  // per axis and coarse slab: squared distance to the slab (0 inside)
-  float coarse_far_[3][4];
-  std::uint64_t reached_;
+  const AxisView &x_, &y_, &z_;
 };
 
 // The corner of sub-cube `bit` of a cube at lo cut 4x4x4 with sides s.

@@ -60,7 +60,6 @@ class Placer {
 
   std::int64_t plain_phase(std::int64_t N, Random& rng);
   std::int64_t voxel_phase(std::int64_t i, std::int64_t N, Random& rng);
-  void build(FreeVoxels& voxels);
   void gather_near(std::size_t cell);
   bool near_overlaps(const Vec3& x, const Vec3& corner) const;
   void cover_around(FreeVoxels& voxels, const Vec3& x) const;
@@ -103,8 +102,8 @@ std::int64_t Placer::plain_phase(std::int64_t N, Random& rng) {
 // point is uniform over the free space: the process is still exact RSA.
 std::int64_t Placer::voxel_phase(std::int64_t i, std::int64_t N, Random& rng) {
   const double budget = kMaxTrialsPerSphere * double(N);
-  FreeVoxels voxels(grid_.cell_count(), grid_.width());
-  build(voxels);
+  FreeVoxels voxels(grid_.cells_per_side(), grid_.width());
+  voxels.build([&](auto&& f) { grid_.for_each_centre(f); });
   while (i < N) {
     if (trials_ > budget || voxels.empty()) break;
     const FreeVoxels::Voxel v = voxels.draw(rng);
@@ -121,15 +120,6 @@ std::int64_t Placer::voxel_phase(std::int64_t i, std::int64_t N, Random& rng) {
     cover_around(voxels, x);
   }
   return i;
-}
-
-// Lists the voxels of every cell, given the centres placed so far.
-void Placer::build(FreeVoxels& voxels) {
-  for (std::size_t c = 0; c < grid_.cell_count(); ++c) {
-    gather_near(c);
-    voxels.add_cell(c, near_);
-  }
-  voxels.start_sampling();
 }
 
 void Placer::gather_near(std::size_t cell) {
@@ -153,22 +143,12 @@ bool Placer::near_overlaps(const Vec3& x, const Vec3& corner) const {
   return false;
 }
 
-// Removes the voxels that the exclusion sphere of a new centre at x covers,
-// in the 27 cells around x's (the only ones it reaches).
+// Removes the voxels that the exclusion sphere of a new centre at x covers.
 void Placer::cover_around(FreeVoxels& voxels, const Vec3& x) const {
-  const int n = grid_.cells_per_side();
-  const int cell = grid_.cell_of(x);
-  const int cx = cell % n, cy = cell / n % n, cz = cell / (n * n);
-  std::size_t cells[27];
-  Vec3 rel[27];
-  std::size_t k = 0;
-  for (int oz = -1; oz <= 1; ++oz)
-    for (int oy = -1; oy <= 1; ++oy)
-      for (int ox = -1; ox <= 1; ++ox, ++k) {
-        cells[k] = std::size_t((grid_.wrap(cz + oz) * n + grid_.wrap(cy + oy)) * n + grid_.wrap(cx + ox));
-        rel[k] = relative(x, grid_.corner(cells[k]));
-      }
-  voxels.cover(cells, rel);
+  int cell[3];
+  Vec3 offset;
+  grid_.locate(x, cell, offset);
+  voxels.cover(cell[0], cell[1], cell[2], offset);
 }
 
 [[noreturn]] void saturated(double L, std::int64_t placed, std::int64_t N) {
