@@ -99,14 +99,13 @@ void FreeVoxels::mark_covered_coarse(int cx, int cy, int cz, const Vec3& offset)
 
 void FreeVoxels::mark_covered_voxels(int cx, int cy, int cz, const Vec3& offset) {
   const Views v = views_of(offset, true);
-  const float reach2 = voxel_reach2(side(kVoxelLevel));
   for (int k = 0; k < 27; ++k) {
     const int ox = k % 3, oy = k / 3 % 3, oz = k / 9;
     const SphereOverCell s(v.axis[0][ox], v.axis[1][oy], v.axis[2][oz]);
-    const std::uint64_t reached = s.reached_coarse(reach2);
-    if (reached == 0) continue;
+    const std::uint64_t covering = s.covering_coarse();
+    if (covering == 0) continue;
     const Cell& c = cells_[cell_index(cx + ox - 1, cy + oy - 1, cz + oz - 1)];
-    for (std::uint64_t m = reached & c.listed; m != 0; m &= m - 1) {
+    for (std::uint64_t m = covering & c.listed; m != 0; m &= m - 1) {
       const int b = std::countr_zero(m);
       masks_[c.first + std::uint32_t(rank_of(c.listed, b))] &= ~s.covered_voxels(b);
     }
@@ -188,12 +187,16 @@ void FreeVoxels::cover(int cx, int cy, int cz, const Vec3& offset) {
     cells[k] = cell_index(cx + k % 3 - 1, cy + k / 3 % 3 - 1, cz + k / 9 - 1);
     __builtin_prefetch(&cells_[cells[k]]);  // scattered in memory: fetch them all first
   }
-  const Views v = views_of(offset, true);
-  const float reach2 = voxel_reach2(side(kVoxelLevel));
+  const Views v = views_of(offset, true);  // meanwhile the cells arrive
+  for (const std::size_t c : cells) {
+    const std::uint64_t* m = masks_.data() + cells_[c].first;
+    __builtin_prefetch(m);
+    __builtin_prefetch(m + 8);
+  }
   for (int k = 0; k < 27; ++k) {
     const SphereOverCell s(v.axis[0][k % 3], v.axis[1][k / 3 % 3], v.axis[2][k / 9]);
     Cell& cell = cells_[cells[k]];
-    const std::uint64_t cubes = cell.listed != 0 ? s.reached_coarse(reach2) & cell.listed : 0;
+    const std::uint64_t cubes = cell.listed != 0 ? s.covering_coarse() & cell.listed : 0;
     if (cubes == 0 && cell.bricks < 0) continue;
     const Vec3 r{offset.x - (k % 3 - 1) * w_, offset.y - (k / 3 % 3 - 1) * w_, offset.z - (k / 9 - 1) * w_};
     const std::int64_t delta = cover_cell(cell, s, cubes, r);

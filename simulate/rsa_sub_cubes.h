@@ -129,19 +129,15 @@ struct AxisView {
   AxisView(double u, double voxel_side, bool voxels) {
     sub_cubes::slab_distances(u, 4 * voxel_side, 0, coarse_far, coarse_near);
     if (voxels)
-      for (int q = 0; q < 4; ++q) sub_cubes::slab_distances(u, voxel_side, 4 * q, voxel_far + 4 * q, nullptr);
+      for (int q = 0; q < 4; ++q) {
+        float* far = voxel_far + 4 * q;
+        sub_cubes::slab_distances(u, voxel_side, 4 * q, far, nullptr);
+        nearest_far[q] = std::min(std::min(far[0], far[1]), std::min(far[2], far[3]));
+      }
   }
   float coarse_far[4], coarse_near[4], voxel_far[16];
+  float nearest_far[4];  // per coarse slab, the least of its voxel slabs' far distances
 };
-
-// A voxel of side s is at least s/2 farther away along each axis at its
-// farthest corner than at its nearest point, so a sphere covers one only if
-// its centre is nearer than 1 - s/2 to it (and so to its coarse cube): the
-// squared reach for SphereOverCell.
-inline float voxel_reach2(double voxel_side) {
-  const float deep = std::max(0.0f, 1.0f - float(voxel_side) / 2);
-  return deep * deep + sub_cubes::kSlack;
-}
 
 // One sphere seen from one cell, through its three axis views.
 class SphereOverCell {
@@ -151,9 +147,11 @@ class SphereOverCell {
   std::uint64_t covered_coarse() const {
     return sub_cubes::below(x_.coarse_far, y_.coarse_far, z_.coarse_far, 1.0f - sub_cubes::kSlack);
   }
-  // Coarse cubes in which it may cover a voxel (reach2 from voxel_reach2).
-  std::uint64_t reached_coarse(float reach2) const {
-    return sub_cubes::below(x_.coarse_near, y_.coarse_near, z_.coarse_near, reach2);
+  // Coarse cubes in which it covers at least one voxel (the views with
+  // voxels): the far distance is a sum over axes, so its least value over a
+  // coarse cube's voxels is the sum of the least values along each axis.
+  std::uint64_t covering_coarse() const {
+    return sub_cubes::below(x_.nearest_far, y_.nearest_far, z_.nearest_far, 1.0f - sub_cubes::kSlack);
   }
   // The voxels of one coarse cube it covers whole (the views with voxels).
   std::uint64_t covered_voxels(int coarse) const {
