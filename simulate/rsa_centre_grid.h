@@ -54,6 +54,18 @@ class CentreGrid {
   template <class Exact>
   bool any_within_one(const Vec3& x, Exact&& exact) const;
 
+  // Asks the memory for the slots a gather around `cell` reads.
+  void prefetch_near(std::size_t cell) const {
+    const int cx = int(cell % std::size_t(n_)), cy = int(cell / std::size_t(n_) % std::size_t(n_)),
+              cz = int(cell / (std::size_t(n_) * std::size_t(n_)));
+    for (int oz = -1; oz <= 1; ++oz)
+      for (int oy = -1; oy <= 1; ++oy) {
+        const int row = index(0, wrap(cy + oy), wrap(cz + oz));
+        __builtin_prefetch(&first_[std::size_t(row + wrap(cx - 1))]);
+        __builtin_prefetch(&first_[std::size_t(row + wrap(cx + 1))]);
+      }
+  }
+
   // Calls f(cx, cy, cz, offset) for every centre, cell by cell: the
   // coordinates of its cell and its offset from the cell's corner (to single
   // precision).

@@ -146,6 +146,33 @@ std::size_t FreeVoxels::find_cell(std::uint64_t& r) const {
   return c;
 }
 
+FreeVoxels::Guess FreeVoxels::guess(const Random& rng) const {
+  Random copy = rng;
+  Guess g{copy.next() >> std::countl_zero(tree_.total()), 0, 0, false};  // uniform_below's first draw
+  if (g.r >= tree_.total()) return g;
+  g.page = tree_.find_page(g.r);
+  tree_.prefetch_page(g.page);
+  g.valid = true;
+  return g;
+}
+
+void FreeVoxels::narrow(Guess& g) const {
+  if (!g.valid) return;
+  g.group = tree_.find_group_in(g.page, g.r);
+  const Cell* c = &cells_[g.group * WeightTree::kGroup];
+  for (std::size_t k = 0; k < WeightTree::kGroup * sizeof(Cell); k += 64) __builtin_prefetch(reinterpret_cast<const char*>(c) + k);
+}
+
+std::int64_t FreeVoxels::land(Guess& g) const {
+  if (!g.valid) return -1;
+  std::size_t c = g.group * WeightTree::kGroup;
+  const std::size_t end = std::min(c + WeightTree::kGroup, cells_.size());
+  while (c < end && g.r >= cells_[c].weight) g.r -= cells_[c++].weight;
+  if (c == end) return -1;
+  __builtin_prefetch(masks_.data() + cells_[c].first);
+  return std::int64_t(c);
+}
+
 FreeVoxels::Voxel FreeVoxels::draw(Random& rng) const {
   std::uint64_t r = uniform_below(rng, tree_.total());
   const std::size_t c = find_cell(r);

@@ -55,6 +55,22 @@ class FreeVoxels {
   // A voxel with probability proportional to its volume (not empty()).
   Voxel draw(Random& rng) const;
 
+  // The next draw most likely takes the number a copy of the generator
+  // gives now and lands where that number lands now (one trial changes the
+  // weights little). Asking the memory for what it will read, one step at a
+  // time while the current trial is tested and applied, hides most of the
+  // draw's latency; a wrong guess costs only the fetches. Steps: guess()
+  // fetches the page's group sums, then narrow() the group's cells, then
+  // land() the cell's masks and returns the cell (or -1: no guess).
+  struct Guess {
+    std::uint64_t r;
+    std::size_t page, group;
+    bool valid;
+  };
+  Guess guess(const Random& rng) const;
+  void narrow(Guess& g) const;
+  std::int64_t land(Guess& g) const;
+
   // Removes the voxels that the exclusion sphere (radius 1) of a newly placed
   // centre covers whole, in the 27 cells around its own: cell (cx, cy, cz),
   // offset from the cell's corner.

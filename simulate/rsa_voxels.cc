@@ -110,14 +110,18 @@ std::int64_t Placer::voxel_phase(std::int64_t i, std::int64_t N, Random& rng) {
     const Vec3 corner = grid_.corner(v.cell);
     const Vec3 x = uniform_in({corner.x + v.lo.x, corner.y + v.lo.y, corner.z + v.lo.z}, v.side, rng);
     ++trials_;
+    FreeVoxels::Guess next = voxels.guess(rng);
     // One pass over the 27 cells serves the trial test and, if it fails, the refinement.
     gather_near(v.cell);
+    voxels.narrow(next);
     if (near_overlaps(x, corner)) {
       voxels.refine(v, near_);
-      continue;
+    } else {
+      place(i++, x);
+      cover_around(voxels, x);
     }
-    place(i++, x);
-    cover_around(voxels, x);
+    const std::int64_t guessed = voxels.land(next);
+    if (guessed >= 0) grid_.prefetch_near(std::size_t(guessed));
   }
   return i;
 }

@@ -26,7 +26,11 @@ class WeightTree {
   std::uint64_t total() const { return total_; }
   // The group holding the r-th unit of weight (r < total()); r becomes the
   // rest within the group, to be found among its cells by the caller.
-  std::size_t find_group(std::uint64_t& r) const;
+  std::size_t find_group(std::uint64_t& r) const { return find_group_in(find_page(r), r); }
+  // The same in two steps: the page, then the group within it.
+  std::size_t find_page(std::uint64_t& r) const;
+  std::size_t find_group_in(std::size_t page, std::uint64_t& r) const;
+  void prefetch_page(std::size_t page) const { __builtin_prefetch(&groups_[page * kGroup]); }
 
  private:
   std::vector<std::uint64_t> groups_;  // sum of each group's cells
@@ -58,13 +62,17 @@ inline void WeightTree::add(std::size_t cell, std::int64_t delta) {
   for (std::size_t k = g / kGroup + 1; k <= pages_.size(); k += k & (~k + 1)) pages_[k - 1] += d;
 }
 
-inline std::size_t WeightTree::find_group(std::uint64_t& r) const {
+inline std::size_t WeightTree::find_page(std::uint64_t& r) const {
   std::size_t page = 0;
   for (std::size_t step = std::bit_floor(pages_.size()); step > 0; step >>= 1)
     if (page + step <= pages_.size() && pages_[page + step - 1] <= r) {
       page += step;
       r -= pages_[page - 1];
     }
+  return page;
+}
+
+inline std::size_t WeightTree::find_group_in(std::size_t page, std::uint64_t& r) const {
   std::size_t g = page * kGroup;
   while (r >= groups_[g]) r -= groups_[g++];
   return g;
