@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <new>
 
 #include "simulate/rsa_free_point.h"
 #include "simulate/rsa_sub_cubes.h"
@@ -46,6 +47,18 @@ std::uint64_t uniform_below(Random& rng, std::uint64_t range) {
 
 }  // namespace
 
+void FreeVoxels::Masks::reserve(std::size_t capacity) {
+  std::free(data_);
+  data_ = static_cast<std::uint64_t*>(std::malloc(std::max<std::size_t>(capacity, 1) * sizeof(std::uint64_t)));
+  if (data_ == nullptr) throw std::bad_alloc();
+  size_ = 0;
+}
+
+void FreeVoxels::Masks::shrink_to_size() {
+  if (void* smaller = std::realloc(data_, std::max<std::size_t>(size_, 1) * sizeof(std::uint64_t)))
+    data_ = static_cast<std::uint64_t*>(smaller);
+}
+
 FreeVoxels::FreeVoxels(int cells_per_side, double cell_width)
     : n_(cells_per_side), w_(cell_width), cells_(std::size_t(n_) * std::size_t(n_) * std::size_t(n_)), tree_(cells_.size()) {
   // A whole cell weighs 8^finest; bricks refine two levels at a time from level 4.
@@ -81,8 +94,8 @@ std::uint64_t* FreeVoxels::coarse_mask(const Cell& cell, int coarse) {
 
 // Removes an emptied coarse cube from its cell's array (the cell's later ones move up).
 void FreeVoxels::drop_coarse(Cell& cell, int coarse) {
-  const auto at = masks_.begin() + std::ptrdiff_t(cell.first) + rank_of(cell.listed, coarse);
-  const auto end = masks_.begin() + std::ptrdiff_t(cell.first) + bit_count(cell.listed);
+  std::uint64_t* const at = masks_.data() + cell.first + rank_of(cell.listed, coarse);
+  std::uint64_t* const end = masks_.data() + cell.first + bit_count(cell.listed);
   std::copy(at + 1, end, at);
   cell.listed &= ~(std::uint64_t(1) << coarse);
 }
@@ -97,41 +110,83 @@ void FreeVoxels::mark_covered_coarse(int cx, int cy, int cz, const Vec3& offset)
   }
 }
 
+// After pass 1: the open coarse cubes are the others; each cell's index
+// into its slab's masks, and room for all of them in masks_.
+void FreeVoxels::open_slabs() {
+  const std::size_t per_slab = std::size_t(n_) * std::size_t(n_);
+  slab_masks_.assign(std::size_t(n_), {});
+  slab_size_.assign(std::size_t(n_), 0);
+  slab_closed_.assign(std::size_t(n_), false);
+  std::size_t total = 0;
+  for (std::size_t c = 0; c < cells_.size(); ++c) {
+    Cell& cell = cells_[c];
+    cell.listed = ~cell.listed;
+    std::size_t& size = slab_size_[c / per_slab];
+    cell.first = std::uint32_t(size);
+    size += std::size_t(bit_count(cell.listed));
+  }
+  for (const std::size_t size : slab_size_) total += size;
+  masks_.reserve(total);
+}
+
+// A slab's masks, every voxel listed until a sphere covers it.
+std::uint64_t* FreeVoxels::slab_masks(int slab) {
+  std::vector<std::uint64_t>& m = slab_masks_[std::size_t(slab)];
+  if (m.empty()) m.assign(slab_size_[std::size_t(slab)] + 1, ~std::uint64_t(0));
+  return m.data();
+}
+
 void FreeVoxels::mark_covered_voxels(int cx, int cy, int cz, const Vec3& offset) {
   const Views v = views_of(offset, true);
-  for (int k = 0; k < 27; ++k) {
-    const int ox = k % 3, oy = k / 3 % 3, oz = k / 9;
-    const SphereOverCell s(v.axis[0][ox], v.axis[1][oy], v.axis[2][oz]);
-    const std::uint64_t covering = s.covering_coarse();
-    if (covering == 0) continue;
-    const Cell& c = cells_[cell_index(cx + ox - 1, cy + oy - 1, cz + oz - 1)];
-    for (std::uint64_t m = covering & c.listed; m != 0; m &= m - 1) {
-      const int b = std::countr_zero(m);
-      masks_[c.first + std::uint32_t(rank_of(c.listed, b))] &= ~s.covered_voxels(b);
-    }
+  for (int oz = 0; oz < 3; ++oz) {
+    const int slab = (cz + oz - 1 + n_) % n_;
+    std::uint64_t* const masks = slab_masks(slab);
+    for (int oy = 0; oy < 3; ++oy)
+      for (int ox = 0; ox < 3; ++ox) {
+        const SphereOverCell s(v.axis[0][ox], v.axis[1][oy], v.axis[2][oz]);
+        const std::uint64_t covering = s.covering_coarse();
+        if (covering == 0) continue;
+        const Cell& c = cells_[cell_index(cx + ox - 1, cy + oy - 1, cz + oz - 1)];
+        for (std::uint64_t m = covering & c.listed; m != 0; m &= m - 1) {
+          const int b = std::countr_zero(m);
+          masks[c.first + std::uint32_t(rank_of(c.listed, b))] &= ~s.covered_voxels(b);
+        }
+      }
   }
 }
 
-// Drops the emptied masks, moving the others up, and sets the weights.
-void FreeVoxels::finish_build() {
-  std::size_t to = 0;
-  for (Cell& c : cells_) {
-    const std::uint64_t open = c.listed;
-    const std::size_t from = c.first;
-    c.listed = 0;
-    c.first = std::uint32_t(to);
-    c.weight = 0;
+// The centres of slabs [0, done) are done: slab s of cells, reached by the
+// centres of slabs s - 1, s and s + 1, is complete once s + 1 < done. The
+// box is periodic, so slab 0 also waits for the last slab of centres, and
+// the last slab of cells for the first: those close at the end (done > n).
+void FreeVoxels::close_slabs(int done) {
+  for (int slab = 0; slab < n_; ++slab)
+    if (!slab_closed_[std::size_t(slab)] && (done > n_ || (slab >= 1 && slab + 1 < done))) close_slab(slab);
+  if (done > n_) masks_.shrink_to_size();
+}
+
+// Moves a complete slab's masks into masks_, less the emptied ones, and sets its cells' weights.
+void FreeVoxels::close_slab(int slab) {
+  const std::size_t per_slab = std::size_t(n_) * std::size_t(n_);
+  const std::uint64_t* const from = slab_masks(slab);
+  for (std::size_t c = std::size_t(slab) * per_slab; c < std::size_t(slab + 1) * per_slab; ++c) {
+    Cell& cell = cells_[c];
+    const std::uint64_t open = cell.listed;
+    const std::size_t first = cell.first;
+    cell.listed = 0;
+    cell.first = std::uint32_t(masks_.size());
+    cell.weight = 0;
     std::size_t k = 0;
     for (std::uint64_t m = open; m != 0; m &= m - 1, ++k) {
-      const std::uint64_t mask = masks_[from + k];
+      const std::uint64_t mask = from[first + k];
       if (mask == 0) continue;
-      masks_[to++] = mask;
-      c.listed |= std::uint64_t(1) << std::countr_zero(m);
-      c.weight += weight_of(mask, kVoxelLevel);
+      masks_.push_back(mask);
+      cell.listed |= std::uint64_t(1) << std::countr_zero(m);
+      cell.weight += weight_of(mask, kVoxelLevel);
     }
   }
-  masks_.resize(to);
-  tree_.build(cells_.size(), [&](std::size_t c) { return cells_[c].weight; });
+  std::vector<std::uint64_t>().swap(slab_masks_[std::size_t(slab)]);
+  slab_closed_[std::size_t(slab)] = true;
 }
 
 void FreeVoxels::add_weight(std::size_t cell, std::int64_t delta) {
@@ -313,7 +368,7 @@ void FreeVoxels::drop_brick(Cell& cell, std::int32_t id) {
 }
 
 std::size_t FreeVoxels::bytes() const {
-  return cells_.capacity() * sizeof(Cell) + masks_.capacity() * sizeof(std::uint64_t) +
+  return cells_.capacity() * sizeof(Cell) + masks_.size() * sizeof(std::uint64_t) +
          bricks_.capacity() * sizeof(Brick) + unused_bricks_.capacity() * sizeof(std::int32_t) +
          cells_.size() / WeightTree::kGroup * sizeof(std::uint64_t);
 }

@@ -18,6 +18,7 @@
 #pragma once
 #include <bit>
 #include <cstdint>
+#include <cstdlib>
 #include <span>
 #include <vector>
 
@@ -106,8 +107,11 @@ class FreeVoxels {
   Views views_of(const Vec3& offset, bool voxels) const;
   std::size_t cell_index(int x, int y, int z) const;
   void mark_covered_coarse(int cx, int cy, int cz, const Vec3& offset);
+  void open_slabs();
+  std::uint64_t* slab_masks(int slab);
   void mark_covered_voxels(int cx, int cy, int cz, const Vec3& offset);
-  void finish_build();
+  void close_slabs(int done);
+  void close_slab(int slab);
   double side(int level) const;
   int shift(int level) const { return 3 * (finest_ - level); }
   std::uint64_t weight_of(std::uint64_t mask, int level) const;
@@ -125,7 +129,33 @@ class FreeVoxels {
   double w_;
   int finest_;  // the finest level: the weights of all cells sum below 2^62
   std::vector<Cell> cells_;
-  std::vector<std::uint64_t> masks_;  // the coarse cubes' masks, by cell then cube
+  // The coarse cubes' masks, by cell then cube, in one block that shrinks in
+  // place: the build fills it for every coarse cube no sphere covers whole,
+  // then drops the emptied ones (a quarter), and realloc gives the tail back.
+  class Masks {
+   public:
+    Masks() = default;
+    Masks(const Masks&) = delete;
+    Masks& operator=(const Masks&) = delete;
+    ~Masks() { std::free(data_); }
+    void reserve(std::size_t capacity);  // pages untouched until written
+    void push_back(std::uint64_t m) { data_[size_++] = m; }
+    void shrink_to_size();
+    std::uint64_t* data() { return data_; }
+    const std::uint64_t* data() const { return data_; }
+    std::uint64_t& operator[](std::size_t i) { return data_[i]; }
+    std::size_t size() const { return size_; }
+
+   private:
+    std::uint64_t* data_ = nullptr;
+    std::size_t size_ = 0;
+  };
+  Masks masks_;
+  // During the build: per slab of cells (z), the masks of its open coarse
+  // cubes (Cell::first indexing into them), and which slabs are complete.
+  std::vector<std::vector<std::uint64_t>> slab_masks_;
+  std::vector<std::size_t> slab_size_;
+  std::vector<bool> slab_closed_;
   std::vector<Brick> bricks_;
   std::vector<std::int32_t> unused_bricks_;
   WeightTree tree_;
@@ -136,17 +166,19 @@ template <class ForEachCentre>
 void FreeVoxels::build(ForEachCentre&& centres) {
   // Pass 1: the coarse cubes one sphere covers whole (kept in Cell::listed).
   centres([&](int cx, int cy, int cz, const Vec3& offset) { mark_covered_coarse(cx, cy, cz, offset); });
-  // Every voxel of the other coarse cubes, in one mask per cube.
-  std::size_t total = 0;
-  for (Cell& c : cells_) {
-    c.listed = ~c.listed;
-    c.first = std::uint32_t(total);
-    total += std::size_t(std::popcount(c.listed));
-  }
-  masks_.assign(total, ~std::uint64_t(0));
-  // Pass 2: less the voxels one sphere covers whole.
-  centres([&](int cx, int cy, int cz, const Vec3& offset) { mark_covered_voxels(cx, cy, cz, offset); });
-  finish_build();
+  open_slabs();
+  // Pass 2: every voxel of the other coarse cubes, less those one sphere
+  // covers whole. The centres come slab by slab (z); a slab of cells is
+  // complete once the centres of the slabs on both sides are done, and is
+  // then moved into masks_ without its emptied masks, so that only a few
+  // slabs are ever held with all their masks.
+  int done = 0;  // the centres of slabs [0, done) are done
+  centres([&](int cx, int cy, int cz, const Vec3& offset) {
+    if (cz > done) close_slabs(done = cz);
+    mark_covered_voxels(cx, cy, cz, offset);
+  });
+  close_slabs(n_ + 2);
+  tree_.build(cells_.size(), [&](std::size_t c) { return cells_[c].weight; });
 }
 
 }  // namespace coolgas
