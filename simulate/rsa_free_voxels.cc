@@ -60,7 +60,11 @@ void FreeVoxels::Masks::shrink_to_size() {
 }
 
 FreeVoxels::FreeVoxels(int cells_per_side, double cell_width)
-    : n_(cells_per_side), w_(cell_width), cells_(std::size_t(n_) * std::size_t(n_) * std::size_t(n_)), tree_(cells_.size()) {
+    : n_(cells_per_side),
+      w_(cell_width),
+      cells_(std::size_t(n_) * std::size_t(n_) * std::size_t(n_)),
+      brick_cells_(cells_.size() / 64 + 1),
+      tree_(cells_.size()) {
   // A whole cell weighs 8^finest; bricks refine two levels at a time from level 4.
   finest_ = std::min(16, ((62 - int(std::bit_width(cells_.size()))) / 3) & ~1);
 }
@@ -264,31 +268,42 @@ FreeVoxels::Voxel FreeVoxels::draw(Random& rng) const {
 }
 
 void FreeVoxels::cover(int cx, int cy, int cz, const Vec3& offset) {
+  // The cells are scattered in memory: first, from the views alone, which
+  // of the 27 the sphere covers a voxel of (or which hold bricks), then
+  // their records and masks all asked for at once, then the work.
+  const Views v = views_of(offset, true);
+  int active[27];
   std::size_t cells[27];
+  std::uint64_t covering[27];
+  int n = 0;
   for (int k = 0; k < 27; ++k) {
-    cells[k] = cell_index(cx + k % 3 - 1, cy + k / 3 % 3 - 1, cz + k / 9 - 1);
-    __builtin_prefetch(&cells_[cells[k]]);  // scattered in memory: fetch them all first
+    const SphereOverCell s(v.axis[0][k % 3], v.axis[1][k / 3 % 3], v.axis[2][k / 9]);
+    const std::size_t c = cell_index(cx + k % 3 - 1, cy + k / 3 % 3 - 1, cz + k / 9 - 1);
+    const std::uint64_t cubes = s.covering_coarse();
+    if (cubes == 0 && !(brick_cells_[c >> 6] >> (c & 63) & 1)) continue;
+    active[n] = k;
+    cells[n] = c;
+    covering[n++] = cubes;
+    __builtin_prefetch(&cells_[c]);
   }
-  const Views v = views_of(offset, true);  // meanwhile the cells arrive
-  for (const std::size_t c : cells) {
-    const std::uint64_t* m = masks_.data() + cells_[c].first;
+  for (int j = 0; j < n; ++j) {
+    const std::uint64_t* m = masks_.data() + cells_[cells[j]].first;
     __builtin_prefetch(m);
     __builtin_prefetch(m + 8);
   }
-  for (int k = 0; k < 27; ++k) {
+  for (int j = 0; j < n; ++j) {
+    const int k = active[j];
     const SphereOverCell s(v.axis[0][k % 3], v.axis[1][k / 3 % 3], v.axis[2][k / 9]);
-    Cell& cell = cells_[cells[k]];
-    const std::uint64_t cubes = cell.listed != 0 ? s.covering_coarse() & cell.listed : 0;
-    if (cubes == 0 && cell.bricks < 0) continue;
+    Cell& cell = cells_[cells[j]];
     const Vec3 r{offset.x - (k % 3 - 1) * w_, offset.y - (k / 3 % 3 - 1) * w_, offset.z - (k / 9 - 1) * w_};
-    const std::int64_t delta = cover_cell(cell, s, cubes, r);
-    if (delta != 0) add_weight(cells[k], delta);
+    const std::int64_t delta = cover_cell(cells[j], cell, s, covering[j] & cell.listed, r);
+    if (delta != 0) add_weight(cells[j], delta);
   }
 }
 
 // Removes one cell's voxels covered by the sphere seen as s, at r from the
 // cell's corner, in the given coarse cubes and the bricks; returns the weight change.
-std::int64_t FreeVoxels::cover_cell(Cell& cell, const SphereOverCell& s, std::uint64_t cubes, const Vec3& r) {
+std::int64_t FreeVoxels::cover_cell(std::size_t c, Cell& cell, const SphereOverCell& s, std::uint64_t cubes, const Vec3& r) {
   std::int64_t delta = 0;
   for (std::uint64_t hit = cubes; hit != 0; hit &= hit - 1) {
     const int b = std::countr_zero(hit);
@@ -307,7 +322,7 @@ std::int64_t FreeVoxels::cover_cell(Cell& cell, const SphereOverCell& s, std::ui
       const std::uint64_t left = b.mask & ~covered_sub_cubes(minus(r, lo), side(level));
       delta -= std::int64_t(weight_of(b.mask ^ left, level));
       b.mask = left;
-      if (left == 0) drop_brick(cell, id);
+      if (left == 0) drop_brick(c, cell, id);
     }
     id = next;
   }
@@ -338,12 +353,13 @@ void FreeVoxels::refine(const Voxel& v, std::span<const Vec3> near) {
     std::uint64_t* m = coarse_mask(cell, v.coarse);
     if ((*m &= ~bit) == 0) drop_coarse(cell, v.coarse);
   } else if ((bricks_[std::size_t(v.brick)].mask &= ~bit) == 0) {
-    drop_brick(cell, v.brick);
+    drop_brick(v.cell, cell, v.brick);
   }
   if (sub != 0) {
     const auto coord = [&](double u) { return std::uint64_t(std::llround(u / v.side)); };
     const std::uint64_t key = std::uint64_t(v.level + 2) << 48 | coord(v.lo.x) | coord(v.lo.y) << 16 | coord(v.lo.z) << 32;
     cell.bricks = new_brick({sub, key, cell.bricks});
+    brick_cells_[v.cell >> 6] |= std::uint64_t(1) << (v.cell & 63);
     delta += std::int64_t(weight_of(sub, v.level + 2));
   }
   add_weight(v.cell, delta);
@@ -360,11 +376,12 @@ std::int32_t FreeVoxels::new_brick(const Brick& b) {
   return id;
 }
 
-void FreeVoxels::drop_brick(Cell& cell, std::int32_t id) {
+void FreeVoxels::drop_brick(std::size_t c, Cell& cell, std::int32_t id) {
   std::int32_t* link = &cell.bricks;
   while (*link != id) link = &bricks_[std::size_t(*link)].next;
   *link = bricks_[std::size_t(id)].next;
   unused_bricks_.push_back(id);
+  if (cell.bricks < 0) brick_cells_[c >> 6] &= ~(std::uint64_t(1) << (c & 63));
 }
 
 std::size_t FreeVoxels::bytes() const {

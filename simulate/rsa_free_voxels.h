@@ -118,10 +118,10 @@ class FreeVoxels {
   Vec3 brick_corner(std::uint64_t key) const;
   std::uint64_t* coarse_mask(const Cell& cell, int coarse);
   void drop_coarse(Cell& cell, int coarse);
-  std::int64_t cover_cell(Cell& cell, const SphereOverCell& s, std::uint64_t cubes, const Vec3& r);
+  std::int64_t cover_cell(std::size_t c, Cell& cell, const SphereOverCell& s, std::uint64_t cubes, const Vec3& r);
 
   std::int32_t new_brick(const Brick& b);
-  void drop_brick(Cell& cell, std::int32_t id);
+  void drop_brick(std::size_t c, Cell& cell, std::int32_t id);
   void add_weight(std::size_t cell, std::int64_t delta);
   std::size_t find_cell(std::uint64_t& r) const;
 
@@ -129,6 +129,7 @@ class FreeVoxels {
   double w_;
   int finest_;  // the finest level: the weights of all cells sum below 2^62
   std::vector<Cell> cells_;
+  std::vector<std::uint64_t> brick_cells_;  // a bit per cell: it has bricks
   // The coarse cubes' masks, by cell then cube, in one block that shrinks in
   // place: the build fills it for every coarse cube no sphere covers whole,
   // then drops the emptied ones (a quarter), and realloc gives the tail back.
