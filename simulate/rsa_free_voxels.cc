@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <new>
+#include <stdexcept>
 
 #include "simulate/rsa_free_point.h"
 #include "simulate/rsa_sub_cubes.h"
@@ -130,10 +131,12 @@ void FreeVoxels::open_slabs() {
     size += std::size_t(bit_count(cell.listed));
   }
   for (const std::size_t size : slab_size_) total += size;
+  if (total > UINT32_MAX) throw std::length_error("random sequential addition: too many cells for the voxel masks");
   masks_.reserve(total);
 }
 
-// A slab's masks, every voxel listed until a sphere covers it.
+// A slab's masks, every voxel listed until a sphere covers it (set up when
+// first asked for, one mask more so that a slab without any is set up too).
 std::uint64_t* FreeVoxels::slab_masks(int slab) {
   std::vector<std::uint64_t>& m = slab_masks_[std::size_t(slab)];
   if (m.empty()) m.assign(slab_size_[std::size_t(slab)] + 1, ~std::uint64_t(0));
@@ -206,6 +209,7 @@ std::size_t FreeVoxels::find_cell(std::uint64_t& r) const {
 }
 
 FreeVoxels::Guess FreeVoxels::guess(const Random& rng) const {
+  if (empty()) return {0, 0, 0, false};
   Random copy = rng;
   Guess g{copy.next() >> std::countl_zero(tree_.total()), 0, 0, false};  // uniform_below's first draw
   if (g.r >= tree_.total()) return g;
@@ -329,10 +333,9 @@ std::int64_t FreeVoxels::cover_cell(std::size_t c, Cell& cell, const SphereOverC
   return delta;
 }
 
-void FreeVoxels::refine(const Voxel& v, std::span<const Vec3> near) {
+bool FreeVoxels::refine(const Voxel& v, std::span<const Vec3> near) {
   const bool deepest = v.level + 2 > finest_;
   std::uint64_t sub = ~std::uint64_t(0);  // its sub-voxels that no single sphere covers
-  reaching_.clear();
   for (const Vec3& r : near) {
     if (!reaches_cube(r, v.lo, v.side)) continue;
     if (covers_cube(r, v.lo, v.side)) {
@@ -340,12 +343,21 @@ void FreeVoxels::refine(const Voxel& v, std::span<const Vec3> near) {
       break;
     }
     if (!deepest) sub &= ~covered_sub_cubes(minus(r, v.lo), v.side / 4);
-    reaching_.push_back(r);
   }
-  // The finest voxels cannot be refined: the exact test decides whether
-  // any free point is left in them.
-  if (sub != 0 && deepest && holds_free_point(v.lo, v.side, reaching_)) return;
-  if (deepest) sub = 0;
+  if (sub != 0 && deepest) return false;
+  remove(v, sub);
+  return true;
+}
+
+void FreeVoxels::settle(const Voxel& v, std::span<const Vec3> exact_near) {
+  reaching_.clear();
+  for (const Vec3& r : exact_near)
+    if (reaches_cube(r, v.lo, v.side)) reaching_.push_back(r);
+  if (!holds_free_point(v.lo, v.side, reaching_)) remove(v, 0);
+}
+
+// Takes v out, and puts in its place the sub-voxels in `sub` (a brick two levels down).
+void FreeVoxels::remove(const Voxel& v, std::uint64_t sub) {
   Cell& cell = cells_[v.cell];
   std::int64_t delta = -std::int64_t(std::uint64_t(1) << shift(v.level));
   const std::uint64_t bit = std::uint64_t(1) << v.bit;
@@ -382,12 +394,6 @@ void FreeVoxels::drop_brick(std::size_t c, Cell& cell, std::int32_t id) {
   *link = bricks_[std::size_t(id)].next;
   unused_bricks_.push_back(id);
   if (cell.bricks < 0) brick_cells_[c >> 6] &= ~(std::uint64_t(1) << (c & 63));
-}
-
-std::size_t FreeVoxels::bytes() const {
-  return cells_.capacity() * sizeof(Cell) + masks_.size() * sizeof(std::uint64_t) +
-         bricks_.capacity() * sizeof(Brick) + unused_bricks_.capacity() * sizeof(std::int32_t) +
-         cells_.size() / WeightTree::kGroup * sizeof(std::uint64_t);
 }
 
 }  // namespace coolgas

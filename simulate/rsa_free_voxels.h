@@ -77,13 +77,15 @@ class FreeVoxels {
   // offset from the cell's corner.
   void cover(int cx, int cy, int cz, const Vec3& offset);
   // After a failed trial in v: removes v if one of the centres `near` (all
-  // those within reach, relative to v's cell corner) covers it, else
-  // replaces it by its sub-voxels two levels down that none of them covers.
-  // At the finest level v stays if it still holds a free point (exact test).
-  void refine(const Voxel& v, std::span<const Vec3> near);
-
-  // Bytes held, for the benchmark's memory figure.
-  std::size_t bytes() const;
+  // those within reach, relative to v's cell corner, to ~1e-7) covers it,
+  // else replaces it by its sub-voxels two levels down that none of them
+  // covers. A voxel of the finest level cannot be refined: then refine()
+  // returns false and the caller settles it with the exact positions.
+  bool refine(const Voxel& v, std::span<const Vec3> near);
+  // A finest voxel left by refine(): dropped unless it still holds a free
+  // point, by the exact test (rsa_free_point.h) on the exact positions of
+  // the centres near it.
+  void settle(const Voxel& v, std::span<const Vec3> exact_near);
 
  private:
   static constexpr int kCoarseLevel = 2, kVoxelLevel = 4;
@@ -130,9 +132,9 @@ class FreeVoxels {
   int finest_;  // the finest level: the weights of all cells sum below 2^62
   std::vector<Cell> cells_;
   std::vector<std::uint64_t> brick_cells_;  // a bit per cell: it has bricks
-  // The coarse cubes' masks, by cell then cube, in one block that shrinks in
-  // place: the build fills it for every coarse cube no sphere covers whole,
-  // then drops the emptied ones (a quarter), and realloc gives the tail back.
+  // The coarse cubes' masks, by cell then cube, in one block: reserved for
+  // every coarse cube no sphere covers whole (its pages untouched), filled
+  // slab by slab with those that kept a voxel (three quarters), then shrunk.
   class Masks {
    public:
     Masks() = default;
@@ -161,6 +163,7 @@ class FreeVoxels {
   std::vector<std::int32_t> unused_bricks_;
   WeightTree tree_;
   std::vector<Vec3> reaching_;  // scratch
+  void remove(const Voxel& v, std::uint64_t sub);
 };
 
 template <class ForEachCentre>

@@ -62,6 +62,7 @@ class Placer {
   std::int64_t voxel_phase(std::int64_t i, std::int64_t N, Random& rng);
   void gather_near(std::size_t cell);
   bool near_overlaps(const Vec3& x, const Vec3& corner) const;
+  const std::vector<Vec3>& exact_near(const Vec3& corner);
   void cover_around(FreeVoxels& voxels, const Vec3& x) const;
 
   Particles& p_;
@@ -70,6 +71,7 @@ class Placer {
   double trials_ = 0;
   std::vector<Vec3> near_;  // scratch: the centres around one cell, relative to its corner,
   std::vector<std::int32_t> near_ids_;  // and their ids
+  std::vector<Vec3> exact_;  // scratch: their exact positions relative to the corner
 };
 
 std::int64_t Placer::fill(std::int64_t N, Random& rng) {
@@ -115,7 +117,7 @@ std::int64_t Placer::voxel_phase(std::int64_t i, std::int64_t N, Random& rng) {
     gather_near(v.cell);
     voxels.narrow(next);
     if (near_overlaps(x, corner)) {
-      voxels.refine(v, near_);
+      if (!voxels.refine(v, near_)) voxels.settle(v, exact_near(corner));
     } else {
       place(i++, x);
       cover_around(voxels, x);
@@ -145,6 +147,13 @@ bool Placer::near_overlaps(const Vec3& x, const Vec3& corner) const {
     if (d2 <= 1.0 + kUnsure && overlap(p_.r[std::size_t(near_ids_[j])], x)) return true;
   }
   return false;
+}
+
+// The gathered centres' exact positions, relative to the corner of their cell.
+const std::vector<Vec3>& Placer::exact_near(const Vec3& corner) {
+  exact_.clear();
+  for (const std::int32_t id : near_ids_) exact_.push_back(relative(p_.r[std::size_t(id)], corner));
+  return exact_;
 }
 
 // Removes the voxels that the exclusion sphere of a new centre at x covers.
