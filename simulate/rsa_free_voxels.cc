@@ -97,12 +97,13 @@ std::uint64_t* FreeVoxels::coarse_mask(const Cell& cell, int coarse) {
   return &masks_[cell.first + std::uint32_t(rank_of(cell.listed, coarse))];
 }
 
-// Removes an emptied coarse cube from its cell's array (the cell's later ones move up).
-void FreeVoxels::drop_coarse(Cell& cell, int coarse) {
-  std::uint64_t* const at = masks_.data() + cell.first + rank_of(cell.listed, coarse);
-  std::uint64_t* const end = masks_.data() + cell.first + bit_count(cell.listed);
-  std::copy(at + 1, end, at);
-  cell.listed &= ~(std::uint64_t(1) << coarse);
+// Removes emptied coarse cubes from their cell's array, the others moving up.
+void FreeVoxels::drop_coarse(Cell& cell, std::uint64_t emptied) {
+  std::uint64_t* const m = masks_.data() + cell.first;
+  int to = 0, from = 0;
+  for (std::uint64_t listed = cell.listed; listed != 0; listed &= listed - 1, ++from)
+    if (!(emptied >> std::countr_zero(listed) & 1)) m[to++] = m[from];
+  cell.listed &= ~emptied;
 }
 
 void FreeVoxels::mark_covered_coarse(int cx, int cy, int cz, const Vec3& offset) {
@@ -309,14 +310,16 @@ void FreeVoxels::cover(int cx, int cy, int cz, const Vec3& offset) {
 // cell's corner, in the given coarse cubes and the bricks; returns the weight change.
 std::int64_t FreeVoxels::cover_cell(std::size_t c, Cell& cell, const SphereOverCell& s, std::uint64_t cubes, const Vec3& r) {
   std::int64_t delta = 0;
+  std::uint64_t emptied = 0;
   for (std::uint64_t hit = cubes; hit != 0; hit &= hit - 1) {
     const int b = std::countr_zero(hit);
     std::uint64_t* m = coarse_mask(cell, b);
     const std::uint64_t left = *m & ~s.covered_voxels(b);
     delta -= std::int64_t(weight_of(*m ^ left, kVoxelLevel));
     *m = left;
-    if (left == 0) drop_coarse(cell, b);
+    if (left == 0) emptied |= std::uint64_t(1) << b;
   }
+  if (emptied != 0) drop_coarse(cell, emptied);
   for (std::int32_t id = cell.bricks; id >= 0;) {
     Brick& b = bricks_[std::size_t(id)];
     const std::int32_t next = b.next;
@@ -363,7 +366,7 @@ void FreeVoxels::remove(const Voxel& v, std::uint64_t sub) {
   const std::uint64_t bit = std::uint64_t(1) << v.bit;
   if (v.brick < 0) {
     std::uint64_t* m = coarse_mask(cell, v.coarse);
-    if ((*m &= ~bit) == 0) drop_coarse(cell, v.coarse);
+    if ((*m &= ~bit) == 0) drop_coarse(cell, std::uint64_t(1) << v.coarse);
   } else if ((bricks_[std::size_t(v.brick)].mask &= ~bit) == 0) {
     drop_brick(v.cell, cell, v.brick);
   }

@@ -119,7 +119,7 @@ class FreeVoxels {
   std::uint64_t weight_of(std::uint64_t mask, int level) const;
   Vec3 brick_corner(std::uint64_t key) const;
   std::uint64_t* coarse_mask(const Cell& cell, int coarse);
-  void drop_coarse(Cell& cell, int coarse);
+  void drop_coarse(Cell& cell, std::uint64_t emptied);
   std::int64_t cover_cell(std::size_t c, Cell& cell, const SphereOverCell& s, std::uint64_t cubes, const Vec3& r);
 
   std::int32_t new_brick(const Brick& b);
