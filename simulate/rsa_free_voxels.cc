@@ -111,6 +111,7 @@ void FreeVoxels::mark_covered_coarse(int cx, int cy, int cz, const Vec3& offset)
   for (int k = 0; k < 27; ++k) {
     const int ox = k % 3, oy = k / 3 % 3, oz = k / 9;
     const SphereOverCell s(v.axis[0][ox], v.axis[1][oy], v.axis[2][oz]);
+    if (!s.may_cover_coarse()) continue;
     const std::uint64_t covered = s.covered_coarse();
     if (covered != 0) cells_[cell_index(cx + ox - 1, cy + oy - 1, cz + oz - 1)].listed |= covered;
   }
@@ -152,6 +153,7 @@ void FreeVoxels::mark_covered_voxels(int cx, int cy, int cz, const Vec3& offset)
     for (int oy = 0; oy < 3; ++oy)
       for (int ox = 0; ox < 3; ++ox) {
         const SphereOverCell s(v.axis[0][ox], v.axis[1][oy], v.axis[2][oz]);
+        if (!s.may_cover_voxel()) continue;
         const std::uint64_t covering = s.covering_coarse();
         if (covering == 0) continue;
         const Cell& c = cells_[cell_index(cx + ox - 1, cy + oy - 1, cz + oz - 1)];
@@ -284,7 +286,7 @@ void FreeVoxels::cover(int cx, int cy, int cz, const Vec3& offset) {
   for (int k = 0; k < 27; ++k) {
     const SphereOverCell s(v.axis[0][k % 3], v.axis[1][k / 3 % 3], v.axis[2][k / 9]);
     const std::size_t c = cell_index(cx + k % 3 - 1, cy + k / 3 % 3 - 1, cz + k / 9 - 1);
-    const std::uint64_t cubes = s.covering_coarse();
+    const std::uint64_t cubes = s.may_cover_voxel() ? s.covering_coarse() : 0;
     if (cubes == 0 && !(brick_cells_[c >> 6] >> (c & 63) & 1)) continue;
     active[n] = k;
     cells[n] = c;

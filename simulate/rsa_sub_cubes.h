@@ -128,21 +128,33 @@ struct AxisView {
   AxisView() = default;
   AxisView(double u, double voxel_side, bool voxels) {
     sub_cubes::slab_distances(u, 4 * voxel_side, 0, coarse_far, coarse_near);
-    if (voxels)
-      for (int q = 0; q < 4; ++q) {
-        float* far = voxel_far + 4 * q;
-        sub_cubes::slab_distances(u, voxel_side, 4 * q, far, nullptr);
-        nearest_far[q] = std::min(std::min(far[0], far[1]), std::min(far[2], far[3]));
-      }
+    least_coarse_far = std::min(std::min(coarse_far[0], coarse_far[1]), std::min(coarse_far[2], coarse_far[3]));
+    if (!voxels) return;
+    for (int q = 0; q < 4; ++q) {
+      float* far = voxel_far + 4 * q;
+      sub_cubes::slab_distances(u, voxel_side, 4 * q, far, nullptr);
+      nearest_far[q] = std::min(std::min(far[0], far[1]), std::min(far[2], far[3]));
+    }
+    least_voxel_far = std::min(std::min(nearest_far[0], nearest_far[1]), std::min(nearest_far[2], nearest_far[3]));
   }
   float coarse_far[4], coarse_near[4], voxel_far[16];
   float nearest_far[4];  // per coarse slab, the least of its voxel slabs' far distances
+  // The least far distance of any coarse slab, and of any voxel slab: a cell
+  // where the three axes' sum is not below the limit has nothing covered.
+  float least_coarse_far, least_voxel_far;
 };
 
 // One sphere seen from one cell, through its three axis views.
 class SphereOverCell {
  public:
   SphereOverCell(const AxisView& x, const AxisView& y, const AxisView& z) : x_(x), y_(y), z_(z) {}
+  // Whether it may cover a coarse cube, or a voxel, of the cell at all.
+  bool may_cover_coarse() const {
+    return x_.least_coarse_far + y_.least_coarse_far + z_.least_coarse_far < 1.0f - sub_cubes::kSlack;
+  }
+  bool may_cover_voxel() const {
+    return x_.least_voxel_far + y_.least_voxel_far + z_.least_voxel_far < 1.0f - sub_cubes::kSlack;
+  }
   // Coarse cubes it covers whole.
   std::uint64_t covered_coarse() const {
     return sub_cubes::below(x_.coarse_far, y_.coarse_far, z_.coarse_far, 1.0f - sub_cubes::kSlack);
