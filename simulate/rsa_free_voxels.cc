@@ -68,6 +68,7 @@ FreeVoxels::FreeVoxels(int cells_per_side, double cell_width)
       tree_(cells_.size()) {
   // A whole cell weighs 8^finest; bricks refine two levels at a time from level 4.
   finest_ = std::min(16, ((62 - int(std::bit_width(cells_.size()))) / 3) & ~1);
+  for (int level = 0; level < int(std::size(sides_)); ++level) sides_[level] = std::ldexp(w_, -level);
 }
 
 std::size_t FreeVoxels::cell_index(int x, int y, int z) const {
@@ -82,7 +83,6 @@ FreeVoxels::Views FreeVoxels::views_of(const Vec3& offset, bool voxels) const {
   return v;
 }
 
-double FreeVoxels::side(int level) const { return std::ldexp(w_, -level); }
 
 std::uint64_t FreeVoxels::weight_of(std::uint64_t mask, int level) const {
   return std::uint64_t(bit_count(mask)) << shift(level);

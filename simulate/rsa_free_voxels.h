@@ -114,7 +114,7 @@ class FreeVoxels {
   void mark_covered_voxels(int cx, int cy, int cz, const Vec3& offset);
   void close_slabs(int done);
   void close_slab(int slab);
-  double side(int level) const;
+  double side(int level) const { return sides_[level]; }
   int shift(int level) const { return 3 * (finest_ - level); }
   std::uint64_t weight_of(std::uint64_t mask, int level) const;
   Vec3 brick_corner(std::uint64_t key) const;
@@ -130,6 +130,7 @@ class FreeVoxels {
   int n_;
   double w_;
   int finest_;  // the finest level: the weights of all cells sum below 2^62
+  double sides_[17];  // w / 2^level
   std::vector<Cell> cells_;
   std::vector<std::uint64_t> brick_cells_;  // a bit per cell: it has bricks
   // The coarse cubes' masks, by cell then cube, in one block: reserved for

@@ -126,23 +126,61 @@ inline std::uint64_t covered_sub_cubes(const Vec3& r, double s) {
 // computed once per centre and cell column, shared by the cells of the column.
 struct AxisView {
   AxisView() = default;
-  AxisView(double u, double voxel_side, bool voxels) {
-    sub_cubes::slab_distances(u, 4 * voxel_side, 0, coarse_far, coarse_near);
-    least_coarse_far = std::min(std::min(coarse_far[0], coarse_far[1]), std::min(coarse_far[2], coarse_far[3]));
-    if (!voxels) return;
-    for (int q = 0; q < 4; ++q) {
-      float* far = voxel_far + 4 * q;
-      sub_cubes::slab_distances(u, voxel_side, 4 * q, far, nullptr);
-      nearest_far[q] = std::min(std::min(far[0], far[1]), std::min(far[2], far[3]));
-    }
-    least_voxel_far = std::min(std::min(nearest_far[0], nearest_far[1]), std::min(nearest_far[2], nearest_far[3]));
-  }
+  AxisView(double u, double voxel_side, bool voxels);
   float coarse_far[4], coarse_near[4], voxel_far[16];
   float nearest_far[4];  // per coarse slab, the least of its voxel slabs' far distances
   // The least far distance of any coarse slab, and of any voxel slab: a cell
   // where the three axes' sum is not below the limit has nothing covered.
   float least_coarse_far, least_voxel_far;
 };
+
+inline AxisView::AxisView(double u, double voxel_side, bool voxels) {
+  // The 17 voxel faces u - k s (k = 0..16), each rounded once to single
+  // precision; a slab's far distance is the larger of its two faces', its
+  // near distance the one of the face on u's side (0 if u is inside).
+  alignas(16) float face[20];
+#ifdef __SSE2__
+  const __m128d uu = _mm_set1_pd(u), ss = _mm_set1_pd(voxel_side);
+  for (int k = 0; k < 20; k += 4) {
+    const __m128d a = _mm_sub_pd(uu, _mm_mul_pd(ss, _mm_setr_pd(k, k + 1)));
+    const __m128d b = _mm_sub_pd(uu, _mm_mul_pd(ss, _mm_setr_pd(k + 2, k + 3)));
+    _mm_store_ps(face + k, _mm_movelh_ps(_mm_cvtpd_ps(a), _mm_cvtpd_ps(b)));
+  }
+  const __m128 sign = _mm_set1_ps(-0.0f);
+  const auto far2 = [&](__m128 a, __m128 b) {
+    const __m128 f = _mm_max_ps(_mm_andnot_ps(sign, a), _mm_andnot_ps(sign, b));
+    return _mm_mul_ps(f, f);
+  };
+  const __m128 lo = _mm_setr_ps(face[0], face[4], face[8], face[12]);
+  const __m128 hi = _mm_setr_ps(face[4], face[8], face[12], face[16]);
+  _mm_storeu_ps(coarse_far, far2(lo, hi));
+  const __m128 n = _mm_max_ps(_mm_max_ps(_mm_xor_ps(sign, lo), hi), _mm_setzero_ps());
+  _mm_storeu_ps(coarse_near, _mm_mul_ps(n, n));
+  if (voxels)
+    for (int q = 0; q < 4; ++q) _mm_storeu_ps(voxel_far + 4 * q, far2(_mm_load_ps(face + 4 * q), _mm_loadu_ps(face + 4 * q + 1)));
+#else
+  for (int k = 0; k <= 16; ++k) face[k] = float(u - k * voxel_side);
+  const auto far2 = [](float a, float b) {
+    const float f = std::max(std::abs(a), std::abs(b));
+    return f * f;
+  };
+  for (int q = 0; q < 4; ++q) {
+    const float lo = face[4 * q], hi = face[4 * q + 4];
+    coarse_far[q] = far2(lo, hi);
+    const float n = std::max(std::max(-lo, hi), 0.0f);
+    coarse_near[q] = n * n;
+  }
+  if (voxels)
+    for (int k = 0; k < 16; ++k) voxel_far[k] = far2(face[k], face[k + 1]);
+#endif
+  least_coarse_far = std::min(std::min(coarse_far[0], coarse_far[1]), std::min(coarse_far[2], coarse_far[3]));
+  if (!voxels) return;
+  for (int q = 0; q < 4; ++q) {
+    const float* f = voxel_far + 4 * q;
+    nearest_far[q] = std::min(std::min(f[0], f[1]), std::min(f[2], f[3]));
+  }
+  least_voxel_far = std::min(std::min(nearest_far[0], nearest_far[1]), std::min(nearest_far[2], nearest_far[3]));
+}
 
 // One sphere seen from one cell, through its three axis views.
 class SphereOverCell {
