@@ -214,8 +214,7 @@ std::size_t FreeVoxels::find_cell(std::uint64_t& r) const {
 FreeVoxels::Guess FreeVoxels::guess(const Random& rng) const {
   if (empty()) return {0, 0, 0, false};
   Random copy = rng;
-  Guess g{copy.next() >> std::countl_zero(tree_.total()), 0, 0, false};  // uniform_below's first draw
-  if (g.r >= tree_.total()) return g;
+  Guess g{uniform_below(copy, tree_.total()), 0, 0, false};
   g.page = tree_.find_page(g.r);
   tree_.prefetch_page(g.page);
   g.valid = true;
