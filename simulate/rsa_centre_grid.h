@@ -54,6 +54,9 @@ class CentreGrid {
   template <class Exact>
   bool any_within_one(const Vec3& x, Exact&& exact) const;
 
+  // Asks the memory for the slot of the cell holding x.
+  void prefetch(const Vec3& x) const { __builtin_prefetch(&first_[std::size_t(cell_of(x))]); }
+
   // Asks the memory for the slots a gather around `cell` reads.
   void prefetch_near(std::size_t cell) const {
     const int cx = int(cell % std::size_t(n_)), cy = int(cell / std::size_t(n_) % std::size_t(n_)),

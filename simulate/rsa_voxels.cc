@@ -26,6 +26,8 @@ constexpr double kMaxTrialsPerSphere = 2000;
 // rounded to single precision (~1e-7): squared distances this close to 1 are
 // settled on the exact positions.
 constexpr double kUnsure = 1e-5;
+// How many plain trials ahead the cells to search are fetched.
+constexpr int kLookahead = 16;
 
 class Placer {
  public:
@@ -82,9 +84,15 @@ std::int64_t Placer::fill(std::int64_t N, Random& rng) {
 // Uniform trials over the box, rejected if overlapping, while they mostly
 // succeed. Returns the number placed.
 std::int64_t Placer::plain_phase(std::int64_t N, Random& rng) {
+  // The trial points do not depend on the outcomes: a copy of the generator
+  // runs kLookahead trials ahead and asks the memory for the cell each will
+  // search first.
+  Random ahead = rng;
+  for (int k = 0; k < kLookahead; ++k) grid_.prefetch(uniform_in({0, 0, 0}, L_, ahead));
   std::int64_t i = 0;
   for (std::int64_t window_hits = 0, window = 0; i < N;) {
     const Vec3 x = uniform_in({0, 0, 0}, L_, rng);
+    grid_.prefetch(uniform_in({0, 0, 0}, L_, ahead));
     ++trials_;
     if (!overlaps(x)) {
       place(i++, x);
