@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "common/error.h"
+#include "simulate/cell_grid.h"
 #include "simulate/rsa_centre_grid.h"
 #include "simulate/rsa_free_voxels.h"
 
@@ -29,9 +31,17 @@ constexpr double kUnsure = 1e-5;
 // How many plain trials ahead the cells to search are fetched.
 constexpr int kLookahead = 16;
 
+// The grid needs three cells of one diameter along each side of the box.
+double checked_side(double L) {
+  const std::string err = check_box_fits_grid(L, 1.0);
+  if (!err.empty()) throw std::invalid_argument(err);
+  return L;
+}
+
 class Placer {
  public:
-  explicit Placer(Particles& p) : p_(p), grid_(p.L), L_(p.L), half_(p.L / 2), top_(std::nextafter(p.L, 0.0)) {}
+  explicit Placer(Particles& p)
+      : p_(p), grid_(checked_side(p.L)), L_(p.L), half_(p.L / 2), top_(std::nextafter(p.L, 0.0)) {}
 
   // Places spheres 0, 1, ... up to N; returns how many fit (N unless no room
   // is left before, or the trial budget runs out).

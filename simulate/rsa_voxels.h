@@ -6,10 +6,12 @@
 // sphere stays bounded up to saturation (phi = 0.384) instead of diverging.
 //
 // At the switch (a window of plain trials with under 2 % success, phi ~ 0.24)
-// every cell is voxelized two levels deep at once, keeping only the voxels
-// that no single exclusion sphere covers (rsa_free_voxels.h); each sphere
-// placed then removes the voxels it covers at once, and a failed trial
-// refines its voxel. N = 1e6 at phi = 0.35: tests/bench/rsa_bench.cc.
+// every cell is voxelized at once, two levels deep, keeping the voxels no
+// single exclusion sphere covers (rsa_free_voxels.h); each sphere placed then
+// removes the voxels it covers, and a failed trial refines its voxel. The
+// memory the searches read is kept small (rsa_centre_grid.h): they are bound
+// by memory latency. N = 1e6 at phi = 0.35 takes about 5 s and 262 bytes per
+// particle (tests/bench/rsa_bench.cc).
 #pragma once
 #include <cstdint>
 
