@@ -1,15 +1,16 @@
 #include "simulate/rsa_voxels.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "common/error.h"
 #include "simulate/cell_grid.h"
+#include "simulate/rsa_centre_grid.h"
+#include "simulate/rsa_free_voxels.h"
 
 namespace coolgas {
 
@@ -20,142 +21,89 @@ namespace {
 // the free volume fraction), the voxel phase takes over.
 constexpr std::int64_t kWindow = 4096;
 constexpr double kSwitchAcceptance = 0.02;
-// Voxel coordinates within their cell are 16-bit: at most 2^16 per side.
-constexpr int kMaxLevel = 16;
-// Total trials per sphere before giving up (only reachable if voxels at the
-// finest level can never be removed, which needs a measure-zero arrangement).
+// Total trials per sphere before giving up (only reachable if a finest voxel
+// keeps a free set of measure zero, which needs a degenerate arrangement).
 constexpr double kMaxTrialsPerSphere = 2000;
+// The trial test of the voxel phase works on centres whose offsets are
+// rounded to single precision (~1e-7): squared distances this close to 1 are
+// settled on the exact positions.
+constexpr double kUnsure = 1e-5;
+// How many plain trials ahead the cells to search are fetched.
+constexpr int kLookahead = 16;
 
-// A voxel: a cube of side w / 2^level (w the cell width) inside one cell.
-struct Voxel {
-  std::int32_t cell;
-  std::uint16_t x, y, z;  // corner within the cell, in voxel sides
-};
+// The grid needs three cells of one diameter along each side of the box.
+double checked_side(double L) {
+  const std::string err = check_box_fits_grid(L, 1.0);
+  if (!err.empty()) throw std::invalid_argument(err);
+  return L;
+}
 
 class Placer {
  public:
   explicit Placer(Particles& p)
-      : p_(p), grid_(p.L, 1.0, p.size()), L_(p.L), half_(p.L / 2), n_(grid_.cells_per_side()), w_(grid_.width()) {}
+      : p_(p), grid_(checked_side(p.L)), L_(p.L), half_(p.L / 2), top_(std::nextafter(p.L, 0.0)) {}
 
-  void run(std::int64_t N, Random& rng);
+  // Places spheres 0, 1, ... up to N; returns how many fit (N unless no room
+  // is left before, or the trial budget runs out).
+  std::int64_t fill(std::int64_t N, Random& rng);
 
  private:
   // Minimum image of a coordinate difference (|d| < L; L >= 3 > 2 diameters).
   double image(double d) const { return d > half_ ? d - L_ : (d < -half_ ? d + L_ : d); }
-  int wrap(int k) const { return k < 0 ? k + n_ : (k >= n_ ? k - n_ : k); }
-
-  // Calls f(position) for the spheres in the 27 cells around c until it returns true.
-  template <class F>
-  bool any_near(const CellCoord& c, F&& f) const {
-    for (int oz = -1; oz <= 1; ++oz) {
-      const int z = wrap(c.z + oz);
-      for (int oy = -1; oy <= 1; ++oy) {
-        const int row = (z * n_ + wrap(c.y + oy)) * n_;
-        for (int ox = -1; ox <= 1; ++ox)
-          for (int j = grid_.first(row + wrap(c.x + ox)); j >= 0; j = grid_.next(j))
-            if (f(p_.r[std::size_t(j)])) return true;
-      }
-    }
-    return false;
-  }
-
   bool overlap(const Vec3& r, const Vec3& x) const {
     const double dx = image(r.x - x.x), dy = image(r.y - x.y), dz = image(r.z - x.z);
     return dx * dx + dy * dy + dz * dz < 1.0;
   }
   bool overlaps(const Vec3& x) const {
-    return any_near(grid_.coord(grid_.cell_of(x.x, x.y, x.z)), [&](const Vec3& r) { return overlap(r, x); });
+    return grid_.any_within_one(x, [&](std::int32_t id) { return overlap(p_.r[std::size_t(id)], x); });
   }
-
-  void place(std::int64_t i, const Vec3& x) {
-    p_.r[std::size_t(i)] = x;
-    grid_.insert(int(i), grid_.cell_of(x.x, x.y, x.z));
-  }
-
   Vec3 uniform_in(const Vec3& lo, double side, Random& rng) const {
     Vec3 x;
-    for (int d = 0; d < 3; ++d) x[d] = std::min(lo[d] + side * rng.uniform(), std::nextafter(L_, 0.0));
+    for (int d = 0; d < 3; ++d) x[d] = std::min(lo[d] + side * rng.uniform(), top_);
     return x;
   }
-
-  // Whether the exclusion sphere (radius 1) around r holds the whole cube
-  // [lo, lo + side]³: its farthest corner is inside. (Zhang & Torquato's
-  // sufficient test; the union of several spheres may cover a voxel unseen,
-  // which only leaves it listed a while longer.)
-  bool covers(const Vec3& r, const Vec3& lo, double side) const {
-    double far2 = 0;
-    for (int d = 0; d < 3; ++d) {
-      const double u = image(r[d] - lo[d]);
-      const double f = std::max(std::abs(u), std::abs(u - side));
-      far2 += f * f;
-    }
-    return far2 < 1.0;
+  Vec3 relative(const Vec3& r, const Vec3& corner) const {
+    return {image(r.x - corner.x), image(r.y - corner.y), image(r.z - corner.z)};
+  }
+  void place(std::int64_t i, const Vec3& x) {
+    p_.r[std::size_t(i)] = x;
+    grid_.insert(x, std::int32_t(i));
   }
 
-  double side(int level) const { return std::ldexp(w_, -level); }
-  Vec3 corner(const Voxel& v, double s) const {
-    const CellCoord c = grid_.coord(v.cell);
-    return {c.x * w_ + v.x * s, c.y * w_ + v.y * s, c.z * w_ + v.z * s};
-  }
-
-  void gather_near(int cell);
-  void refine(const Voxel& parent, int child_level);
-  std::pair<int, std::size_t> draw_voxel(Random& rng) const;
-  static void swap_remove(std::vector<Voxel>& list, std::size_t k) {
-    list[k] = list.back();
-    list.pop_back();
-  }
-
-  [[noreturn]] void saturated(std::int64_t placed, std::int64_t N) const;
+  std::int64_t plain_phase(std::int64_t N, Random& rng);
+  std::int64_t voxel_phase(std::int64_t i, std::int64_t N, Random& rng);
+  void gather_near(std::size_t cell);
+  bool near_overlaps(const Vec3& x, const Vec3& corner) const;
+  const std::vector<Vec3>& exact_near(const Vec3& corner);
+  void cover_around(FreeVoxels& voxels, const Vec3& x) const;
 
   Particles& p_;
-  CellGrid grid_;
-  double L_, half_;
-  int n_;
-  double w_;
-  std::vector<Vec3> near_;  // scratch: the spheres around one cell
-  std::array<std::vector<Voxel>, kMaxLevel + 1> lists_;  // voxels of side w / 2^level
+  CentreGrid grid_;
+  double L_, half_, top_;
+  double trials_ = 0;
+  std::vector<Vec3> near_;  // scratch: the centres around one cell, relative to its corner,
+  std::vector<std::int32_t> near_ids_;  // and their ids
+  std::vector<Vec3> exact_;  // scratch: their exact positions relative to the corner
 };
 
-// The spheres that can reach any point of a cell (the 27 cells around it).
-void Placer::gather_near(int cell) {
-  near_.clear();
-  any_near(grid_.coord(cell), [&](const Vec3& r) {
-    near_.push_back(r);
-    return false;
-  });
+std::int64_t Placer::fill(std::int64_t N, Random& rng) {
+  const std::int64_t i = plain_phase(N, rng);
+  return i == N ? N : voxel_phase(i, N, rng);
 }
 
-// Replaces a voxel by its eight children, less those one exclusion sphere
-// (of near_, gathered for its cell) covers.
-void Placer::refine(const Voxel& parent, int child_level) {
-  const double s = side(child_level);
-  for (int b = 0; b < 8; ++b) {
-    const Voxel child{parent.cell, std::uint16_t(2 * parent.x + (b & 1)), std::uint16_t(2 * parent.y + ((b >> 1) & 1)),
-                      std::uint16_t(2 * parent.z + (b >> 2))};
-    const Vec3 lo = corner(child, s);
-    if (std::none_of(near_.begin(), near_.end(), [&](const Vec3& r) { return covers(r, lo, s); }))
-      lists_[std::size_t(child_level)].push_back(child);
-  }
-}
-
-void Placer::saturated(std::int64_t placed, std::int64_t N) const {
-  char reached[32];
-  std::snprintf(reached, sizeof reached, "%.4f", double(placed) * M_PI / (6.0 * L_ * L_ * L_));
-  throw InputError(std::string("random sequential addition saturated at phi = ") + reached + " (placed " +
-                   std::to_string(placed) + " of " + std::to_string(N) +
-                   " spheres: no room is left for another); use system.init = \"fcc\" or a lower phi");
-}
-
-void Placer::run(std::int64_t N, Random& rng) {
-  const double budget = kMaxTrialsPerSphere * double(N);
-  double trials = 0;
+// Uniform trials over the box, rejected if overlapping, while they mostly
+// succeed. Returns the number placed.
+std::int64_t Placer::plain_phase(std::int64_t N, Random& rng) {
+  // The trial points do not depend on the outcomes: a copy of the generator
+  // runs kLookahead trials ahead and asks the memory for the cell each will
+  // search first.
+  Random ahead = rng;
+  for (int k = 0; k < kLookahead; ++k) grid_.prefetch(uniform_in({0, 0, 0}, L_, ahead));
   std::int64_t i = 0;
-
-  // Plain phase: uniform over the box, rejected if overlapping.
   for (std::int64_t window_hits = 0, window = 0; i < N;) {
     const Vec3 x = uniform_in({0, 0, 0}, L_, rng);
-    ++trials;
+    grid_.prefetch(uniform_in({0, 0, 0}, L_, ahead));
+    ++trials_;
     if (!overlaps(x)) {
       place(i++, x);
       ++window_hits;
@@ -165,69 +113,98 @@ void Placer::run(std::int64_t N, Random& rng) {
       window = window_hits = 0;
     }
   }
-  if (i == N) return;
-
-  // Voxel phase (Zhang & Torquato 2013, with the refinement done voxel by
-  // voxel): lists of voxels per level, a cell being the voxel of level 0.
-  // Their union always holds all the free space: a voxel leaves its list
-  // only when one exclusion sphere covers it, or when a trial in it failed,
-  // in which case its uncovered children join the next level. A voxel drawn
-  // with probability proportional to its volume, then a uniform point inside,
-  // is a uniform point of the union: the process is still RSA.
-  for (std::int64_t c = 0; c < grid_.cell_count(); ++c) lists_[0].push_back(Voxel{std::int32_t(c), 0, 0, 0});
-  while (i < N) {
-    if (trials > budget) saturated(i, N);
-    const auto [level, k] = draw_voxel(rng);
-    if (level < 0) saturated(i, N);
-    std::vector<Voxel>& list = lists_[std::size_t(level)];
-    const Voxel v = list[k];
-    const double s = side(level);
-    const Vec3 lo = corner(v, s);
-    const Vec3 x = uniform_in(lo, s, rng);
-    ++trials;
-    // One pass over the 27 cells serves both the overlap test and, if the
-    // point is rejected, the coverage test and the refinement.
-    gather_near(v.cell);
-    const bool free = grid_.cell_of(x.x, x.y, x.z) == v.cell
-                          ? std::none_of(near_.begin(), near_.end(), [&](const Vec3& r) { return overlap(r, x); })
-                          : !overlaps(x);  // x rounded onto the next cell
-    if (free) {
-      place(i++, x);
-      if (covers(x, lo, s)) swap_remove(list, k);
-      continue;
-    }
-    const bool covered = std::any_of(near_.begin(), near_.end(), [&](const Vec3& r) { return covers(r, lo, s); });
-    if (!covered && level == kMaxLevel) continue;
-    swap_remove(list, k);
-    if (!covered) refine(v, level + 1);
-  }
+  return i;
 }
 
-// A voxel with probability proportional to its volume (8^-level): a level
-// by the total volume of its list, then a uniform index, from one uniform
-// number. Returns level -1 when every list is empty (saturation).
-std::pair<int, std::size_t> Placer::draw_voxel(Random& rng) const {
-  double total = 0;
-  for (int l = 0; l <= kMaxLevel; ++l) total += std::ldexp(double(lists_[std::size_t(l)].size()), -3 * l);
-  if (total == 0) return {-1, 0};
-  double u = rng.uniform() * total;
-  int last = -1;
-  for (int l = 0; l <= kMaxLevel; ++l) {
-    const std::size_t count = lists_[std::size_t(l)].size();
-    if (count == 0) continue;
-    last = l;
-    const double w = std::ldexp(double(count), -3 * l);
-    if (u < w) return {l, std::min(count - 1, std::size_t(std::ldexp(u, 3 * l)))};
-    u -= w;
+// Zhang & Torquato's voxel method: a voxel drawn by volume, a uniform point
+// in it, rejected if overlapping. Every point of the union of the voxels is
+// equally likely and the union holds all the free space, so an accepted
+// point is uniform over the free space: the process is still exact RSA.
+std::int64_t Placer::voxel_phase(std::int64_t i, std::int64_t N, Random& rng) {
+  const double budget = kMaxTrialsPerSphere * double(N);
+  FreeVoxels voxels(grid_.cells_per_side(), grid_.width());
+  voxels.build([&](auto&& f) { grid_.for_each_centre(f); });
+  while (i < N) {
+    if (trials_ > budget || voxels.empty()) break;
+    const FreeVoxels::Voxel v = voxels.draw(rng);
+    const Vec3 corner = grid_.corner(v.cell);
+    const Vec3 x = uniform_in({corner.x + v.lo.x, corner.y + v.lo.y, corner.z + v.lo.z}, v.side, rng);
+    ++trials_;
+    FreeVoxels::Guess next = voxels.guess(rng);
+    // One pass over the 27 cells serves the trial test and, if it fails, the refinement.
+    gather_near(v.cell);
+    voxels.narrow(next);
+    if (near_overlaps(x, corner)) {
+      if (!voxels.refine(v, near_)) voxels.settle(v, exact_near(corner));
+    } else {
+      place(i++, x);
+      cover_around(voxels, x);
+    }
+    const std::int64_t guessed = voxels.land(next);
+    if (guessed >= 0) grid_.prefetch_near(std::size_t(guessed));
   }
-  return {last, lists_[std::size_t(last)].size() - 1};  // u rounded past the end
+  return i;
+}
+
+void Placer::gather_near(std::size_t cell) {
+  near_.clear();
+  near_ids_.clear();
+  grid_.for_each_near(cell, [&](const Vec3& r, std::int32_t id) {
+    near_.push_back(r);
+    near_ids_.push_back(id);
+  });
+}
+
+// Whether x (in the cell with the given corner) overlaps a gathered centre.
+bool Placer::near_overlaps(const Vec3& x, const Vec3& corner) const {
+  const Vec3 u{x.x - corner.x, x.y - corner.y, x.z - corner.z};
+  for (std::size_t j = 0; j < near_.size(); ++j) {
+    const double dx = near_[j].x - u.x, dy = near_[j].y - u.y, dz = near_[j].z - u.z;
+    const double d2 = dx * dx + dy * dy + dz * dz;
+    if (d2 < 1.0 - kUnsure) return true;
+    if (d2 <= 1.0 + kUnsure && overlap(p_.r[std::size_t(near_ids_[j])], x)) return true;
+  }
+  return false;
+}
+
+// The gathered centres' exact positions, relative to the corner of their cell.
+const std::vector<Vec3>& Placer::exact_near(const Vec3& corner) {
+  exact_.clear();
+  for (const std::int32_t id : near_ids_) exact_.push_back(relative(p_.r[std::size_t(id)], corner));
+  return exact_;
+}
+
+// Removes the voxels that the exclusion sphere of a new centre at x covers.
+void Placer::cover_around(FreeVoxels& voxels, const Vec3& x) const {
+  int cell[3];
+  Vec3 offset;
+  grid_.locate(x, cell, offset);
+  voxels.cover(cell[0], cell[1], cell[2], offset);
+}
+
+[[noreturn]] void saturated(double L, std::int64_t placed, std::int64_t N) {
+  char reached[32];
+  std::snprintf(reached, sizeof reached, "%.4f", double(placed) * M_PI / (6.0 * L * L * L));
+  throw InputError(std::string("random sequential addition saturated at phi = ") + reached + " (placed " +
+                   std::to_string(placed) + " of " + std::to_string(N) +
+                   " spheres: no room is left for another); use system.init = \"fcc\" or a lower phi");
 }
 
 }  // namespace
 
 void place_random_sequential(Particles& p, std::int64_t N, Random& rng) {
   Placer placer(p);
-  placer.run(N, rng);
+  const std::int64_t placed = placer.fill(N, rng);
+  if (placed < N) saturated(p.L, placed, N);
+}
+
+std::int64_t saturate_random_sequential(double L, Random& rng) {
+  Particles p;
+  p.L = L;
+  // More than fit: unit spheres pack at most sqrt(2) per unit volume.
+  p.r.resize(std::size_t(std::sqrt(2.0) * L * L * L) + 1);
+  Placer placer(p);
+  return placer.fill(std::int64_t(p.r.size()), rng);
 }
 
 }  // namespace coolgas
