@@ -40,9 +40,11 @@ test: build
 demo: build
 	$(MAKE) -C pipelines/demo -j $(JOBS) BIN=$(abspath $(BUILD))/bin OUT=$(abspath out/demo)
 
-# Speed figures for the README (one core each; see tests/bench/).
+# Speed figures for the README (one core each; see tests/bench/). The
+# aggregation benchmark (W3, ~3 min) is run by hand: build/bench/aggregation_bench.
 bench: build
 	$(BUILD)/bench/engine_bench all 108000 50 3
+	$(BUILD)/bench/rsa_bench 1000000 0.35 0.36 0.37
 	$(BUILD)/bench/smoluchowski_bench 1
 	$(BUILD)/bench/cluster_bench
 

@@ -8,7 +8,6 @@
 // the engine's own speed.
 // usage: engine_bench [W1|W2|all] [N] [collisions_per_particle] [repeats]
 // (repeats: runs of each workload, then a line with the best, median and worst)
-#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -17,36 +16,17 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <string>
 #include <vector>
 
 #include "simulate/engine_factory.h"
 #include "simulate/initial_state.h"
+#include "tests/bench/process_stats.h"
 
 namespace {
 
-// A field of /proc/self/status in bytes: VmHWM (peak resident memory so
-// far) or VmRSS (resident now).
-double status_bytes(const std::string& field) {
-  std::ifstream f("/proc/self/status");
-  std::string key;
-  double kb = 0;
-  while (f >> key) {
-    if (key == field) {
-      f >> kb;
-      break;
-    }
-    std::getline(f, key);
-  }
-  return kb * 1024.0;
-}
-
-double cpu_seconds() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
-}
+using coolgas::bench::cpu_seconds;
+using coolgas::bench::status_bytes;
 
 // One run from a fresh start; prints its line and returns collisions per
 // second of wall time.

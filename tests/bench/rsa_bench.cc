@@ -4,7 +4,6 @@
 // for N unit spheres at each volume fraction given (default N = 10^6 at
 // phi = 0.35; the issue asks for that "in seconds").
 // usage: rsa_bench [N] [phi ...]
-#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -12,36 +11,17 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "simulate/initial_state.h"
+#include "tests/bench/process_stats.h"
 
 namespace {
 
-// A field of /proc/self/status in bytes: VmHWM (peak resident memory so
-// far) or VmRSS (resident now).
-double status_bytes(const std::string& field) {
-  std::ifstream f("/proc/self/status");
-  std::string key;
-  double kb = 0;
-  while (f >> key) {
-    if (key == field) {
-      f >> kb;
-      break;
-    }
-    std::getline(f, key);
-  }
-  return kb * 1024.0;
-}
-
-double cpu_seconds() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
-}
+using coolgas::bench::cpu_seconds;
+using coolgas::bench::status_bytes;
 
 void run(std::int64_t n, double phi) {
   coolgas::Scene s;
