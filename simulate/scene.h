@@ -52,8 +52,9 @@ const std::vector<SceneKey>& scene_keys();
 // The highest volume fraction offered for random sequential addition (its
 // saturation limit is 0.3841; Torquato et al. 2006). The voxel phase
 // (simulate/rsa_voxels.h) reaches it, but the cost per sphere grows towards
-// saturation: placing N = 10^6 took about 70 s at phi = 0.35 and 90 s at 0.36
-// on one loaded core, against more than 12 minutes (unfinished) for plain RSA.
+// saturation: placing N = 10^6 takes about 5 s at phi = 0.35, 6.5 s at 0.36
+// and 9 s at 0.37 on one core (tests/bench/rsa_bench.cc), against more than
+// 12 minutes (unfinished) for plain RSA. 0.36 leaves a margin for larger N.
 inline constexpr double kMaxRandomPhi = 0.36;
 // FCC lattice with nearest neighbours at one diameter: π/(3√2).
 inline constexpr double kMaxFccPhi = 0.7404;
