@@ -10,7 +10,7 @@
 // single exclusion sphere covers (rsa_free_voxels.h); each sphere placed then
 // removes the voxels it covers, and a failed trial refines its voxel. The
 // memory the searches read is kept small (rsa_centre_grid.h): they are bound
-// by memory latency. N = 1e6 at phi = 0.35 takes about 5 s and 262 bytes per
+// by memory latency. N = 1e6 at phi = 0.35 takes about 5 s and 218 bytes per
 // particle (tests/bench/rsa_bench.cc).
 #pragma once
 #include <cstdint>
