@@ -11,6 +11,7 @@
 #include "simulate/aggregation_engine.h"
 #include "simulate/engine_factory.h"
 #include "simulate/initial_state.h"
+#include "tests/support/min_distance.h"
 #include "tests/support/scenes.h"
 
 namespace coolgas {
@@ -26,24 +27,11 @@ double largest_overlap(const EngineBase& e) {
   CellGrid grid(e.box(), dmax, e.size());
   for (std::size_t i = 0; i < e.size(); ++i)
     if (e.ids()[i] >= 0) grid.insert(int(i), grid.cell_of(m[i].r.x, m[i].r.y, m[i].r.z));
-  const int n = grid.cells_per_side();
-  const double L = e.box();
   double worst = -std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < e.size(); ++i) {
-    if (e.ids()[i] < 0) continue;
-    const CellCoord c = grid.coord(grid.cell(int(i)));
-    for (int oz = -1; oz <= 1; ++oz)
-      for (int oy = -1; oy <= 1; ++oy)
-        for (int ox = -1; ox <= 1; ++ox) {
-          const CellCoord nb{(c.x + ox + n) % n, (c.y + oy + n) % n, (c.z + oz + n) % n};
-          for (int j = grid.first(grid.index(nb)); j >= 0; j = grid.next(j)) {
-            if (j <= int(i)) continue;
-            Vec3 r{m[j].r.x - m[i].r.x, m[j].r.y - m[i].r.y, m[j].r.z - m[i].r.z};
-            for (int k = 0; k < 3; ++k) r[k] -= L * std::round(r[k] / L);
-            worst = std::max(worst, 0.5 * (d[i] + d[j]) - std::sqrt(dot(r, r)));
-          }
-        }
-  }
+  test::for_each_near_pair(grid, e.size(), e.box(), [&](std::size_t i) { return m[i].r; },
+                           [&](std::size_t i, std::size_t j, double r) {
+                             worst = std::max(worst, 0.5 * (d[i] + d[j]) - r);
+                           });
   return worst;
 }
 
