@@ -13,12 +13,14 @@
 
 #include "common/h5md_writer.h"
 #include "common/hdf5_file.h"
+#include "tests/support/cli_checks.h"
 #include "tests/support/run_command.h"
 
 namespace coolgas {
 namespace {
 
 using test::bin;
+using test::expect_one_error_line;
 using test::run_command;
 
 const char* const kTools[] = {"coolgas-clusters", "coolgas-velocity", "coolgas-snapshot"};
@@ -68,13 +70,6 @@ class ClustersVelocitySnapshotCli : public ::testing::Test {
   }
   static inline std::string* dir = nullptr;
 };
-
-void expect_one_error_line(const test::CommandResult& r, const std::string& needle) {
-  EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_EQ(test::line_count(r.err), 1) << r.err;
-  EXPECT_NE(r.err.find(needle), std::string::npos) << r.err;
-  EXPECT_TRUE(r.out.empty()) << r.out;  // no half table
-}
 
 TEST_F(ClustersVelocitySnapshotCli, EveryToolRejectsBadFilesWithOneLine) {
   for (const std::string tool : kTools) {

@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "common/hdf5_file.h"
+#include "tests/support/cli_checks.h"
 #include "tests/support/run_command.h"
 #include "tests/unit/analyze/energy_test_runs.h"
 
@@ -16,6 +17,7 @@ namespace coolgas {
 namespace {
 
 using test::bin;
+using test::expect_one_error_line;
 using test::run_command;
 
 // Two seeds of L = 16 and 32 whose energies follow Eq. (2) of the paper with
@@ -45,13 +47,6 @@ class EnergyFitCollapseCli : public ::testing::Test {
   }
   static inline std::string* dir = nullptr;
 };
-
-void expect_one_error_line(const test::CommandResult& r, const std::string& needle) {
-  EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_EQ(test::line_count(r.err), 1) << r.err;
-  EXPECT_NE(r.err.find(needle), std::string::npos) << r.err;
-  EXPECT_TRUE(r.out.empty()) << r.out;  // no half table
-}
 
 TEST_F(EnergyFitCollapseCli, EnergyFitAndCollapseChainThroughPipes) {
   const std::string e16 = *dir + "/e16.tsv", e32 = *dir + "/e32.tsv";

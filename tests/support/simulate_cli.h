@@ -6,6 +6,7 @@
 #include <fstream>
 #include <string>
 
+#include "tests/support/cli_checks.h"
 #include "tests/support/run_command.h"
 
 namespace coolgas::test {
@@ -23,10 +24,7 @@ inline std::string simulate(const std::string& args) { return bin("coolgas-simul
 // Expects coolgas-simulate to refuse `args`: exit code 2, one stderr line
 // containing `needle`, and neither `out` nor its partial file left behind.
 inline void expect_simulate_refused(const std::string& args, const std::string& needle, const std::string& out) {
-  const auto r = run_command(simulate(args));
-  EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
-  EXPECT_EQ(line_count(r.err), 1) << r.err;
-  EXPECT_NE(r.err.find(needle), std::string::npos) << r.err;
+  expect_refused_with_one_line(run_command(simulate(args)), needle, args);
   EXPECT_FALSE(std::filesystem::exists(out)) << args;
   EXPECT_FALSE(std::filesystem::exists(out + ".partial")) << args;
 }
