@@ -10,7 +10,6 @@
 namespace coolgas {
 
 namespace {
-constexpr int kInterruptCheckMask = 4095;  // look at the interrupt flag every 4096 events
 // Cells are made this much wider than the largest diameter when the grid is
 // rebuilt, so that a rebuild (which predicts every aggregate again) is needed
 // only after the largest volume has about doubled. Measured on W3 at N = 2e5
@@ -268,10 +267,7 @@ RunStatus AggregationEngine::run_until(double t_stop, std::int64_t max_events,
   if (too_large_) throw_too_large();
   const std::int64_t last_event = c_.events + max_events;
   while (true) {
-    if ((c_.events & kInterruptCheckMask) == 0) {
-      if (interrupt && *interrupt) return RunStatus::kInterrupted;
-      if (c_.events >= last_event) return RunStatus::kEventBudget;
-    }
+    if (RunStatus paused; pause_due(c_.events, last_event, interrupt, paused)) return paused;
     const int i = calendar_.top();
     if (i < 0 || event_time_[i] > t_stop) break;
     now_ = event_time_[i];

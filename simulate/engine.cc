@@ -19,7 +19,6 @@ constexpr std::array<int, 6> kAllAround = {-1, -1, -1, 1, 1, 1};
 // each less than kStallGap (relative to 1 + t) after the particle's previous
 // event.
 constexpr double kStallGap = 1e-11;
-constexpr int kInterruptCheckMask = 4095;  // look at the interrupt flag every 4096 events
 }  // namespace
 
 template <class Rule>
@@ -333,10 +332,7 @@ RunStatus Engine<Rule>::run_until(double t_stop, std::int64_t max_events, const 
   if (!built_) rebuild();
   const std::int64_t last_event = c_.events + max_events;
   while (true) {
-    if ((c_.events & kInterruptCheckMask) == 0) {
-      if (interrupt && *interrupt) return RunStatus::kInterrupted;
-      if (c_.events >= last_event) return RunStatus::kEventBudget;
-    }
+    if (RunStatus paused; pause_due(c_.events, last_event, interrupt, paused)) return paused;
     const int i = calendar_.top();
     if (i < 0) break;
     for (int k = 0; k < 2; ++k)

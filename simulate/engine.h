@@ -77,6 +77,19 @@ enum class RunStatus {
   kInterrupted,  // *interrupt became non-zero
 };
 
+// The check both engines make before each event: every 4096 events, whether
+// the run must pause (interrupt flag set, or max_events processed since the
+// run_until call, whose budget ends at `last_event`). Returns true and sets
+// `status` if so.
+inline bool pause_due(std::int64_t events, std::int64_t last_event, const volatile std::sig_atomic_t* interrupt,
+                      RunStatus& status) {
+  if ((events & 4095) != 0) return false;
+  if (interrupt && *interrupt) status = RunStatus::kInterrupted;
+  else if (events >= last_event) status = RunStatus::kEventBudget;
+  else return false;
+  return true;
+}
+
 class EngineBase {
  public:
   virtual ~EngineBase() = default;
