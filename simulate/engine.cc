@@ -1,7 +1,6 @@
 #include "simulate/engine.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <sstream>
 
@@ -12,8 +11,8 @@
 namespace coolgas {
 
 namespace {
-// Offsets -1..1 along each axis (lo[3], then hi[3]): all 27 cells around.
-constexpr std::array<int, 6> kAllAround = {-1, -1, -1, 1, 1, 1};
+// Offsets -1..1 along each axis: all 27 cells around.
+constexpr int kAroundLo[3] = {-1, -1, -1}, kAroundHi[3] = {1, 1, 1};
 // Inelastic collapse shows as one particle colliding again and again while
 // simulated time stops advancing: rule.collapse_limit() collisions in a row,
 // each less than kStallGap (relative to 1 + t) after the particle's previous
@@ -242,7 +241,7 @@ Event Engine<Rule>::earliest(int i, const Vec3& ri, const Vec3& vi, const Event&
 template <class Rule>
 Event Engine<Rule>::find_event(int i) {
   Search s;
-  start_search(grid_.cell(i), kAllAround.data(), kAllAround.data() + 3, s);
+  start_search(grid_.cell(i), kAroundLo, kAroundHi, s);
   return finish_event(i, s);
 }
 
@@ -364,8 +363,8 @@ RunStatus Engine<Rule>::run_until(double t_stop, std::int64_t max_events, const 
       // collision itself (they read only cells): their misses overlap with
       // each other and with the collision's arithmetic.
       Search si, sj;
-      start_search(grid_.cell(i), kAllAround.data(), kAllAround.data() + 3, si);
-      start_search(grid_.cell(code), kAllAround.data(), kAllAround.data() + 3, sj);
+      start_search(grid_.cell(i), kAroundLo, kAroundHi, si);
+      start_search(grid_.cell(code), kAroundLo, kAroundHi, sj);
       collide(i, code);
       calendar_.schedule(i, finish_event(i, si));
       calendar_.schedule(code, finish_event(code, sj));
