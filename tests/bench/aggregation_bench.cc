@@ -9,9 +9,9 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "simulate/aggregation_engine.h"
-#include "simulate/engine_factory.h"
-#include "simulate/initial_state.h"
+#include "simulate/engine/aggregation_engine.h"
+#include "simulate/run/engine_factory.h"
+#include "simulate/start/initial_state.h"
 
 int main(int argc, char** argv) {
   using clock = std::chrono::steady_clock;

@@ -19,9 +19,9 @@
 #include <random>
 #include <vector>
 
-#include "analyze/cluster_labeller.h"
-#include "analyze/cluster_mass_distribution.h"
-#include "analyze/frame_reader.h"
+#include "analyze/labelling/cluster_labeller.h"
+#include "analyze/clusters/mass_distribution.h"
+#include "analyze/trajectory/frame_reader.h"
 #include "common/h5md_writer.h"
 
 namespace {

@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
-#include "simulate/engine_factory.h"
-#include "simulate/initial_state.h"
+#include "simulate/run/engine_factory.h"
+#include "simulate/start/initial_state.h"
 #include "tests/bench/process_stats.h"
 
 namespace {

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "simulate/initial_state.h"
+#include "simulate/start/initial_state.h"
 #include "tests/bench/process_stats.h"
 
 namespace {

@@ -9,7 +9,7 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "analyze/smoluchowski_run.h"
+#include "analyze/smoluchowski/run.h"
 
 namespace {
 

@@ -11,7 +11,7 @@
 #include "common/hdf5_file.h"
 #include "tests/support/cli_checks.h"
 #include "tests/support/run_command.h"
-#include "tests/unit/analyze/energy_test_runs.h"
+#include "tests/support/energy_test_runs.h"
 
 namespace coolgas {
 namespace {

@@ -8,9 +8,9 @@
 #include <cmath>
 #include <limits>
 
-#include "simulate/aggregation_engine.h"
-#include "simulate/engine_factory.h"
-#include "simulate/initial_state.h"
+#include "simulate/engine/aggregation_engine.h"
+#include "simulate/run/engine_factory.h"
+#include "simulate/start/initial_state.h"
 #include "tests/support/min_distance.h"
 #include "tests/support/scenes.h"
 

@@ -4,8 +4,8 @@
 // well under 1 % below phi = 0.45). Required within 2 %.
 #include <gtest/gtest.h>
 
-#include "simulate/engine_factory.h"
-#include "simulate/initial_state.h"
+#include "simulate/run/engine_factory.h"
+#include "simulate/start/initial_state.h"
 #include "tests/support/scenes.h"
 
 namespace coolgas {

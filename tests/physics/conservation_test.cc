@@ -5,8 +5,8 @@
 
 #include <cmath>
 
-#include "simulate/engine_factory.h"
-#include "simulate/initial_state.h"
+#include "simulate/run/engine_factory.h"
+#include "simulate/start/initial_state.h"
 #include "tests/support/min_distance.h"
 #include "tests/support/scenes.h"
 

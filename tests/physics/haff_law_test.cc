@@ -6,8 +6,8 @@
 // Enskog omega ∝ sqrt(T), i.e. omega(t) = 1 / (1 + t/t0).
 #include <gtest/gtest.h>
 
-#include "simulate/engine_factory.h"
-#include "simulate/initial_state.h"
+#include "simulate/run/engine_factory.h"
+#include "simulate/start/initial_state.h"
 #include "tests/support/scenes.h"
 
 namespace coolgas {

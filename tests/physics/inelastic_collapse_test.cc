@@ -5,7 +5,7 @@
 // the sequence ends (Ben-Naim et al. 1999).
 #include <gtest/gtest.h>
 
-#include "simulate/engine.h"
+#include "simulate/engine/engine.h"
 
 namespace coolgas {
 namespace {

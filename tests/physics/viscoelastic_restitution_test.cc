@@ -6,11 +6,11 @@
 
 #include <cmath>
 
-#include "simulate/collision_rules.h"
-#include "simulate/engine_factory.h"
-#include "simulate/initial_state.h"
-#include "simulate/pair_prediction.h"
-#include "simulate/random.h"
+#include "simulate/engine/collision_rules.h"
+#include "simulate/run/engine_factory.h"
+#include "simulate/start/initial_state.h"
+#include "simulate/engine/pair_prediction.h"
+#include "common/random.h"
 #include "tests/support/scenes.h"
 
 namespace coolgas {

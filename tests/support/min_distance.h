@@ -4,8 +4,8 @@
 #include <cmath>
 #include <limits>
 
-#include "simulate/cell_grid.h"
-#include "simulate/particles.h"
+#include "simulate/engine/cell_grid.h"
+#include "simulate/engine/particles.h"
 
 namespace coolgas::test {
 

@@ -2,7 +2,7 @@
 #pragma once
 #include <cmath>
 
-#include "simulate/scene.h"
+#include "simulate/run/scene.h"
 
 namespace coolgas::test {
 

@@ -1,0 +1,129 @@
+#include "analyze/collapse/optimize.h"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_multimin.h>
+#include <gsl/gsl_randist.h>
+#include <gsl/gsl_rng.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+#include "analyze/collapse/quality.h"
+#include "common/error.h"
+#include "common/tsv.h"
+
+namespace coolgas {
+namespace {
+
+struct Problem {
+  const std::vector<ScalingCurve>* curves;
+  double min_overlap_decades;
+};
+
+double quality_at(const gsl_vector* p, void* params) {
+  const auto& pr = *static_cast<const Problem*>(params);
+  return collapse_quality(*pr.curves, gsl_vector_get(p, 0), gsl_vector_get(p, 1), pr.min_overlap_decades);
+}
+
+struct Minimum {
+  double theta, z, quality;
+};
+
+// One simplex run from (theta0, z0) until it shrinks below 1e-7.
+Minimum simplex(const Problem& problem, double theta0, double z0) {
+  Problem pr = problem;
+  gsl_multimin_function f{quality_at, 2, &pr};
+  std::unique_ptr<gsl_multimin_fminimizer, void (*)(gsl_multimin_fminimizer*)> m(
+      gsl_multimin_fminimizer_alloc(gsl_multimin_fminimizer_nmsimplex2, 2), gsl_multimin_fminimizer_free);
+  double start[2] = {theta0, z0}, step[2] = {0.1, 0.2};  // steps of the size of the paper's uncertainties
+  gsl_vector_view x = gsl_vector_view_array(start, 2), s = gsl_vector_view_array(step, 2);
+  gsl_multimin_fminimizer_set(m.get(), &f, &x.vector, &s.vector);
+  for (int iter = 0; iter < 2000; ++iter) {
+    if (gsl_multimin_fminimizer_iterate(m.get()) != GSL_SUCCESS) break;
+    if (gsl_multimin_test_size(gsl_multimin_fminimizer_size(m.get()), 1e-7) == GSL_SUCCESS) break;
+  }
+  const gsl_vector* best = gsl_multimin_fminimizer_x(m.get());
+  return {gsl_vector_get(best, 0), gsl_vector_get(best, 1), gsl_multimin_fminimizer_minimum(m.get())};
+}
+
+// The noise of the data makes Q slightly rough along its long theta-z
+// valley, where a simplex can collapse early in a shallow dip; restarting it
+// from its own result with full-size steps (the usual Nelder-Mead remedy)
+// until Q stops improving finds the valley's floor.
+Minimum minimise(const std::vector<ScalingCurve>& curves, double theta0, double z0, double min_overlap_decades) {
+  const Problem pr{&curves, min_overlap_decades};
+  Minimum best = simplex(pr, theta0, z0);
+  for (int restart = 0; restart < 10; ++restart) {
+    const Minimum next = simplex(pr, best.theta, best.z);
+    if (!(next.quality < best.quality * (1 - 1e-9))) break;
+    best = next;
+  }
+  return best;
+}
+
+// Each curve's ln E moved by its standard error times a normal deviate.
+std::vector<ScalingCurve> perturb(const std::vector<ScalingCurve>& curves, gsl_rng* rng) {
+  std::vector<ScalingCurve> out = curves;
+  for (auto& c : out)
+    for (std::size_t i = 0; i < c.ln_E.size(); ++i) c.ln_E[i] += c.ln_E_err[i] * gsl_ran_gaussian(rng, 1.0);
+  return out;
+}
+
+// Each curve's rows drawn with replacement, duplicates dropped (interpolation
+// needs distinct times); at least 2 distinct rows are kept.
+std::vector<ScalingCurve> resample_rows(const std::vector<ScalingCurve>& curves, gsl_rng* rng) {
+  std::vector<ScalingCurve> out;
+  for (const auto& c : curves) {
+    std::vector<std::size_t> rows;
+    do {
+      rows.clear();
+      for (std::size_t k = 0; k < c.t.size(); ++k) rows.push_back(gsl_rng_uniform_int(rng, c.t.size()));
+      std::sort(rows.begin(), rows.end());
+      rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    } while (rows.size() < 2);
+    out.push_back(subset(c, rows));
+  }
+  return out;
+}
+
+double standard_deviation(const std::vector<double>& v) {
+  double mean = 0, ss = 0;
+  for (double x : v) mean += x;
+  mean /= double(v.size());
+  for (double x : v) ss += (x - mean) * (x - mean);
+  return v.size() > 1 ? std::sqrt(ss / double(v.size() - 1)) : 0;
+}
+
+}  // namespace
+
+CollapseFit optimize_collapse(const std::vector<ScalingCurve>& curves, const CollapseSearch& search) {
+  if (curves.size() < 2)
+    throw InputError("--optimize needs E(t) tables of at least 2 system sizes, got " + std::to_string(curves.size()));
+  if (search.bootstrap < 0)
+    throw InputError("--bootstrap " + std::to_string(search.bootstrap) + " is not allowed; it must be >= 0");
+  gsl_set_error_handler_off();
+  const Minimum best = minimise(curves, search.theta0, search.z0, search.min_overlap_decades);
+  if (best.quality >= kNoOverlapPenalty)
+    throw InputError("no collapse found: near theta = " + format_number(best.theta) + ", z = " + format_number(best.z) +
+                     " the scaled curves overlap by less than " + format_number(search.min_overlap_decades) +
+                     " decades of x; start closer (--theta, --z) or lower --min-overlap");
+  const bool errors = std::all_of(curves.begin(), curves.end(), [](const auto& c) { return !c.ln_E_err.empty(); });
+  CollapseFit fit{best.theta, best.z, best.quality, 0, 0, search.bootstrap,
+                  errors ? BootstrapKind::kErrors : BootstrapKind::kRows};
+  if (search.bootstrap == 0) return fit;
+  std::unique_ptr<gsl_rng, void (*)(gsl_rng*)> rng(gsl_rng_alloc(gsl_rng_mt19937), gsl_rng_free);
+  gsl_rng_set(rng.get(), static_cast<unsigned long>(search.seed));
+  std::vector<double> thetas, zs;
+  for (int b = 0; b < search.bootstrap; ++b) {
+    const auto replica = errors ? perturb(curves, rng.get()) : resample_rows(curves, rng.get());
+    const Minimum m = minimise(replica, best.theta, best.z, search.min_overlap_decades);
+    thetas.push_back(m.theta);
+    zs.push_back(m.z);
+  }
+  fit.theta_err = standard_deviation(thetas);
+  fit.z_err = standard_deviation(zs);
+  return fit;
+}
+
+}  // namespace coolgas

@@ -1,0 +1,100 @@
+#include "analyze/collapse/table.h"
+
+#include <algorithm>
+#include <cmath>
+#include <ostream>
+
+#include "analyze/collapse/quality.h"
+#include "analyze/collapse/tail.h"
+#include "common/error.h"
+#include "common/tsv.h"
+
+namespace coolgas {
+namespace {
+
+constexpr const char* kTool = "coolgas-collapse";
+
+// Curves in increasing L: a deterministic block order for gnuplot's index.
+std::vector<ScalingCurve> load_curves(const CollapseOptions& o) {
+  if (o.inputs.empty()) throw InputError("no E(t) tables given (usage: coolgas-collapse TABLE...)");
+  std::vector<ScalingCurve> curves;
+  for (const auto& path : o.inputs) curves.push_back(make_scaling_curve(read_table(path), o.columns, o.t_window));
+  std::stable_sort(curves.begin(), curves.end(), [](const auto& a, const auto& b) { return a.L < b.L; });
+  return curves;
+}
+
+struct Results {
+  double theta, z, quality;
+  std::optional<CollapseFit> fit;
+  std::optional<PowerLawFit> eta;
+};
+
+Provenance collapse_provenance(const CollapseOptions& o, const std::vector<ScalingCurve>& curves, const Results& r) {
+  Provenance p;
+  for (const auto& c : curves) p.emplace_back("input", c.source + " (L = " + format_number(c.L) + ")");
+  p.emplace_back("t_window", o.t_window.text());
+  p.emplace_back("min_overlap_decades", format_number(o.search.min_overlap_decades));
+  p.emplace_back("theta", format_number(r.theta));
+  p.emplace_back("z", format_number(r.z));
+  if (r.fit) {
+    p.emplace_back("theta_err", format_number(r.fit->theta_err));
+    p.emplace_back("z_err", format_number(r.fit->z_err));
+    const char* kind = r.fit->kind == BootstrapKind::kErrors ? "parametric bootstrap over the E errors, "
+                                                              : "bootstrap over rows (underestimates; no E errors), ";
+    p.emplace_back("uncertainty", kind + std::to_string(r.fit->replicas) + " replicas, seed " +
+                                      std::to_string(o.search.seed));
+  }
+  p.emplace_back("quality", format_number(r.quality));
+  if (r.eta) {
+    p.emplace_back("eta", format_number(r.eta->theta));
+    p.emplace_back("eta_err", format_number(r.eta->theta_err));
+    p.emplace_back("eta_window", o.eta_window->text());
+  }
+  return p;
+}
+
+void write_curves(const std::vector<ScalingCurve>& curves, const Results& r, const Provenance& p, std::ostream& out) {
+  TsvWriter w(out, kTool, p, {"x", "y", "L", "t", "E"});
+  for (const auto& c : curves) {
+    // No "# L = ..." block comment: before the first row read_table would take
+    // it for the column line; the L column says it instead.
+    w.block();
+    const double sx = std::exp(c.ln_x_shift(r.z)), sy = std::exp(c.ln_y_shift(r.theta, r.z));
+    for (std::size_t i = 0; i < c.t.size(); ++i) w.row({c.t[i] * sx, c.E[i] * sy, c.L, c.t[i], c.E[i]});
+  }
+}
+
+void write_summary(const Results& r, const Provenance& p, std::ostream& out) {
+  std::vector<std::string> names{"theta", "theta_err", "z", "z_err", "quality"};
+  std::vector<double> values{r.theta, r.fit ? r.fit->theta_err : 0, r.z, r.fit ? r.fit->z_err : 0, r.quality};
+  if (r.eta) {
+    names.insert(names.end(), {"eta", "eta_err"});
+    values.insert(values.end(), {r.eta->theta, r.eta->theta_err});
+  }
+  TsvWriter w(out, kTool, p, names);
+  w.row(values);
+}
+
+}  // namespace
+
+void write_collapse_table(const CollapseOptions& o, std::ostream& out) {
+  if (!(o.search.min_overlap_decades >= 0))
+    throw InputError("--min-overlap " + format_number(o.search.min_overlap_decades) + " is not allowed; it must be >= 0");
+  const auto curves = load_curves(o);
+  Results r{o.theta, o.z, 0, std::nullopt, std::nullopt};
+  if (o.optimize) {
+    CollapseSearch s = o.search;
+    s.theta0 = o.theta;
+    s.z0 = o.z;
+    r.fit = optimize_collapse(curves, s);
+    r.theta = r.fit->theta;
+    r.z = r.fit->z;
+  }
+  r.quality = collapse_quality(curves, r.theta, r.z, o.search.min_overlap_decades);
+  if (o.eta_window) r.eta = fit_tail_exponent(curves, r.theta, r.z, *o.eta_window);
+  const Provenance p = collapse_provenance(o, curves, r);
+  if (o.summary) write_summary(r, p, out);
+  else write_curves(curves, r, p, out);
+}
+
+}  // namespace coolgas

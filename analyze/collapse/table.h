@@ -1,0 +1,27 @@
+// The coolgas-collapse tool: E(t) tables of several L in, scaled curves (or a
+// one-row summary) out (data-schema/tsv-tables.md, section coolgas-collapse).
+#pragma once
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analyze/collapse/optimize.h"
+#include "analyze/curves/fit_data.h"
+
+namespace coolgas {
+
+struct CollapseOptions {
+  std::vector<std::string> inputs;  // E(t) tables, one per L ("-" at most once)
+  FitColumns columns;               // t and E column names (errors unused)
+  double theta = 1.2, z = 2.5;      // fixed scaling, or the optimiser's start
+  bool optimize = false;
+  CollapseSearch search;
+  Window t_window;                  // rows used, in unscaled t
+  std::optional<Window> eta_window; // fit f(x) ~ x^-eta over this x window
+  bool summary = false;             // one row of results instead of the curves
+};
+
+void write_collapse_table(const CollapseOptions& options, std::ostream& out);
+
+}  // namespace coolgas

@@ -1,0 +1,37 @@
+// E(t) of one run, or the mean over an ensemble of runs that differ only in
+// their seed, on a common log-spaced time grid (coolgas-energy).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "analyze/trajectory/run_info.h"
+
+namespace coolgas {
+
+// One trajectory's parameters and kinetic energy per particle.
+struct EnergyRun {
+  RunInfo info;
+  ObservableSeries energy;  // /observables/kinetic_energy
+};
+
+// One row of the coolgas-energy table (data-schema/tsv-tables.md).
+struct EnergyRow {
+  double t = 0;
+  double E = 0, E_err = 0;                  // mean over runs and its standard error
+  double E_over_E0 = 0, E_over_E0_err = 0;  // mean of each run's E(t)/E(first row)
+  int runs = 0;
+};
+
+// Reads a trajectory; rejects non-positive energies (log-log interpolation needs E > 0).
+EnergyRun load_energy_run(const std::string& path);
+
+// InputError naming both files and the first differing parameter unless every
+// run has the same physics (see physics_difference in analyze/trajectory/run_info.h).
+void require_same_physics(const std::vector<EnergyRun>& runs);
+
+// The ensemble table: a t = 0 row first if every run has one, then the grid
+// log_time_grid(overlap of the runs' positive times, per_decade). Standard
+// errors are s/sqrt(n) with the sample deviation s; 0 for a single run.
+std::vector<EnergyRow> ensemble_energy(const std::vector<EnergyRun>& runs, int per_decade);
+
+}  // namespace coolgas

@@ -1,0 +1,52 @@
+#include "analyze/energy/table.h"
+
+#include <ostream>
+
+#include "analyze/energy/ensemble.h"
+#include "common/error.h"
+#include "common/tsv.h"
+
+namespace coolgas {
+namespace {
+
+// L, N, ... go into the provenance because coolgas-collapse reads L from it.
+Provenance energy_provenance(const std::vector<EnergyRun>& runs, int per_decade) {
+  Provenance p;
+  std::string seeds;
+  for (const auto& r : runs) {
+    p.emplace_back("input", r.info.path);
+    if (!seeds.empty()) seeds += ' ';
+    seeds += std::to_string(r.info.params.seed);
+  }
+  const RunParameters& q = runs[0].info.params;
+  p.emplace_back("runs", std::to_string(runs.size()));
+  p.emplace_back("seeds", seeds);
+  p.emplace_back("N", std::to_string(q.N));
+  p.emplace_back("L", format_number(q.L));
+  p.emplace_back("phi", format_number(q.phi));
+  p.emplace_back("T0", format_number(q.T0));
+  p.emplace_back("model", q.model);
+  p.emplace_back("r0", format_number(q.r0));
+  p.emplace_back("delta", format_number(q.delta));
+  p.emplace_back("simulator_version", runs[0].info.program_version);
+  p.emplace_back("per_decade", std::to_string(per_decade));
+  return p;
+}
+
+}  // namespace
+
+void write_energy_table(const EnergyOptions& options, std::ostream& out) {
+  if (options.inputs.empty()) throw InputError("no trajectory files given (usage: coolgas-energy RUN.h5...)");
+  if (options.per_decade < 1)
+    throw InputError("--per-decade " + std::to_string(options.per_decade) + " is not allowed; it must be >= 1");
+  std::vector<EnergyRun> runs;
+  for (const auto& path : options.inputs) runs.push_back(load_energy_run(path));
+  require_same_physics(runs);
+  // Everything is computed before the first line is written: an error leaves no half table.
+  const auto rows = ensemble_energy(runs, options.per_decade);
+  TsvWriter w(out, "coolgas-energy", energy_provenance(runs, options.per_decade),
+              {"t", "E", "E_err", "E_over_E0", "E_over_E0_err", "runs"});
+  for (const auto& r : rows) w.row({r.t, r.E, r.E_err, r.E_over_E0, r.E_over_E0_err, double(r.runs)});
+}
+
+}  // namespace coolgas

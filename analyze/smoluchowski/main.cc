@@ -1,0 +1,12 @@
+// coolgas-smoluchowski: mean-field N(m,t) from the Smoluchowski equation.
+// All logic lives in coolgas_analyze (analyze/smoluchowski_*.h).
+#include <iostream>
+
+#include "analyze/smoluchowski/cli.h"
+#include "common/tool_main.h"
+
+int main(int argc, char** argv) {
+  return coolgas::run_tool("coolgas-smoluchowski", [&] {
+    return coolgas::smoluchowski::smoluchowski_main(argc, argv, std::cout, std::cerr);
+  });
+}

@@ -1,0 +1,133 @@
+#include "analyze/snapshot/plot.h"
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <system_error>
+
+#include "common/error.h"
+#include "common/tsv.h"
+
+namespace coolgas {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A fresh private directory, removed with its contents when done.
+class TempDir {
+ public:
+  TempDir() {
+    std::string pattern = (fs::temp_directory_path() / "coolgas-snapshot-XXXXXX").string();
+    if (!mkdtemp(pattern.data())) throw std::runtime_error("cannot create a temporary directory in " + pattern);
+    path_ = pattern;
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+// gnuplot single-quoted string: a quote is written twice.
+std::string quoted(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("''") : std::string(1, c);
+  return q + "'";
+}
+
+void write_data(const SnapshotScene& scene, const fs::path& file) {
+  std::ofstream out(file);
+  char line[96];
+  for (const auto& p : scene.points) {
+    std::snprintf(line, sizeof line, "%.6g %.6g %.6g %u\n", p.x, p.y, p.z, p.rgb);
+    out << line;
+  }
+  if (!out) throw std::runtime_error("cannot write the snapshot data to " + file.string());
+}
+
+std::string script(const PlotOptions& o, const fs::path& data, const fs::path& png) {
+  std::ostringstream s;
+  s << "set terminal pngcairo noenhanced size " << o.size_px << "," << o.size_px << " font ',11'\n"
+    << "set output " << quoted(png.string()) << "\n"
+    << "set title " << quoted(o.title) << "\n"
+    << "unset key\n"
+    << "set xrange [0:" << format_number(o.L) << "]\nset yrange [0:" << format_number(o.L) << "]\n"
+    << "set xlabel 'x [sigma]'\nset ylabel 'y [sigma]'\n";
+  if (o.view == SnapshotView::kSlab) {
+    // Circles of radius 1/2 in axis units: the particles at their true size.
+    s << "set size ratio -1\n"
+      << "plot " << quoted(data.string()) << " using 1:2:(0.5):4 with circles fill solid noborder lc rgb variable\n";
+  } else {
+    s << "set zrange [0:" << format_number(o.L) << "]\nset zlabel 'z [sigma]'\n"
+      << "set view 60, 35\nset view equal xyz\nset xyplane 0\n"
+      << "splot " << quoted(data.string()) << " using 1:2:3:4 with points pt 7 ps 0.25 lc rgb variable\n";
+  }
+  return s.str();
+}
+
+// Runs `program script` with stdout and stderr into `log`; returns the exit
+// status, 127 if the program could not be started.
+int run_gnuplot(const std::string& program, const fs::path& script_file, const fs::path& log) {
+  std::fflush(nullptr);
+  const pid_t pid = fork();
+  if (pid < 0) throw std::runtime_error("fork failed");
+  if (pid == 0) {
+    if (!std::freopen(log.c_str(), "w", stdout) || dup2(fileno(stdout), 2) < 0) _exit(126);
+    execlp(program.c_str(), program.c_str(), script_file.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+std::string first_line(const fs::path& file) {
+  std::ifstream in(file);
+  std::string line;
+  while (std::getline(in, line))
+    if (line.find_first_not_of(" \t^") != std::string::npos) return line;
+  return "(no message)";
+}
+
+void move_into_place(const fs::path& from, const std::string& to) {
+  std::error_code ec;
+  fs::rename(from, to, ec);
+  if (!ec) return;
+  fs::copy_file(from, to, fs::copy_options::overwrite_existing, ec);  // across file systems
+  if (ec) throw InputError("cannot write '" + to + "': " + ec.message());
+}
+
+}  // namespace
+
+void render_png(const SnapshotScene& scene, const PlotOptions& opt, const std::string& output) {
+  const fs::path dir = fs::absolute(output).parent_path();
+  if (!fs::is_directory(dir))
+    throw InputError("cannot write '" + output + "': directory '" + dir.string() + "' does not exist");
+  TempDir tmp;
+  const fs::path data = tmp.path() / "particles.dat", png = tmp.path() / "snapshot.png";
+  const fs::path gp = tmp.path() / "snapshot.gp", log = tmp.path() / "gnuplot.log";
+  write_data(scene, data);
+  std::ofstream(gp) << script(opt, data, png);
+  const int rc = run_gnuplot(opt.gnuplot, gp, log);
+  if (rc == 127)
+    throw InputError("cannot run gnuplot ('" + opt.gnuplot +
+                     "'): not found; install the gnuplot package or pass --gnuplot PATH");
+  if (rc != 0 || !fs::exists(png) || fs::file_size(png) == 0)
+    throw InputError("gnuplot ('" + opt.gnuplot + "') failed with exit code " + std::to_string(rc) + ": " +
+                     first_line(log));
+  move_into_place(png, output);
+}
+
+}  // namespace coolgas

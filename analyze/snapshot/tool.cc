@@ -1,0 +1,55 @@
+#include "analyze/snapshot/tool.h"
+
+#include <filesystem>
+#include <ostream>
+
+#include "analyze/trajectory/frame_reader.h"
+#include "common/error.h"
+#include "common/tsv.h"
+
+namespace coolgas {
+
+namespace {
+
+Provenance provenance(const Trajectory& traj, const SnapshotToolOptions& o, const Frame& f) {
+  Provenance p = traj.provenance();
+  p.emplace_back("time", format_number(o.time));
+  p.emplace_back("dump_time", format_number(f.time));
+  p.emplace_back("view", o.scene.view == SnapshotView::kSlab ? "slab" : "3d");
+  if (o.scene.view == SnapshotView::kSlab) p.emplace_back("thickness", format_number(o.scene.thickness));
+  if (o.scene.view == SnapshotView::k3d) p.emplace_back("max_points", std::to_string(o.scene.max_points));
+  p.emplace_back("colored", std::to_string(o.scene.colored));
+  p.emplace_back("output", o.output);
+  return p;
+}
+
+std::string title(const SnapshotToolOptions& o, const Frame& f) {
+  std::string t = std::filesystem::path(o.input).filename().string() + "   t = " + format_number(f.time);
+  if (o.scene.view == SnapshotView::kSlab) t += "   slab |z - L/2| < " + format_number(0.5 * o.scene.thickness);
+  return t;
+}
+
+}  // namespace
+
+void run_snapshot(const SnapshotToolOptions& o, std::ostream& os) {
+  if (o.size_px < 100 || o.size_px > 10000)
+    throw InputError("--size must be between 100 and 10000 pixels, got " + std::to_string(o.size_px));
+  Trajectory traj(o.input, kPosition);
+  Frame frame;
+  traj.read(traj.nearest_dump(o.time), frame);
+  const ClusterGrid grid = [&] {
+    try {
+      return ClusterGrid(frame.L);
+    } catch (const InputError& e) {
+      throw InputError(o.input + ": " + e.what());
+    }
+  }();
+  const SnapshotScene scene = make_scene(grid, frame.position, o.scene);
+  render_png(scene, {title(o, frame), frame.L, o.scene.view, o.size_px, o.gnuplot}, o.output);
+  TsvWriter out(os, "coolgas-snapshot", provenance(traj, o, frame), {"rank", "mass", "fraction", "shown", "rgb"});
+  for (const auto& c : scene.clusters)
+    out.row(
+        {double(c.rank), double(c.mass), double(c.mass) / double(traj.particles()), double(c.shown), double(c.rgb)});
+}
+
+}  // namespace coolgas

@@ -1,0 +1,210 @@
+#include "analyze/trajectory/frame_reader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "common/error.h"
+
+namespace coolgas {
+
+namespace {
+
+struct ElementSpec {
+  Field field;
+  const char* path;       // the H5MD element (group holding step, time, value)
+  hsize_t per_particle;   // numbers per particle: value is (F, N, 3) or (F, N)
+};
+
+// The per-particle elements a Trajectory can read.
+constexpr ElementSpec kElements[] = {
+    {kPosition, "particles/all/position", 3},
+    {kVelocity, "particles/all/velocity", 3},
+    {kImage, "particles/all/image", 3},
+    {kId, "particles/all/id", 1},
+    {kMass, "particles/all/mass", 1},
+};
+
+// Moves the entries of present slots (keep[i]) to the front, `k` numbers each.
+template <class T>
+void compact(std::vector<T>& v, const std::vector<bool>& keep, std::size_t k) {
+  if (v.empty()) return;
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < keep.size(); ++i) {
+    if (!keep[i]) continue;
+    for (std::size_t c = 0; c < k; ++c) v[out * k + c] = v[i * k + c];
+    ++out;
+  }
+  v.resize(out * k);
+}
+
+std::string value_of(const ElementSpec& e) { return std::string(e.path) + "/value"; }
+
+// Rejects NaN and infinities, naming the first offending particle.
+void check_finite(const std::vector<double>& v, const std::string& where) {
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (!std::isfinite(v[i]))
+      throw InputError(where + " has a non-finite value (" + format_number(v[i]) + ") for particle " +
+                       std::to_string(i / 3));
+  }
+}
+
+}  // namespace
+
+Trajectory::Trajectory(const std::string& path, unsigned fields) : path_(path), fields_(fields) {
+  if (fields == 0) throw std::logic_error("Trajectory opened for no element");
+  file_ = h5::open_file(path, h5::Mode::kReadOnly);
+  aggregates_ = h5::exists(file_.id(), "particles/all/id/value");
+  if (aggregates_) fields_ |= kId | kMass;
+  std::size_t frames = SIZE_MAX;
+  for (const auto& e : kElements) {
+    if (!(fields_ & e.field)) continue;
+    check_element(e.path, e.per_particle);
+    h5::Handle value = h5::open_dataset(file_.id(), value_of(e));
+    h5::Handle time = h5::open_dataset(file_.id(), std::string(e.path) + "/time");
+    frames = std::min<std::size_t>({frames, h5::shape(value.id())[0], h5::shape(time.id())[0]});
+    if (times_.empty()) {
+      times_ = h5::read_all<double>(time.id());
+      h5::Handle step = h5::open_dataset(file_.id(), std::string(e.path) + "/step");
+      steps_ = h5::read_all<std::int64_t>(step.id());
+      frames = std::min(frames, steps_.size());
+    }
+  }
+  // A frame is complete once its /restart row exists (the writer adds it last);
+  // rows beyond it belong to a burst that a crash interrupted.
+  if (h5::exists(file_.id(), "restart/time")) {
+    h5::Handle rt = h5::open_dataset(file_.id(), "restart/time");
+    frames = std::min<std::size_t>(frames, h5::shape(rt.id())[0]);
+  }
+  if (frames == 0) throw InputError(path_ + ": the trajectory holds no dumps");
+  times_.resize(frames);
+  steps_.resize(frames);
+}
+
+void Trajectory::missing(const std::string& what) const {
+  throw InputError(path_ + ": not a coolgas trajectory: missing /" + what);
+}
+
+// Checks that an element has value/time/step and that value is (F, N, 3), or
+// (F, N) for one number per particle, with the same N as the elements checked before.
+void Trajectory::check_element(const std::string& element, hsize_t per_particle) {
+  for (const char* d : {"/value", "/time", "/step"})
+    if (!h5::exists(file_.id(), element + d)) missing(element + d);
+  h5::Handle value = h5::open_dataset(file_.id(), element + "/value");
+  const auto dims = h5::shape(value.id());
+  const bool fits = per_particle == 1 ? dims.size() == 2 : (dims.size() == 3 && dims[2] == per_particle);
+  if (!fits)
+    throw InputError(path_ + ": /" + element + "/value has the wrong shape (expected frames x particles" +
+                     (per_particle == 1 ? ")" : " x 3)"));
+  const auto n = static_cast<std::int64_t>(dims[1]);
+  if (n < 1) throw InputError(path_ + ": /" + element + "/value holds no particles");
+  if (n_ != 0 && n != n_)
+    throw InputError(path_ + ": /" + element + "/value has " + std::to_string(n) + " particles, other elements " +
+                     std::to_string(n_));
+  n_ = n;
+}
+
+std::size_t Trajectory::nearest_dump(double t) const {
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < times_.size(); ++i)
+    if (std::abs(times_[i] - t) < std::abs(times_[best] - t)) best = i;
+  return best;
+}
+
+std::vector<std::size_t> Trajectory::dumps_nearest(const std::vector<double>& times) const {
+  std::vector<std::size_t> dumps;
+  if (times.empty()) {
+    for (std::size_t i = 0; i < times_.size(); ++i) dumps.push_back(i);
+  } else {
+    for (double t : times) dumps.push_back(nearest_dump(t));
+  }
+  return dumps;
+}
+
+double Trajectory::box_side(std::size_t dump) const {
+  if (h5::exists(file_.id(), "particles/all/box/edges/value")) {
+    h5::Handle edges = h5::open_dataset(file_.id(), "particles/all/box/edges/value");
+    const auto dims = h5::shape(edges.id());
+    if (dims.size() == 3 && dims[1] == 3 && dims[2] == 3 && dump < dims[0]) {
+      const auto m = h5::read_row<double>(edges.id(), dump);
+      if (m[0] != m[4] || m[0] != m[8])
+        throw InputError(path_ + ": dump " + std::to_string(dump) + ": the box is not cubic (edges " +
+                         format_number(m[0]) + ", " + format_number(m[4]) + ", " + format_number(m[8]) + ")");
+      return m[0];
+    }
+  }
+  if (h5::exists(file_.id(), "parameters")) {
+    h5::Handle par = h5::open_group(file_.id(), "parameters");
+    if (h5::has_attr(par.id(), "L")) return h5::read_attr_double(par.id(), "L");
+  }
+  missing("particles/all/box/edges");
+}
+
+void Trajectory::read(std::size_t dump, Frame& frame) const {
+  if (dump >= times_.size())
+    throw InputError(path_ + ": no dump " + std::to_string(dump) + " (the file holds " + std::to_string(times_.size()) +
+                     ")");
+  frame.dump = dump;
+  frame.time = times_[dump];
+  frame.step = steps_[dump];
+  frame.L = box_side(dump);
+  const auto size = static_cast<std::size_t>(3 * n_);
+  const std::string where = path_ + ": dump " + std::to_string(dump) + " (t = " + format_number(frame.time) + "): /";
+  for (const auto& e : kElements) {
+    if (!(fields_ & e.field)) continue;
+    h5::Handle value = h5::open_dataset(file_.id(), value_of(e));
+    switch (e.field) {
+      case kPosition:
+        frame.position.resize(size);
+        h5::read_rows(value.id(), h5::Type::kFloat64, dump, 1, frame.position.data());
+        check_finite(frame.position, where + e.path);
+        break;
+      case kVelocity:
+        frame.velocity.resize(size);
+        h5::read_rows(value.id(), h5::Type::kFloat64, dump, 1, frame.velocity.data());
+        check_finite(frame.velocity, where + e.path);
+        break;
+      case kImage:
+        frame.image.resize(size);
+        h5::read_rows(value.id(), h5::Type::kInt32, dump, 1, frame.image.data());
+        break;
+      case kId:
+        frame.id.resize(std::size_t(n_));
+        h5::read_rows(value.id(), h5::Type::kInt32, dump, 1, frame.id.data());
+        break;
+      case kMass:
+        frame.mass.resize(std::size_t(n_));
+        h5::read_rows(value.id(), h5::Type::kFloat64, dump, 1, frame.mass.data());
+        check_finite(frame.mass, where + e.path);
+        break;
+    }
+  }
+  if (aggregates_) keep_present(frame);
+}
+
+// Keeps the slots whose id is not the fill value -1: one entry per aggregate.
+void Trajectory::keep_present(Frame& frame) const {
+  std::vector<bool> keep(frame.id.size());
+  for (std::size_t i = 0; i < keep.size(); ++i) keep[i] = frame.id[i] >= 0;
+  compact(frame.position, keep, 3);
+  compact(frame.velocity, keep, 3);
+  compact(frame.image, keep, 3);
+  compact(frame.mass, keep, 1);
+  compact(frame.id, keep, 1);
+  if (frame.id.empty())
+    throw InputError(path_ + ": dump " + std::to_string(frame.dump) + " holds no aggregate (every id is -1)");
+}
+
+Provenance Trajectory::provenance() const {
+  Provenance p{{"input", path_}};
+  if (!h5::exists(file_.id(), "parameters")) return p;
+  h5::Handle par = h5::open_group(file_.id(), "parameters");
+  for (const char* key : {"N", "seed"})
+    if (h5::has_attr(par.id(), key)) p.emplace_back(key, std::to_string(h5::read_attr_int(par.id(), key)));
+  for (const char* key : {"L", "phi", "r0", "delta"})
+    if (h5::has_attr(par.id(), key)) p.emplace_back(key, format_number(h5::read_attr_double(par.id(), key)));
+  if (h5::has_attr(par.id(), "model")) p.emplace_back("model", h5::read_attr_string(par.id(), "model"));
+  return p;
+}
+
+}  // namespace coolgas

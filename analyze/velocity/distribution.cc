@@ -1,0 +1,65 @@
+#include "analyze/velocity/distribution.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "common/error.h"
+#include "common/tsv.h"
+
+namespace coolgas {
+
+// kappa + 5/3 = R = a / b² with a = <s⁴>, b = <s²> (s the speed). Its standard
+// error by the delta method (first-order expansion of R in the sample means):
+//   Var(R) = [Var(s⁴)/b⁴ - 4a Cov(s⁴, s²)/b⁵ + 4a² Var(s²)/b⁶] / N.
+// For a Maxwellian (s² ~ χ²₃ in units of T: moments 3, 15, 105, 945) this is
+// 40/(27 N); the velocity tests check that value.
+SpeedMoments speed_moments(std::span<const double> v) {
+  const std::size_t n = v.size() / 3;
+  if (n < 2) throw InputError("velocity statistics need at least 2 particles, got " + std::to_string(n));
+  auto speed2 = [&](std::size_t p) {
+    return v[3 * p] * v[3 * p] + v[3 * p + 1] * v[3 * p + 1] + v[3 * p + 2] * v[3 * p + 2];
+  };
+  double sum2 = 0, sum4 = 0;
+  for (std::size_t p = 0; p < n; ++p) {
+    const double s2 = speed2(p);
+    sum2 += s2;
+    sum4 += s2 * s2;
+  }
+  const double N = double(n), b = sum2 / N, a = sum4 / N;
+  if (!(b > 0)) throw InputError("all velocities are zero: v_rms = 0, the scaled distribution is undefined");
+  double var2 = 0, var4 = 0, cov = 0;  // second pass: centred sums, accurate for large N
+  for (std::size_t p = 0; p < n; ++p) {
+    const double d2 = speed2(p) - b, d4 = speed2(p) * speed2(p) - a;
+    var2 += d2 * d2;
+    var4 += d4 * d4;
+    cov += d2 * d4;
+  }
+  var2 /= N - 1;
+  var4 /= N - 1;
+  cov /= N - 1;
+  const double var_r = (var4 / std::pow(b, 4) - 4 * a * cov / std::pow(b, 5) + 4 * a * a * var2 / std::pow(b, 6)) / N;
+  return {std::int64_t(n), std::sqrt(b / 3), a / (b * b) - 5.0 / 3.0, std::sqrt(std::max(var_r, 0.0))};
+}
+
+ComponentHistogram::ComponentHistogram(int bins, double ymax) : ymax_(ymax) {
+  if (bins < 2 || bins % 2 != 0)
+    throw InputError("--bins must be even and >= 2 (bins mirror about y = 0), got " + std::to_string(bins));
+  if (!(ymax > 0) || !std::isfinite(ymax))
+    throw InputError("--ymax must be a positive number, got " + format_number(ymax));
+  width_ = 2 * ymax / bins;
+  count_.assign(static_cast<std::size_t>(bins), 0);
+}
+
+void ComponentHistogram::fill(std::span<const double> v, double v_rms) {
+  std::fill(count_.begin(), count_.end(), 0);
+  samples_ = static_cast<std::int64_t>(v.size());
+  const double scale = 1.0 / (v_rms * width_);
+  const double nb = double(count_.size());
+  for (double c : v) {
+    const double u = c * scale + 0.5 * nb;  // bin coordinate: 0 at y = -ymax
+    if (u >= 0 && u < nb) ++count_[static_cast<std::size_t>(u)];
+  }
+}
+
+}  // namespace coolgas

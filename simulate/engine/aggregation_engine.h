@@ -1,0 +1,115 @@
+// Ballistic aggregation (the paper's BA): spheres move ballistically and two
+// aggregates that touch become one, at their centre of mass, with the summed
+// mass and volume (diameter (d1³ + d2³)^{1/3}) and the momentum-conserving
+// velocity. The new aggregate may overlap others: those merge too, at the
+// same instant, until no pair overlaps (chain aggregation), across periodic
+// images. Masses are in particle masses, diameters in particle diameters.
+//
+// An event-driven engine of its own (particles change in number and size),
+// built from the same parts as Engine<Rule>: the cell grid (cell_grid.h), the
+// event calendar (event_calendar.h), the contact time (pair_prediction.h with
+// σ = (d_i + d_j)/2), one event per aggregate, lazy positions and lazy
+// invalidation by counters. The grid follows the aggregates: its cells are
+// at least as wide as the largest diameter (so touching aggregates sit in
+// neighbouring cells) and about one aggregate wide on average, and it is
+// rebuilt when the largest diameter outgrows a cell or when aggregates have
+// become much fewer than cells.
+//
+// Ids are stable: aggregate i lives in slot i for ever; a merge keeps the
+// smaller id and empties the other slot (id -1, mass and diameter 0, position
+// and velocity 0), which is how dumps mark absent aggregates.
+#pragma once
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "simulate/engine/engine.h"
+
+namespace coolgas {
+
+// Mass, diameter and presence of each slot (set-up and resume).
+struct AggregateState {
+  std::vector<double> mass;
+  std::vector<double> diameter;
+  std::vector<std::int32_t> id;  // i, or -1 for an empty slot
+
+  static AggregateState unit_spheres(std::size_t n);  // n particles of mass 1, diameter 1
+};
+
+// The aggregates no longer fit a cell grid of three cells per side (the
+// largest diameter exceeds L/3): the system is too small for what follows.
+struct AggregateTooLargeError : CollapseError {
+  using CollapseError::CollapseError;
+};
+
+class AggregationEngine final : public EngineBase {
+ public:
+  // Aggregates as they are at time `now` (positions valid at now).
+  AggregationEngine(Particles particles, AggregateState aggregates, double now, const EngineCounters& counters = {});
+
+  // Counters: `collisions` counts merges (each merge of a chain is one).
+  RunStatus run_until(double t_stop, std::int64_t max_events, const volatile std::sig_atomic_t* interrupt) override;
+  void synchronize() override;
+  double now() const override { return now_; }
+  std::size_t size() const override { return m_.size(); }
+  double box() const override { return L_; }
+  const Motion* motion() const override { return m_.data(); }
+  const Image* images() const override { return image_.data(); }
+  Particles snapshot() const override;
+  const EngineCounters& counters() const override { return c_; }
+  void record_collisions(std::vector<CollisionRecord>* log) override { log_ = log; }
+  std::int64_t calendar_years() const override { return calendar_.years(); }
+  const double* masses() const override { return mass_.data(); }
+  const double* diameters() const override { return diam_.data(); }
+  const std::int32_t* ids() const override { return id_.data(); }
+
+  std::size_t aggregates() const { return alive_; }
+  double largest_diameter() const { return dmax_; }
+  double cell_width() const { return grid_ ? grid_->width() : 0.0; }
+
+ private:
+  bool present(int i) const { return id_[i] >= 0; }
+  void advance(int i);
+  void wrap(int i);
+  bool rebuild_grid();
+  [[noreturn]] void throw_too_large() const;
+  bool grid_outdated() const;
+  void predict_all();
+  void find_event(int i);
+  void scan_cell(int i, int cell, const Vec3& shift, double& best, int& code) const;
+  void cross(int i, int code);
+  void merge_chain(int i, int j);
+  int merge(int a, int b);
+  int first_overlap(int k);
+  Vec3 separation(int a, int b) const;  // r_b - r_a at now_, minimum image
+
+  double L_;
+  std::vector<Motion> m_;
+  std::vector<Image> image_;
+  std::vector<double> mass_, diam_;
+  std::vector<std::int32_t> id_;
+  std::size_t alive_ = 0;
+  double dmax_ = 0;
+  bool too_large_ = false;  // the largest aggregate no longer fits the grid: run_until() throws
+  std::unique_ptr<CellGrid> grid_;
+  EventCalendar calendar_;
+  std::vector<double> event_time_;
+  std::vector<std::int32_t> partner_;         // >= 0: partner slot; < 0: cell face to cross (-1 - face)
+  std::vector<std::uint32_t> partner_count_;  // partner's count when the event was predicted
+  double now_;
+  EngineCounters c_;
+  std::vector<CollisionRecord>* log_ = nullptr;
+};
+
+// What the aggregation observables report: number of aggregates, mean and
+// largest mass, kinetic energy per initial particle (Σ ½ m v² / N) and total
+// momentum, summed in id order with compensation.
+struct AggregateSummary {
+  std::int64_t aggregates = 0;
+  double mean_mass = 0, largest_mass = 0;
+  double kinetic_energy = 0;
+  Vec3 momentum;
+};
+AggregateSummary summarize_aggregates(const EngineBase& e);
+
+}  // namespace coolgas

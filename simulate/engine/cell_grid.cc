@@ -1,0 +1,100 @@
+#include "simulate/engine/cell_grid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace coolgas {
+
+namespace {
+// Cells are made a hair wider than the diameter so that two touching spheres
+// are never two cells apart, even with positions rounded at the last digit.
+constexpr double kWidthMargin = 1.0 + 1e-9;
+}  // namespace
+
+std::string check_box_fits_grid(double L, double min_width) {
+  if (std::floor(L / (min_width * kWidthMargin)) >= 3) return "";
+  std::ostringstream s;
+  s << "box side L = " << L << " is too small: the cell grid needs L >= " << 3 * min_width * kWidthMargin
+    << " (three cells of one diameter); use more particles or a lower phi";
+  return s.str();
+}
+
+CellGrid::CellGrid(double L, double min_width, std::size_t n) {
+  const std::string err = check_box_fits_grid(L, min_width);
+  if (!err.empty()) throw std::invalid_argument(err);
+  n_ = static_cast<int>(std::floor(L / (min_width * kWidthMargin)));
+  inv_n_ = 1.0 / n_;
+  w_ = L / n_;
+  head_.assign(static_cast<std::size_t>(cell_count()), -1);
+  own_next_.assign(n, -1);
+  next_ = own_next_.data();
+  prev_.assign(n, -1);
+  cell_.assign(n, -1);
+}
+
+int CellGrid::cell_of(double x, double y, double z) const {
+  auto c = [this](double u) { return std::clamp(static_cast<int>(std::floor(u / w_)), 0, n_ - 1); };
+  return index({c(x), c(y), c(z)});
+}
+
+void CellGrid::insert(int p, int cell) {
+  cell_[p] = cell;
+  prev_[p] = -1;
+  link(p) = head_[cell];
+  if (head_[cell] >= 0) prev_[head_[cell]] = p;
+  head_[cell] = p;
+}
+
+void CellGrid::remove(int p) {
+  const int c = cell_[p];
+  const int nxt = link(p);
+  if (prev_[p] >= 0) link(prev_[p]) = nxt;
+  else head_[c] = nxt;
+  if (nxt >= 0) prev_[nxt] = prev_[p];
+  cell_[p] = -1;
+}
+
+CellExit first_cell_exit(const CellGrid& grid, int cell, const Vec3& r, const Vec3& v) {
+  const double w = grid.width();
+  const CellCoord c = grid.coord(cell);
+  const int cc[3] = {c.x, c.y, c.z};
+  CellExit exit{std::numeric_limits<double>::infinity(), -1};
+  for (int d = 0; d < 3; ++d) {
+    if (v[d] > 0) {
+      const double t = std::max(0.0, ((cc[d] + 1) * w - r[d]) / v[d]);
+      if (t < exit.time) exit = {t, 2 * d + 1};
+    } else if (v[d] < 0) {
+      const double t = std::max(0.0, (cc[d] * w - r[d]) / v[d]);
+      if (t < exit.time) exit = {t, 2 * d};
+    }
+  }
+  return exit;
+}
+
+int cell_across_face(const CellGrid& grid, int cell, int face, double L, Vec3& r, Image& image) {
+  const int d = face / 2;
+  const bool up = face % 2 == 1;
+  CellCoord c = grid.coord(cell);
+  int* cd = d == 0 ? &c.x : (d == 1 ? &c.y : &c.z);
+  const int n = grid.cells_per_side();
+  if (up && ++*cd == n) {
+    *cd = 0;
+    r[d] -= L;
+    ++image[d];
+  } else if (!up && --*cd < 0) {
+    *cd = n - 1;
+    r[d] += L;
+    --image[d];
+  }
+  return grid.index(c);
+}
+
+void CellGrid::clear() {
+  std::fill(head_.begin(), head_.end(), -1);
+  std::fill(cell_.begin(), cell_.end(), -1);
+}
+
+}  // namespace coolgas

@@ -1,0 +1,398 @@
+#include "simulate/engine/engine.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "common/compensated_sum.h"
+#include "simulate/engine/pair_prediction.h"
+#include "simulate/engine/spatial_order.h"
+
+namespace coolgas {
+
+namespace {
+// Offsets -1..1 along each axis: all 27 cells around.
+constexpr int kAroundLo[3] = {-1, -1, -1}, kAroundHi[3] = {1, 1, 1};
+// Inelastic collapse shows as one particle colliding again and again while
+// simulated time stops advancing: rule.collapse_limit() collisions in a row,
+// each less than kStallGap (relative to 1 + t) after the particle's previous
+// event.
+constexpr double kStallGap = 1e-11;
+}  // namespace
+
+template <class Rule>
+Engine<Rule>::Engine(Particles particles, const Rule& rule, double now, const EngineCounters& counters)
+    : L_(particles.L), rule_(rule), grid_(particles.L, 1.0, particles.size()), now_(now), c_(counters) {
+  const std::size_t n = particles.size();
+  m_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) m_[i] = {particles.r[i], particles.v[i], particles.t[i], 0, -1};
+  grid_.bind_next_links(&m_[0].next, sizeof(Motion) / sizeof(std::int32_t));
+  image_ = std::move(particles.image);
+  particles = Particles();  // the records hold it all now: free the copy before growing more arrays
+  id_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) id_[i] = std::int32_t(i);
+  calendar_.resize(n);
+  later_.resize(n);
+  if constexpr (Rule::kDissipative) stall_.assign(n, 0);
+  synchronize();
+}
+
+template <class Rule>
+Particles Engine<Rule>::snapshot() const {
+  Particles p;
+  p.L = L_;
+  p.resize(m_.size());
+  for (std::size_t i = 0; i < m_.size(); ++i) {
+    const auto id = static_cast<std::size_t>(id_[i]);
+    p.r[id] = m_[i].r;
+    p.v[id] = m_[i].v;
+    p.t[id] = m_[i].t;
+    p.image[id] = image_[i];
+  }
+  return p;
+}
+
+template <class Rule>
+void Engine<Rule>::advance(int i) {
+  Motion& m = m_[i];
+  const double dt = now_ - m.t;
+  m.r.x += m.v.x * dt;
+  m.r.y += m.v.y * dt;
+  m.r.z += m.v.z * dt;
+  m.t = now_;
+}
+
+template <class Rule>
+void Engine<Rule>::synchronize() {
+  const double L = L_;
+  for (std::size_t i = 0; i < m_.size(); ++i) {
+    advance(int(i));
+    for (int d = 0; d < 3; ++d) {
+      double& x = m_[i].r[d];
+      while (x >= L) x -= L, ++image_[i][d];
+      while (x < 0) x += L, --image_[i][d];
+      if (x >= L) x = 0;  // x was -tiny and x + L rounded up to L
+    }
+    m_[i].count = 0;
+  }
+  order_by_id();
+  built_ = false;
+}
+
+template <class Rule>
+std::vector<Vec3> Engine<Rule>::release_positions() {
+  synchronize();
+  calendar_ = EventCalendar();
+  grid_ = CellGrid();
+  image_ = {};
+  id_ = {};
+  later_ = {};
+  stall_ = {};
+  std::vector<Vec3> r(m_.size());
+  for (std::size_t i = 0; i < m_.size(); ++i) r[i] = m_[i].r;
+  m_ = {};
+  return r;
+}
+
+// Renumbers the particles along the Morton curve of their cells (ties by id,
+// so the order depends on the positions alone). Key and index share one
+// 64-bit word, so the sort holds 8 bytes per particle, not 16: the curve
+// runs through blocks of cells when the grid has more than 2^10 per side.
+template <class Rule>
+void Engine<Rule>::order_by_space() {
+  int coarse = 0;
+  while ((grid_.cells_per_side() - 1) >> coarse >= 1 << 10) ++coarse;
+  std::vector<std::uint64_t> keys(m_.size());
+  for (std::size_t i = 0; i < m_.size(); ++i) {
+    const CellCoord c = grid_.coord(grid_.cell_of(m_[i].r.x, m_[i].r.y, m_[i].r.z));
+    const std::uint64_t cell_key =
+        morton_key(std::uint32_t(c.x) >> coarse, std::uint32_t(c.y) >> coarse, std::uint32_t(c.z) >> coarse);
+    keys[i] = cell_key << 32 | i;  // i is the id: called right after synchronize()
+  }
+  std::sort(keys.begin(), keys.end());
+  std::vector<std::int32_t> order(m_.size());
+  for (std::size_t k = 0; k < keys.size(); ++k) order[k] = std::int32_t(keys[k] & 0xffffffffu);
+  keys = {};
+  apply_permutation(m_, order);
+  apply_permutation(image_, order);
+  apply_permutation(id_, order);
+}
+
+template <class Rule>
+void Engine<Rule>::order_by_id() {
+  std::vector<std::int32_t> order(m_.size());  // order[id] = where particle id is now
+  for (std::size_t i = 0; i < m_.size(); ++i) order[static_cast<std::size_t>(id_[i])] = std::int32_t(i);
+  apply_permutation(m_, order);
+  apply_permutation(image_, order);
+  apply_permutation(id_, order);
+}
+
+// Everything but the particles, rebuilt from the particles (at now_).
+template <class Rule>
+void Engine<Rule>::rebuild() {
+  order_by_space();
+  grid_.clear();
+  for (std::size_t i = 0; i < m_.size(); ++i) grid_.insert(int(i), grid_.cell_of(m_[i].r.x, m_[i].r.y, m_[i].r.z));
+  std::fill(stall_.begin(), stall_.end(), std::uint16_t{0});
+  for (std::size_t i = 0; i < m_.size(); ++i) calendar_.assign(int(i), find_event(int(i)));
+  calendar_.reset(now_);
+  built_ = true;
+}
+
+// The periodic shift that brings a particle of cell `to` next to one in cell
+// `from` (the cells are neighbours, so each coordinate differs by -1, 0 or 1
+// modulo the grid).
+template <class Rule>
+Vec3 Engine<Rule>::image_shift(int from, int to) const {
+  const CellCoord a = grid_.coord(from), b = grid_.coord(to);
+  auto shift = [&](int ca, int cb) { return cb - ca > 1 ? -L_ : (ca - cb > 1 ? L_ : 0.0); };
+  return {shift(a.x, b.x), shift(a.y, b.y), shift(a.z, b.z)};
+}
+
+template <class Rule>
+int Engine<Rule>::neighbour_cells(const CellCoord& c, const int* lo, const int* hi, int* cells,
+                                  double (*shifts)[3], bool& wraps) const {
+  const int n = grid_.cells_per_side();
+  int k = 0;
+  wraps = !(c.x > 0 && c.y > 0 && c.z > 0 && c.x < n - 1 && c.y < n - 1 && c.z < n - 1);
+  if (!wraps) {
+    // Interior cell (~90 % of them): no shifts; runs of consecutive indices per row.
+    const int home = grid_.index(c);
+    for (int oz = lo[2]; oz <= hi[2]; ++oz)
+      for (int oy = lo[1]; oy <= hi[1]; ++oy)
+        for (int ox = lo[0]; ox <= hi[0]; ++ox, ++k) cells[k] = home + (oz * n + oy) * n + ox;
+    return k;
+  }
+  const double L = L_;
+  auto wrap = [n, L](int x, double& shift) {
+    shift = x < 0 ? -L : (x >= n ? L : 0.0);
+    return x < 0 ? x + n : (x >= n ? x - n : x);
+  };
+  for (int oz = lo[2]; oz <= hi[2]; ++oz)
+    for (int oy = lo[1]; oy <= hi[1]; ++oy)
+      for (int ox = lo[0]; ox <= hi[0]; ++ox, ++k) {
+        double* s = shifts[k];
+        const int x = wrap(c.x + ox, s[0]), y = wrap(c.y + oy, s[1]), z = wrap(c.z + oz, s[2]);
+        cells[k] = grid_.index({x, y, z});
+      }
+  return k;
+}
+
+template <class Rule>
+void Engine<Rule>::scan_list(const Vec3& ri, const Vec3& vi, int first, const double* s, double& best,
+                             int& code) const {
+  double b = best;  // locals, not the references, so they can stay in registers
+  int c = code;
+  for (int j = first; j >= 0; j = m_[j].next) {
+    const Motion& mj = m_[j];
+    const double dtj = now_ - mj.t;
+    const Vec3 dr{mj.r.x + mj.v.x * dtj + s[0] - ri.x, mj.r.y + mj.v.y * dtj + s[1] - ri.y,
+                  mj.r.z + mj.v.z * dtj + s[2] - ri.z};
+    const Vec3 dv{mj.v.x - vi.x, mj.v.y - vi.y, mj.v.z - vi.z};
+    const double t = time_to_contact_unbranched(dr, dv);  // kNever for j == i
+    c = t < b ? j : c;  // selects, not branches (see time_to_contact_unbranched)
+    b = std::min(t, b);
+  }
+  best = b;
+  code = c;
+}
+
+// The first half of a partner search around cell `home`: the cells
+// (offsets lo..hi), the non-empty ones picked out without branching (about
+// two in three cells are empty, at random), their list heads read all
+// together and the first particle of each prefetched, so that the misses
+// overlap instead of following one another (the search is bound by memory
+// latency). Two searches started one after the other overlap too.
+template <class Rule>
+void Engine<Rule>::start_search(int home, const int* lo, const int* hi, Search& s) const {
+  int cells[27];
+  const int count = neighbour_cells(grid_.coord(home), lo, hi, cells, s.shifts, s.wraps);
+  s.n = 0;
+  for (int k = 0; k < count; ++k) {
+    s.heads[s.n] = grid_.first(cells[k]);
+    s.which[s.n] = k;
+    s.n += s.heads[s.n] >= 0;
+  }
+  for (int k = 0; k < s.n; ++k) __builtin_prefetch(&m_[s.heads[k]]);
+}
+
+// The second half: the earliest contact (at now_, at ri with vi) with the
+// particles of the search's cells, if earlier than best (relative to now_);
+// updates best and partner.
+template <class Rule>
+void Engine<Rule>::finish_search(const Vec3& ri, const Vec3& vi, const Search& s, double& best, int& partner) const {
+  static constexpr double kNoShift[3] = {0, 0, 0};
+  for (int k = 0; k < s.n; ++k) scan_list(ri, vi, s.heads[k], s.wraps ? s.shifts[s.which[k]] : kNoShift, best, partner);
+}
+
+// The event of particle i (at now_ at ri with vi) given its earliest
+// collision: that collision, or its first cell crossing if that comes first
+// (ties go to the crossing); the collision is then kept in later_.
+template <class Rule>
+Event Engine<Rule>::earliest(int i, const Vec3& ri, const Vec3& vi, const Event& collision) {
+  const CellExit exit = first_cell_exit(grid_, grid_.cell(i), ri, vi);
+  if (collision.time < now_ + exit.time) return collision;
+  later_[i] = collision;
+  return {now_ + exit.time, exit.face >= 0 ? -1 - exit.face : -1, 0u};
+}
+
+// Particle i is at now_; finds its earliest event: the first face of its cell
+// it will cross, or an earlier contact with a particle in the 27 cells around.
+template <class Rule>
+Event Engine<Rule>::find_event(int i) {
+  Search s;
+  start_search(grid_.cell(i), kAroundLo, kAroundHi, s);
+  return finish_event(i, s);
+}
+
+// find_event() once the search of the 27 cells around i has been started.
+template <class Rule>
+Event Engine<Rule>::finish_event(int i, const Search& s) {
+  const Vec3 ri = m_[i].r, vi = m_[i].v;
+  double best = kNever;
+  int partner = -1;
+  finish_search(ri, vi, s, best, partner);
+  if (partner < 0) return earliest(i, ri, vi, Event{});
+  return earliest(i, ri, vi, {now_ + best, partner, m_[partner].count});
+}
+
+// Particle i crosses `face` of its cell into the next one, its velocity
+// unchanged; returns its next event. Its kept collision is still the
+// earliest with the particles that were its neighbours if that partner has
+// not collided since (any other that has collided has searched again itself,
+// and found i if due); only the layer of 9 cells beyond the new cell has to
+// be searched. That search is started first, so its loads are in flight
+// while the grid is updated and the partner checked.
+template <class Rule>
+Event Engine<Rule>::cross(int i, int face) {
+  const Event kept = later_[i];
+  if (kept.partner >= 0) __builtin_prefetch(&m_[kept.partner]);
+  advance(i);
+  const int to = cell_across_face(grid_, grid_.cell(i), face, L_, m_[i].r, image_[i]);
+  const int d = face / 2, side = face % 2 == 1 ? 1 : -1;
+  int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
+  lo[d] = hi[d] = side;
+  Search s;
+  start_search(to, lo, hi, s);
+  grid_.move(i, to);
+  if (kept.partner >= 0 && m_[kept.partner].count != kept.partner_count) return find_event(i);
+  const Vec3 ri = m_[i].r, vi = m_[i].v;
+  double best = kept.time - now_;
+  int partner = -1;
+  finish_search(ri, vi, s, best, partner);
+  if (partner < 0) return earliest(i, ri, vi, kept);
+  return earliest(i, ri, vi, {now_ + best, partner, m_[partner].count});
+}
+
+template <class Rule>
+void Engine<Rule>::note_collision_gap(int i, double gap, int partner) {
+  if constexpr (Rule::kDissipative) {  // elastic spheres cannot collapse
+    if (gap > kStallGap * (1.0 + now_)) {
+      stall_[i] = 0;
+      return;
+    }
+    if (++stall_[i] < rule_.collapse_limit()) return;
+    std::ostringstream s;
+    s << "inelastic collapse at t = " << now_ << ": particle " << id_[i] << " collided " << rule_.collapse_limit()
+      << " times in a row (last with particle " << id_[partner] << ") without simulated time advancing";
+    throw CollapseError(s.str(), now_);
+  }
+}
+
+template <class Rule>
+void Engine<Rule>::collide(int i, int j) {
+  note_collision_gap(i, now_ - m_[i].t, j);
+  note_collision_gap(j, now_ - m_[j].t, i);
+  advance(i);
+  advance(j);
+  const Vec3 s = image_shift(grid_.cell(i), grid_.cell(j));
+  const Vec3& ri = m_[i].r;
+  const Vec3& rj = m_[j].r;
+  Vec3 n{rj.x + s.x - ri.x, rj.y + s.y - ri.y, rj.z + s.z - ri.z};
+  const double inv = 1.0 / std::sqrt(dot(n, n));
+  n = {n.x * inv, n.y * inv, n.z * inv};
+  Vec3& vi = m_[i].v;
+  Vec3& vj = m_[j].v;
+  const double g = (vi.x - vj.x) * n.x + (vi.y - vj.y) * n.y + (vi.z - vj.z) * n.z;
+  if (g > 0) {  // approaching (always, but for round-off at grazing contact)
+    bool below = false;
+    const double r = rule_.restitution(g, below);
+    apply_restitution(vi, vj, n, g, r);
+    c_.below_delta += below;
+  }
+  ++m_[i].count;
+  ++m_[j].count;
+  ++c_.collisions;
+  if (log_) log_->push_back({std::min(id_[i], id_[j]), std::max(id_[i], id_[j]), now_});
+}
+
+template <class Rule>
+RunStatus Engine<Rule>::run_until(double t_stop, std::int64_t max_events, const volatile std::sig_atomic_t* interrupt) {
+  if (!built_) rebuild();
+  const std::int64_t last_event = c_.events + max_events;
+  while (true) {
+    if (RunStatus paused; pause_due(c_.events, last_event, interrupt, paused)) return paused;
+    const int i = calendar_.top();
+    if (i < 0) break;
+    for (int k = 0; k < 2; ++k)
+      if (const int next = calendar_.runner_up(k); next >= 0) {
+        // Its calendar entry is in cache (it was touched when the bucket was
+        // sorted); what the event will read next is not.
+        __builtin_prefetch(&m_[next]);
+        grid_.prefetch_cell(next);
+        const int partner = calendar_.event(next).partner;
+        if (partner >= 0) {  // its record and its own calendar entry (to be rescheduled)
+          __builtin_prefetch(&m_[partner]);
+          grid_.prefetch_cell(partner);
+          calendar_.prefetch_event(partner);
+        }
+      }
+    const Event ev = calendar_.event(i);
+    if (ev.time > t_stop) break;
+    now_ = ev.time;
+    ++c_.events;
+    const int code = ev.partner;
+    if (code >= 0) {
+      if (m_[code].count != ev.partner_count) {  // partner collided since: stale
+        ++c_.stale;
+        advance(i);
+        calendar_.schedule(i, find_event(i));
+        continue;
+      }
+      // Both searches are started before either is finished, and before the
+      // collision itself (they read only cells): their misses overlap with
+      // each other and with the collision's arithmetic.
+      Search si, sj;
+      start_search(grid_.cell(i), kAroundLo, kAroundHi, si);
+      start_search(grid_.cell(code), kAroundLo, kAroundHi, sj);
+      collide(i, code);
+      calendar_.schedule(i, finish_event(i, si));
+      calendar_.schedule(code, finish_event(code, sj));
+    } else {
+      calendar_.schedule(i, cross(i, -1 - code));
+    }
+  }
+  now_ = std::max(now_, t_stop);
+  return RunStatus::kReached;
+}
+
+double kinetic_energy_per_particle(const EngineBase& e) {
+  CompensatedSum s;
+  const Motion* m = e.motion();
+  for (std::size_t i = 0; i < e.size(); ++i) s.add(0.5 * dot(m[i].v, m[i].v));
+  return s.value() / double(e.size());
+}
+
+Vec3 total_momentum(const EngineBase& e) {
+  CompensatedSum s[3];
+  const Motion* m = e.motion();
+  for (std::size_t i = 0; i < e.size(); ++i)
+    for (int d = 0; d < 3; ++d) s[d].add(m[i].v[d]);
+  return {s[0].value(), s[1].value(), s[2].value()};
+}
+
+template class Engine<ElasticRule>;
+template class Engine<ConstantRestitutionRule>;
+template class Engine<ViscoelasticRule>;
+
+}  // namespace coolgas

@@ -1,0 +1,194 @@
+#include "simulate/engine/event_calendar.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace coolgas {
+
+namespace {
+// Buckets per particle and target events per bucket. One event per particle
+// is pending; with ~2 events per bucket and ~1 bucket per particle the year
+// spans about twice the mean time to a particle's next event.
+constexpr double kEventsPerBucket = 2.0;
+}  // namespace
+
+void EventCalendar::resize(std::size_t n) {
+  entry_.assign(n, Entry{});
+  std::int32_t nb = 1;
+  while (std::size_t(nb) < std::max<std::size_t>(n, 1)) nb *= 2;
+  nb_ = nb;
+  heads_.assign(std::size_t(nb_) + 1, kNone);
+  heap_.clear();
+  ahead_ = kNone;
+}
+
+void EventCalendar::reset(double now) {
+  std::fill(heads_.begin(), heads_.end(), kNone);
+  heap_.clear();
+  ahead_ = kNone;
+  // Put everything in overflow, then let start_year distribute it.
+  for (std::size_t p = 0; p < entry_.size(); ++p) {
+    entry_[p].where = kNone;
+    if (std::isfinite(time(int(p)))) link(int(p), nb_);
+  }
+  years_ = 0;
+  start_year(now);
+}
+
+// Chooses Δ from the pending events: their mean distance ahead of the year's
+// start, clipped so a few far-off events (nearly resting particles) cannot
+// stretch the buckets, spread at kEventsPerBucket per bucket.
+void EventCalendar::start_year(double base) {
+  ++years_;
+  std::int64_t count = 0;
+  double sum = 0;
+  for (int p = heads_[nb_]; p != kNone; p = entry_[p].next) {
+    sum += time(p) - base;
+    ++count;
+  }
+  if (count > 0) {
+    const double mean = sum / double(count);
+    double clipped = 0;
+    for (int p = heads_[nb_]; p != kNone; p = entry_[p].next) clipped += std::min(time(p) - base, 3.0 * mean);
+    const double span = 2.0 * clipped / double(count);  // ~ the range holding most events
+    const double w = span * kEventsPerBucket / double(count);
+    if (w > 0 && std::isfinite(w)) width_ = w;
+  }
+  // Keep Δ representable relative to the base time (late, slow gases).
+  width_ = std::max(width_, std::fabs(base) * 1e-15 + 1e-300);
+  inv_width_ = 1.0 / width_;
+  base_ = base;
+  current_ = 0;
+  int p = heads_[nb_];
+  heads_[nb_] = kNone;
+  while (p != kNone) {
+    const int nxt = entry_[p].next;
+    entry_[p].where = kNone;
+    insert(p);  // bucket 0 is the current bucket: insert() puts it in the heap
+    p = nxt;
+  }
+}
+
+void EventCalendar::insert(int p) {
+  const double offset = (time(p) - base_) * inv_width_;
+  if (offset < double(current_) + 1.0) {  // in (or, after a new year, before) the current bucket
+    heap_push(p);
+  } else if (offset >= double(nb_)) {
+    link(p, nb_);
+  } else {
+    link(p, static_cast<int>(offset));
+  }
+}
+
+void EventCalendar::schedule(int p, const Event& e) {
+  erase(p);
+  entry_[p].event = e;
+  if (std::isfinite(e.time)) insert(p);
+}
+
+void EventCalendar::erase(int p) {
+  const std::int32_t w = entry_[p].where;
+  if (w == kNone) return;
+  if (w <= -2) heap_erase(-2 - w);
+  else unlink(p);
+}
+
+int EventCalendar::top() {
+  while (heap_.empty())
+    if (!advance_bucket()) return -1;
+  // One more step along the next bucket's list: its entries are in cache by
+  // the time it opens, instead of being loaded one miss after another. Only
+  // prefetches: a link that changed meanwhile costs nothing but the miss.
+  if (ahead_ != kNone) {
+    ahead_ = entry_[ahead_].next;
+    if (ahead_ != kNone) __builtin_prefetch(&entry_[ahead_]);
+  }
+  return heap_[0];
+}
+
+bool EventCalendar::advance_bucket() {
+  while (++current_ < nb_) {
+    int p = heads_[current_];
+    if (p == kNone) continue;
+    heads_[current_] = kNone;
+    // The next bucket's events are loaded while this one's are processed (top()).
+    ahead_ = current_ + 1 < nb_ ? heads_[current_ + 1] : kNone;
+    if (ahead_ != kNone) __builtin_prefetch(&entry_[ahead_]);
+    while (p != kNone) {
+      const int nxt = entry_[p].next;
+      entry_[p].where = kNone;
+      heap_push(p);
+      p = nxt;
+    }
+    return true;
+  }
+  if (heads_[nb_] == kNone) return false;  // nothing left anywhere
+  start_year(base_ + double(nb_) * width_);
+  return true;
+}
+
+void EventCalendar::link(int p, int list) {
+  Entry& e = entry_[p];
+  e.where = list;
+  e.prev = kNone;
+  e.next = heads_[list];
+  if (heads_[list] != kNone) entry_[heads_[list]].prev = p;
+  heads_[list] = p;
+}
+
+void EventCalendar::unlink(int p) {
+  Entry& e = entry_[p];
+  if (e.prev != kNone) entry_[e.prev].next = e.next;
+  else heads_[e.where] = e.next;
+  if (e.next != kNone) entry_[e.next].prev = e.prev;
+  e.where = kNone;
+}
+
+void EventCalendar::heap_push(int p) {
+  heap_.push_back(p);
+  entry_[p].where = -2 - std::int32_t(heap_.size() - 1);
+  sift_up(int(heap_.size()) - 1);
+}
+
+void EventCalendar::heap_erase(int pos) {
+  const int p = heap_[pos];
+  const int last = heap_.back();
+  heap_.pop_back();
+  entry_[p].where = kNone;
+  if (pos == int(heap_.size())) return;
+  heap_[pos] = last;
+  entry_[last].where = -2 - pos;
+  sift_up(pos);
+  sift_down(-2 - entry_[last].where);
+}
+
+void EventCalendar::sift_up(int pos) {
+  const int p = heap_[pos];
+  while (pos > 0) {
+    const int parent = (pos - 1) / 2;
+    if (!earlier(p, heap_[parent])) break;
+    heap_[pos] = heap_[parent];
+    entry_[heap_[pos]].where = -2 - pos;
+    pos = parent;
+  }
+  heap_[pos] = p;
+  entry_[p].where = -2 - pos;
+}
+
+void EventCalendar::sift_down(int pos) {
+  const int n = int(heap_.size());
+  const int p = heap_[pos];
+  while (true) {
+    int child = 2 * pos + 1;
+    if (child >= n) break;
+    if (child + 1 < n && earlier(heap_[child + 1], heap_[child])) ++child;
+    if (!earlier(heap_[child], p)) break;
+    heap_[pos] = heap_[child];
+    entry_[heap_[pos]].where = -2 - pos;
+    pos = child;
+  }
+  heap_[pos] = p;
+  entry_[p].where = -2 - pos;
+}
+
+}  // namespace coolgas

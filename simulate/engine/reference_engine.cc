@@ -1,0 +1,74 @@
+#include "simulate/engine/reference_engine.h"
+
+#include <cmath>
+#include <queue>
+#include <tuple>
+
+#include "simulate/engine/pair_prediction.h"
+
+namespace coolgas {
+
+namespace {
+
+struct PairEvent {
+  double t;
+  int i, j;
+  std::uint32_t ci, cj;  // collision counts of i and j when predicted
+  bool operator>(const PairEvent& o) const { return std::tie(t, i, j) > std::tie(o.t, o.i, o.j); }
+};
+
+Vec3 minimum_image(const Particles& p, int i, int j) {
+  Vec3 d{p.r[j].x - p.r[i].x, p.r[j].y - p.r[i].y, p.r[j].z - p.r[i].z};
+  for (int k = 0; k < 3; ++k) d[k] -= p.L * std::round(d[k] / p.L);
+  return d;
+}
+
+}  // namespace
+
+template <class Rule>
+std::vector<CollisionRecord> reference_collisions(Particles p, const Rule& rule, double now, double t_end,
+                                                  std::int64_t max_collisions) {
+  const int n = int(p.size());
+  std::vector<std::uint32_t> count(n, 0);
+  std::priority_queue<PairEvent, std::vector<PairEvent>, std::greater<>> queue;
+  auto predict = [&](int i) {
+    for (int j = 0; j < n; ++j) {
+      if (j == i) continue;
+      const Vec3 dv{p.v[j].x - p.v[i].x, p.v[j].y - p.v[i].y, p.v[j].z - p.v[i].z};
+      const double t = time_to_contact(minimum_image(p, i, j), dv);
+      if (t != kNever) queue.push({now + t, std::min(i, j), std::max(i, j), count[std::min(i, j)], count[std::max(i, j)]});
+    }
+  };
+  for (int i = 0; i < n; ++i) predict(i);
+  std::vector<CollisionRecord> out;
+  while (!queue.empty() && std::int64_t(out.size()) < max_collisions) {
+    const PairEvent e = queue.top();
+    queue.pop();
+    if (e.t > t_end) break;
+    if (count[e.i] != e.ci || count[e.j] != e.cj) continue;  // one of them collided since
+    for (int k = 0; k < n; ++k) {                             // everyone to the event time
+      for (int d = 0; d < 3; ++d) p.r[k][d] += p.v[k][d] * (e.t - now);
+    }
+    now = e.t;
+    Vec3 nrm = minimum_image(p, e.i, e.j);
+    const double len = std::sqrt(dot(nrm, nrm));
+    for (int d = 0; d < 3; ++d) nrm[d] /= len;
+    const Vec3 dv{p.v[e.i].x - p.v[e.j].x, p.v[e.i].y - p.v[e.j].y, p.v[e.i].z - p.v[e.j].z};
+    const double g = dot(dv, nrm);
+    bool below = false;
+    if (g > 0) apply_restitution(p.v[e.i], p.v[e.j], nrm, g, rule.restitution(g, below));
+    ++count[e.i];
+    ++count[e.j];
+    out.push_back({e.i, e.j, now});
+    predict(e.i);
+    predict(e.j);
+  }
+  return out;
+}
+
+template std::vector<CollisionRecord> reference_collisions(Particles, const ElasticRule&, double, double,
+                                                           std::int64_t);
+template std::vector<CollisionRecord> reference_collisions(Particles, const ConstantRestitutionRule&, double,
+                                                           double, std::int64_t);
+
+}  // namespace coolgas

@@ -1,0 +1,18 @@
+// Chooses, once at start-up, the engine instantiation for the scene's
+// collision model, so the hot loop is compiled for exactly that rule.
+#pragma once
+#include <memory>
+
+#include "simulate/engine/aggregation_engine.h"
+#include "simulate/engine/engine.h"
+#include "simulate/run/scene.h"
+
+namespace coolgas {
+
+// `aggregates` (aggregation only; resume): the slots' masses, diameters and
+// ids; by default every particle is a unit sphere.
+std::unique_ptr<EngineBase> make_engine(const Scene& scene, Particles particles, double now,
+                                        const EngineCounters& counters = {},
+                                        const AggregateState* aggregates = nullptr);
+
+}  // namespace coolgas

@@ -1,0 +1,97 @@
+#include "simulate/start/initial_state.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <string>
+
+#include "common/error.h"
+#include "common/tsv.h"
+#include "simulate/engine/engine.h"
+#include "simulate/start/enskog.h"
+#include "common/random.h"
+#include "simulate/start/rsa_voxels.h"
+
+namespace coolgas {
+
+namespace {
+
+// N of the 4k³ sites of the smallest FCC lattice holding N, chosen at random.
+void place_fcc(Particles& p, std::int64_t N, Random& rng) {
+  const auto k = static_cast<std::int64_t>(std::ceil(std::cbrt(double(N) / 4.0) - 1e-12));
+  const std::int64_t sites = 4 * k * k * k;
+  const double a = p.L / double(k);
+  if (a / std::sqrt(2.0) < 1.0 + 1e-9)
+    throw InputError("system.phi = " + format_number(double(N) * M_PI / (6 * p.L * p.L * p.L)) +
+                     " is too dense for an FCC lattice of " + std::to_string(sites) +
+                     " sites in this box (neighbour distance " + format_number(a / std::sqrt(2.0)) +
+                     " < 1); lower phi or choose N = 4k^3");
+  std::vector<std::int64_t> idx(static_cast<std::size_t>(sites));
+  std::iota(idx.begin(), idx.end(), 0);
+  for (std::int64_t i = 0; i < N; ++i) std::swap(idx[i], idx[i + std::int64_t(rng.below(std::uint64_t(sites - i)))]);
+  std::sort(idx.begin(), idx.begin() + N);
+  static const double basis[4][3] = {{0, 0, 0}, {0.5, 0.5, 0}, {0.5, 0, 0.5}, {0, 0.5, 0.5}};
+  for (std::int64_t i = 0; i < N; ++i) {
+    const std::int64_t s = idx[i], cell = s / 4, b = s % 4;
+    const std::int64_t cx = cell % k, cy = (cell / k) % k, cz = cell / (k * k);
+    p.r[i] = {(double(cx) + basis[b][0] + 0.25) * a, (double(cy) + basis[b][1] + 0.25) * a,
+              (double(cz) + basis[b][2] + 0.25) * a};
+  }
+}
+
+// Maxwellian velocities, total momentum removed, rescaled to T0 exactly.
+void draw_velocities(Particles& p, double T0, Random& rng) {
+  Vec3 mean;
+  for (auto& v : p.v) {
+    v = {rng.normal(), rng.normal(), rng.normal()};
+    for (int d = 0; d < 3; ++d) mean[d] += v[d];
+  }
+  const double n = double(p.size());
+  double sum2 = 0;
+  for (auto& v : p.v) {
+    for (int d = 0; d < 3; ++d) v[d] -= mean[d] / n;
+    sum2 += dot(v, v);
+  }
+  const double scale = std::sqrt(T0 * 3.0 * n / sum2);
+  for (auto& v : p.v)
+    for (int d = 0; d < 3; ++d) v[d] *= scale;
+}
+
+}  // namespace
+
+double initial_temperature(const Scene& s) {
+  return unit_time_temperature(double(s.N) / (s.L * s.L * s.L), s.phi);
+}
+
+Particles initial_state(const Scene& s) {
+  Particles p;
+  p.L = s.L;
+  // Positions first, the other arrays only after the placement: its search
+  // structures and the positions are the set-up's memory peak.
+  p.r.resize(std::size_t(s.N));
+  Random rng(std::uint64_t(s.seed));
+  if (s.init == InitialPositions::kRandom) place_random_sequential(p, s.N, rng);
+  else place_fcc(p, s.N, rng);
+  p.resize(std::size_t(s.N));
+  const double T0 = initial_temperature(s);
+  draw_velocities(p, T0, rng);
+  if (s.equilibrate > 0) {
+    // Only the relaxed positions are kept (velocities are drawn afresh), and
+    // only they coexist with the engine: this is the set-up's memory peak.
+    std::vector<Vec3> relaxed;
+    {
+      Engine<ElasticRule> melt(std::move(p), ElasticRule{}, 0.0);
+      melt.run_until(s.equilibrate, std::numeric_limits<std::int64_t>::max(), nullptr);
+      relaxed = melt.release_positions();
+    }
+    p = Particles();
+    p.L = s.L;
+    p.resize(relaxed.size());
+    p.r = std::move(relaxed);
+    draw_velocities(p, T0, rng);
+  }
+  return p;
+}
+
+}  // namespace coolgas

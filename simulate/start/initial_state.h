@@ -1,0 +1,19 @@
+// The initial state: N non-overlapping unit spheres placed at random (or on
+// an FCC lattice), relaxed into an equilibrium fluid by a short elastic run
+// (system.equilibrate), then given fresh Maxwellian velocities with zero total
+// momentum and temperature exactly T0, so that the initial mean collision
+// time is the time unit. Same scene and seed, same state, bit for bit.
+#pragma once
+#include "simulate/engine/particles.h"
+#include "simulate/run/scene.h"
+
+namespace coolgas {
+
+// Throws InputError if the positions cannot be placed (random sequential
+// addition saturating, a lattice too dense for the box).
+Particles initial_state(const Scene& scene);
+
+// The temperature of the initial state (per velocity component).
+double initial_temperature(const Scene& scene);
+
+}  // namespace coolgas

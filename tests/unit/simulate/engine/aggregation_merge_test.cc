@@ -1,0 +1,133 @@
+// Ballistic aggregation, merge by merge: two aggregates become one at their
+// centre of mass with summed mass and volume and the momentum-conserving
+// velocity (also across the periodic boundary); a constructed chain (a merge
+// whose product overlaps a third aggregate, whose product overlaps a fourth)
+// ends in one aggregate with nothing overlapping; a run restarted from a
+// synchronised state continues bit for bit.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "simulate/engine/aggregation_engine.h"
+
+namespace coolgas {
+namespace {
+
+Particles spheres(double L, const std::vector<Vec3>& r, const std::vector<Vec3>& v) {
+  Particles p;
+  p.L = L;
+  p.resize(r.size());
+  p.r = r;
+  p.v = v;
+  return p;
+}
+
+AggregationEngine engine(const Particles& p, const std::vector<double>& mass) {
+  AggregateState a = AggregateState::unit_spheres(p.size());
+  for (std::size_t i = 0; i < mass.size(); ++i) a.mass[i] = mass[i], a.diameter[i] = std::cbrt(mass[i]);
+  return AggregationEngine(p, a, 0.0);
+}
+
+TEST(AggregationMerge, TwoAggregatesConserveMassVolumeAndMomentum) {
+  // Masses 1 and 3, head on along x; every sum below is exact in binary.
+  const Particles p = spheres(12, {{4, 6, 6}, {7, 6, 6}}, {{0.75, 0.25, 0.5}, {-0.25, 0.25, 0.5}});
+  AggregationEngine e = engine(p, {1, 3});
+  const double contact = (3 - 0.5 * (1 + std::cbrt(3.0))) / 1.0;
+  e.run_until(contact + 0.5, 1000, nullptr);
+  e.synchronize();
+  ASSERT_EQ(e.aggregates(), 1u);
+  ASSERT_EQ(e.counters().collisions, 1);
+  EXPECT_EQ(e.ids()[0], 0);  // the smaller id survives
+  EXPECT_EQ(e.ids()[1], -1);
+  EXPECT_EQ(e.masses()[0], 4.0);
+  EXPECT_EQ(e.masses()[1], 0.0);
+  EXPECT_NEAR(std::pow(e.diameters()[0], 3), 4.0, 4e-15);
+  const Vec3 v = e.motion()[0].v;  // (1 * u1 + 3 * u2) / 4
+  EXPECT_EQ(v.x, 0.0);
+  EXPECT_EQ(v.y, 0.25);
+  EXPECT_EQ(v.z, 0.5);
+  // Centre of mass at contact, then carried on at v.
+  const double x1 = 4 + 0.75 * contact, x2 = 7 - 0.25 * contact;
+  EXPECT_NEAR(e.motion()[0].r.x, (x1 + 3 * x2) / 4 + v.x * 0.5, 1e-12);
+  EXPECT_NEAR(e.motion()[0].r.y, 6 + 0.25 * (contact + 0.5), 1e-12);
+}
+
+TEST(AggregationMerge, AcrossThePeriodicBoundary) {
+  const double L = 10;
+  const Particles p = spheres(L, {{0.25, 5, 5}, {L - 0.25, 5, 5}}, {{0.125, 0, 0}, {0.25, 0, 0}});
+  AggregationEngine e = engine(p, {});
+  // Already 0.5 apart through the boundary and approaching: they merge at once.
+  e.run_until(1.0, 1000, nullptr);
+  e.synchronize();
+  ASSERT_EQ(e.aggregates(), 1u);
+  // Centre of mass at x = 0 (through the boundary), then moving at 0.1875.
+  EXPECT_NEAR(e.motion()[0].r.x, 0.1875, 1e-12);
+  EXPECT_NEAR(e.motion()[0].v.x, 0.1875, 1e-15);
+  EXPECT_EQ(e.masses()[0], 2.0);
+}
+
+TEST(AggregationMerge, ChainEndsWithoutOverlapAndConservesExactly) {
+  // A and B meet at t = 1 at x = 5.05 and 6.05 (centre of mass x = 5.55);
+  // AB (diameter 2^{1/3}) then overlaps C but not D; ABC (3^{1/3}) overlaps D.
+  // Before t = 1 no two of them touch.
+  const Particles p = spheres(12, {{5.0, 5, 5}, {6.1, 5, 5}, {5.55, 6.05, 5}, {5.55, 5.35, 6.15}},
+                              {{0.05, 0, 0}, {-0.05, 0, 0}, {0, 0, 0}, {0, 0, 0}});
+  AggregationEngine e = engine(p, {});
+  std::vector<CollisionRecord> log;
+  e.record_collisions(&log);
+  e.run_until(2.0, 1000, nullptr);
+  e.synchronize();
+  ASSERT_EQ(e.aggregates(), 1u);
+  ASSERT_EQ(log.size(), 3u);
+  for (const auto& m : log) EXPECT_NEAR(m.t, 1.0, 1e-12);  // all at the same instant
+  EXPECT_EQ(log[0].j, 1);
+  EXPECT_EQ(log[1].j, 2);
+  EXPECT_EQ(log[2].j, 3);
+  EXPECT_EQ(e.masses()[0], 4.0);
+  EXPECT_NEAR(std::pow(e.diameters()[0], 3), 4.0, 1e-14);
+  EXPECT_LT(std::fabs(e.motion()[0].v.x) + std::fabs(e.motion()[0].v.y) + std::fabs(e.motion()[0].v.z), 1e-17);
+  EXPECT_NEAR(e.motion()[0].r.x, 5.55, 1e-12);
+  EXPECT_NEAR(e.motion()[0].r.y, (5 + 5 + 6.05 + 5.35) / 4, 1e-12);
+  EXPECT_NEAR(e.motion()[0].r.z, (5 + 5 + 5 + 6.15) / 4, 1e-12);
+}
+
+// A merge at a dump's time must not depend on whether the run was resumed:
+// the state right after synchronize() decides everything that follows.
+TEST(AggregationMerge, RestartFromASynchronisedStateIsBitIdentical) {
+  const double L = 14;
+  Particles p;
+  p.L = L;
+  p.resize(600);
+  std::uint64_t s = 12345;
+  auto uniform = [&s] { return double((s = s * 6364136223846793005ULL + 1442695040888963407ULL) >> 11) * 0x1.0p-53; };
+  for (std::size_t i = 0; i < p.size(); ++i) {  // 600 sites of a 9^3 lattice (spacing L/9 > 1), random velocities
+    p.r[i] = {(double(i % 9) + 0.5) * L / 9, (double(i / 9 % 9) + 0.5) * L / 9, (double(i / 81) + 0.5) * L / 9};
+    p.v[i] = {uniform() - 0.5, uniform() - 0.5, uniform() - 0.5};
+  }
+  AggregationEngine a(p, AggregateState::unit_spheres(p.size()), 0.0);
+  a.run_until(3.0, 1 << 30, nullptr);
+  a.synchronize();
+  AggregateState state;
+  state.mass.assign(a.masses(), a.masses() + a.size());
+  state.diameter.assign(a.diameters(), a.diameters() + a.size());
+  state.id.assign(a.ids(), a.ids() + a.size());
+  AggregationEngine b(a.snapshot(), state, a.now(), a.counters());
+  a.run_until(15.0, 1 << 30, nullptr);
+  b.run_until(15.0, 1 << 30, nullptr);
+  a.synchronize();
+  b.synchronize();
+  ASSERT_GT(a.counters().collisions, 100);
+  EXPECT_EQ(a.counters().collisions, b.counters().collisions);
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    ASSERT_EQ(a.ids()[i], b.ids()[i]);
+    ASSERT_EQ(a.diameters()[i], b.diameters()[i]);
+    for (int d = 0; d < 3; ++d) {
+      ASSERT_EQ(a.motion()[i].r[d], b.motion()[i].r[d]);
+      ASSERT_EQ(a.motion()[i].v[d], b.motion()[i].v[d]);
+      ASSERT_EQ(a.images()[i][d], b.images()[i][d]);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace coolgas
