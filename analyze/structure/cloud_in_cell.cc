@@ -23,17 +23,27 @@ Split split(double x, double scale, int n) {
 
 }  // namespace
 
-void assign_cloud_in_cell(FourierGrid& grid, double L, std::span<const double> positions,
-                          std::span<const double> weights) {
+void CloudInCell::assign(FourierGrid& grid, double L, std::span<const double> positions,
+                         std::span<const double> weights) {
   const int n = grid.n();
   const double scale = n / L;
-  double* g = grid.real();
   const std::size_t count = positions.size() / 3;
+  // Counting sort by the lower z plane.
+  plane_.resize(count);
+  start_.assign(std::size_t(n) + 1, 0);
   for (std::size_t p = 0; p < count; ++p) {
-    const double m = weights.empty() ? 1.0 : weights[p];
-    const Split x = split(positions[3 * p], scale, n), y = split(positions[3 * p + 1], scale, n),
-                z = split(positions[3 * p + 2], scale, n);
-    const double wx[2] = {1 - x.f, x.f}, wy[2] = {1 - y.f, y.f}, wz[2] = {m * (1 - z.f), m * z.f};
+    plane_[p] = std::uint16_t(split(positions[3 * p + 2], scale, n).lo);
+    ++start_[plane_[p] + 1];
+  }
+  for (int k = 0; k < n; ++k) start_[k + 1] += start_[k];
+  sorted_.resize(count);
+  for (std::size_t p = 0; p < count; ++p)
+    sorted_[start_[plane_[p]]++] = {positions[3 * p], positions[3 * p + 1], positions[3 * p + 2],
+                                    weights.empty() ? 1.0 : weights[p]};
+  double* g = grid.real();
+  for (const Point& q : sorted_) {
+    const Split x = split(q.x, scale, n), y = split(q.y, scale, n), z = split(q.z, scale, n);
+    const double wx[2] = {1 - x.f, x.f}, wy[2] = {1 - y.f, y.f}, wz[2] = {q.w * (1 - z.f), q.w * z.f};
     const int iy[2] = {y.lo, y.hi}, iz[2] = {z.lo, z.hi};
     for (int c = 0; c < 2; ++c)
       for (int b = 0; b < 2; ++b) {

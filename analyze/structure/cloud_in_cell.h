@@ -15,17 +15,34 @@
 // the weight 1/W(k) - 1 relative to the principal image.
 #pragma once
 #include <cmath>
+#include <cstdint>
 #include <span>
+#include <vector>
 
 #include "analyze/structure/fourier_grid.h"
 
 namespace coolgas {
 
-// Adds the particles at `positions` (x0 y0 z0 x1 ..., in [0, L) up to
-// round-off; anything else is wrapped) with weights `weights` (one per
-// particle; empty: 1 each) to the grid of a periodic box of side L.
-void assign_cloud_in_cell(FourierGrid& grid, double L, std::span<const double> positions,
-                          std::span<const double> weights = {});
+// Adds points to a FourierGrid by CIC. The points are first sorted by their
+// lower z plane (a counting sort, kept between calls): they come in id order,
+// which is spatially random, and 8e6 scattered updates of a 160 MB grid cost
+// a cache miss each; plane by plane, the two planes written stay in cache
+// (3x faster on the 272^3 grid).
+class CloudInCell {
+ public:
+  // Adds the particles at `positions` (x0 y0 z0 x1 ..., in [0, L) up to
+  // round-off; anything else is wrapped) with weights `weights` (one per
+  // particle; empty: 1 each) to the grid of a periodic box of side L.
+  void assign(FourierGrid& grid, double L, std::span<const double> positions, std::span<const double> weights = {});
+
+ private:
+  struct Point {
+    double x, y, z, w;
+  };
+  std::vector<std::uint16_t> plane_;
+  std::vector<std::int64_t> start_;
+  std::vector<Point> sorted_;
+};
 
 // The CIC window along one axis at u = m/n: sinc^2(pi u).
 inline double cic_window(double u) {

@@ -2,14 +2,13 @@
 
 #include <algorithm>
 
-#include "analyze/structure/cloud_in_cell.h"
 
 namespace coolgas {
 
 std::vector<Shell> FrameStructure::spectrum(double L, std::span<const double> positions,
                                             std::span<const double> weights) {
   grid_.clear();
-  assign_cloud_in_cell(grid_, L, positions, weights);
+  cic_.assign(grid_, L, positions, weights);
   grid_.forward();
   return shell_average(grid_, L, weights_of(weights, positions.size() / 3));
 }
@@ -29,7 +28,7 @@ std::vector<CorrelationBin> FrameStructure::momentum_correlation(double L, std::
   for (int a = 0; a < 3; ++a) {
     for (std::size_t j = 0; j < count; ++j) component_[j] = (weights.empty() ? 1.0 : weights[j]) * velocities[3 * j + a];
     grid_.clear();
-    assign_cloud_in_cell(grid_, L, positions, component_);
+    cic_.assign(grid_, L, positions, component_);
     grid_.forward();
     add_power(grid_, power_);
   }

@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "analyze/structure/cloud_in_cell.h"
 #include "analyze/structure/correlation.h"
 #include "analyze/structure/fourier_grid.h"
 #include "analyze/structure/structure_factor.h"
@@ -28,6 +29,7 @@ class FrameStructure {
 
  private:
   FourierGrid grid_;
+  CloudInCell cic_;
   std::vector<double> power_, component_;
 };
 
