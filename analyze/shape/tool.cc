@@ -84,14 +84,6 @@ void write_frame(TsvWriter& out, const ShapeOptions& o, double t, const std::vec
   }
 }
 
-ClusterGrid grid_for(const Trajectory& traj, const Frame& frame) {
-  try {
-    return ClusterGrid(frame.L);
-  } catch (const InputError& e) {
-    throw InputError(traj.path() + ": dump " + std::to_string(frame.dump) + ": " + e.what());
-  }
-}
-
 }  // namespace
 
 void run_shape(const ShapeOptions& opt, std::ostream& final_out) {
@@ -107,7 +99,7 @@ void run_shape(const ShapeOptions& opt, std::ostream& final_out) {
   for (std::size_t dump : traj.dumps_nearest(opt.times)) {
     traj.read(dump, frame);
     const std::vector<ClusterShape> s =
-        traj.aggregates() ? aggregate_shapes(frame.mass) : shapes.of_particles(grid_for(traj, frame), frame.position);
+        traj.aggregates() ? aggregate_shapes(frame.mass) : shapes.of_particles(cluster_grid_of_dump(frame.L, traj.path(), frame.dump), frame.position);
     write_frame(out, opt, frame.time, s, mass_radius(s, opt.bins_per_decade, fit));
   }
   final_out << os.str();

@@ -9,17 +9,15 @@
 // Uniformly random centres in id order, the worst case for the assignment's
 // memory access. Prints medians of 5 repeats, wall-clock and thread CPU time.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
-#include <functional>
 #include <vector>
 
 #include "analyze/structure/cloud_in_cell.h"
 #include "analyze/structure/frame_structure.h"
 #include "analyze/structure/growing_length.h"
 #include "common/random.h"
+#include "tests/bench/median_timing.h"
 
 namespace {
 
@@ -27,32 +25,9 @@ constexpr std::int64_t kN = 8'000'000;
 constexpr double kPhi = 0.208;
 const double kL = std::cbrt(kN * M_PI / (6 * kPhi));
 
-double wall_seconds() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-double cpu_seconds() {
-  timespec ts;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
-}
-
-struct Timing {
-  double wall, cpu;
-};
-
-Timing median_time(int repeats, const std::function<void()>& f) {
-  std::vector<double> wall, cpu;
-  for (int r = 0; r < repeats; ++r) {
-    const double w0 = wall_seconds(), c0 = cpu_seconds();
-    f();
-    wall.push_back(wall_seconds() - w0);
-    cpu.push_back(cpu_seconds() - c0);
-  }
-  std::sort(wall.begin(), wall.end());
-  std::sort(cpu.begin(), cpu.end());
-  return {wall[wall.size() / 2], cpu[cpu.size() / 2]};
-}
+using coolgas::bench::median_time;
+using coolgas::bench::Timing;
+using coolgas::bench::wall_seconds;
 
 void report(const char* what, const Timing& t) {
   std::printf("%-58s %7.0f ms wall, %7.0f ms cpu\n", what, 1e3 * t.wall, 1e3 * t.cpu);
