@@ -10,7 +10,7 @@
 //   rho_grid(k) = sum_{n in Z^3} W(k + 2 k_N n) rho(k + 2 k_N n),  k_N = pi/h,
 // so for independent (Poisson) particles of weights m_j its mean square is
 //   <|rho_grid(k)|^2> = (sum_j m_j^2) C1(k),  C1(k) = sum_n W^2(k + 2 k_N n) = prod_a (1 - (2/3) sin^2(pi u_a)).
-// (Jing, ApJ 620, 559 (2005), Eq. 20 with p = 2.) And sum_n W(k + 2 k_N n) = 1
+// (Jing, ApJ 620, 559 (2005), its closed form for CIC.) And sum_n W(k + 2 k_N n) = 1
 // exactly (prod_a of sum_n sin^2(pi u)/(pi (u + n))^2), so the aliases carry
 // the weight 1/W(k) - 1 relative to the principal image.
 #pragma once

@@ -12,13 +12,14 @@
 // From the cloud-in-cell grid (cloud_in_cell.h) each mode is estimated as
 //   S(k) = s + (|rho_grid(k)|^2 / M - s C1(k)) / W^2(k),   s = sum m_j^2 / M,  M = sum m_j:
 // the shot noise of the aliased images, s C1(k), is subtracted exactly and
-// the principal image's window is divided out (Jing, ApJ 620, 559 (2005),
-// Sec. 3; the aliased signal, sum over n != 0 of W^2 (S - s), is neglected).
+// the principal image's window is divided out (Jing, ApJ 620, 559 (2005);
+// the aliased signal, sum over n != 0 of W^2 (S - s), is neglected).
 // What remains differs from the exact sum by the cross terms of the principal
 // image with its aliases, of typical size
 //   |S_grid - S_exact| ~ 2 (1/W(k) - 1) sqrt(s S(k))
 // (the aliases hold the weight 1/W - 1 relative to it, each with |rho|^2 ~ s M):
-// 1e-3 of sqrt(s S) at the lowest shell of a 32^3 grid, 2e-5 on 272^3.
+// 1/W - 1 = (pi^2/3)(|k| L / 2 pi n)^2 to leading order, so 2 (1/W - 1) is
+// 6e-3 at the lowest shell of a 32^3 grid and 1e-4 on 272^3.
 #pragma once
 #include <span>
 #include <vector>

@@ -27,8 +27,8 @@ TEST(StructureFactor, ShellsRoundTheWaveNumber) {
   EXPECT_EQ(shell_of(13), 4);  // 3.61
 }
 
-// Sum over aliases of the CIC window is 1 and of its square is C1 (Jing 2005,
-// Eq. 20): checked by summing the aliases directly.
+// Sum over aliases of the CIC window is 1 and of its square is C1 (Jing
+// 2005's closed form for CIC): checked by summing the aliases directly.
 TEST(StructureFactor, CicWindowSumsOverAliases) {
   for (double u : {0.01, 0.1, 0.25, 0.4}) {
     double w = 0, w2 = 0;
