@@ -71,8 +71,8 @@ set yrange [0:3.5]
 set xrange [0.5:*]
 set key bottom left opaque box
 plot for [i = 1 : ng] word(shape_gas, i) using 1:($4 >= 3 ? $2 : NaN):3 with yerrorbars pt 7 ps 0.7 lc i \
-       title sprintf("gas (wrapping clusters left out)"), \
+       title sprintf("gas, L = %s (clusters that wrap left out)", meta(word(shape_gas, i), "L")), \
      for [i = 1 : nba] word(shape_ba, i) using 1:($4 >= 3 ? $2 : NaN):3 with yerrorbars pt 5 ps 0.7 lc (ng + i) \
-       title "BA aggregates (solid spheres: 3 by construction)", \
+       title sprintf("BA, L = %s: aggregates as solid spheres, 3 by construction", meta(word(shape_ba, i), "L")), \
      3 with lines dt 2 lc rgb "gray40" title "d_f = 3", 2.5226 with lines dt 3 lc rgb "gray60" title "percolation 2.52"
 unset multiplot
