@@ -7,7 +7,7 @@ namespace coolgas {
 
 std::vector<ClusterShape> ClusterShapes::of_particles(const ClusterGrid& grid, std::span<const double> positions) {
   labeller_.label(grid, positions);
-  unwrapping_.build(grid, labeller_);
+  unwrapping_.build(grid, labeller_, positions);
   const auto& clusters = unwrapping_.clusters();
   sums_.assign(clusters.size(), GyrationSums{});
   const std::int64_t n = grid.per_side();
@@ -16,8 +16,8 @@ std::vector<ClusterShape> ClusterShapes::of_particles(const ClusterGrid& grid, s
   for (std::size_t p = 0; p < count; ++p) {
     const double* r = positions.data() + 3 * p;
     const std::int32_t cell = grid.cell_of(r[0], r[1], r[2]);
-    const std::size_t k = std::size_t(unwrapping_.index_of(labeller_.cluster_of(cell)));
     const CellImage& img = unwrapping_.image(cell);
+    const std::size_t k = std::size_t(img.cluster);
     // Relative to the lower corner of the cluster's first cell, which is in image 0.
     const std::int64_t f = clusters[k].first_cell;
     sums_[k].add(r[0] + L * img.x - w * double(f % n), r[1] + L * img.y - w * double((f / n) % n),
