@@ -48,6 +48,7 @@ bench: build
 	$(BUILD)/bench/smoluchowski_bench 1
 	$(BUILD)/bench/cluster_bench
 	$(BUILD)/bench/structure_bench
+	$(BUILD)/bench/shape_bench
 
 clean:
 	rm -rf $(BUILD)
