@@ -47,6 +47,8 @@ bench: build
 	$(BUILD)/bench/rsa_bench 1000000 0.35 0.36 0.37
 	$(BUILD)/bench/smoluchowski_bench 1
 	$(BUILD)/bench/cluster_bench
+	$(BUILD)/bench/structure_bench
+	$(BUILD)/bench/shape_bench
 
 clean:
 	rm -rf $(BUILD)

@@ -42,14 +42,6 @@ void write_series_row(TsvWriter& out, double t, const ClusterMoments& mo, double
            double(mo.largest) / double(mo.mass)});
 }
 
-ClusterGrid grid_for(const Trajectory& traj, const Frame& frame) {
-  try {
-    return ClusterGrid(frame.L);
-  } catch (const InputError& e) {
-    throw InputError(traj.path() + ": dump " + std::to_string(frame.dump) + ": " + e.what());
-  }
-}
-
 }  // namespace
 
 void run_clusters(const ClustersOptions& opt, std::ostream& final_out) {
@@ -80,7 +72,7 @@ void run_clusters(const ClustersOptions& opt, std::ostream& final_out) {
     if (traj.aggregates()) {
       for (double m : frame.mass) hist.add(std::llround(m));
     } else {
-      labeller.label(grid_for(traj, frame), frame.position);
+      labeller.label(cluster_grid_of_dump(frame.L, traj.path(), frame.dump), frame.position);
       labeller.for_each_mass([&](std::int64_t m) { hist.add(m); });
     }
     const double volume = frame.L * frame.L * frame.L;

@@ -25,4 +25,12 @@ ClusterGrid::ClusterGrid(double L) : L_(L) {
   last_ = n_ - 1;
 }
 
+ClusterGrid cluster_grid_of_dump(double L, const std::string& path, std::size_t dump) {
+  try {
+    return ClusterGrid(L);
+  } catch (const InputError& e) {
+    throw InputError(path + ": dump " + std::to_string(dump) + ": " + e.what());
+  }
+}
+
 }  // namespace coolgas

@@ -11,7 +11,9 @@
 // cells: cluster_contacts.h; using them (the disjoint-set union): cluster_labeller.h.
 #pragma once
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <string>
 
 namespace coolgas {
 
@@ -44,5 +46,9 @@ class ClusterGrid {
   int n_;
   double width_, inv_width_, last_;
 };
+
+// The grid of dump `dump` of the trajectory `path` (box side L): as
+// ClusterGrid(L), with the InputError naming the file and the dump.
+ClusterGrid cluster_grid_of_dump(double L, const std::string& path, std::size_t dump);
 
 }  // namespace coolgas

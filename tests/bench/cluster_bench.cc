@@ -10,12 +10,9 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <filesystem>
-#include <functional>
 #include <random>
 #include <vector>
 
@@ -23,6 +20,7 @@
 #include "analyze/clusters/mass_distribution.h"
 #include "analyze/trajectory/frame_reader.h"
 #include "common/h5md_writer.h"
+#include "tests/bench/median_timing.h"
 
 namespace {
 
@@ -34,34 +32,8 @@ constexpr std::int64_t kN = 8'000'000;
 constexpr double kPhi = 0.208;
 const double kL = std::cbrt(kN * M_PI / (6 * kPhi));
 
-double wall_seconds() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-// CPU time of this thread: on a shared machine it tells what one core costs
-// when other processes also run.
-double cpu_seconds() {
-  timespec ts;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
-}
-
-struct Timing {
-  double wall, cpu;  // medians over the repeats, seconds
-};
-
-Timing median_time(int repeats, const std::function<void()>& f) {
-  std::vector<double> wall, cpu;
-  for (int r = 0; r < repeats; ++r) {
-    const double w0 = wall_seconds(), c0 = cpu_seconds();
-    f();
-    wall.push_back(wall_seconds() - w0);
-    cpu.push_back(cpu_seconds() - c0);
-  }
-  std::sort(wall.begin(), wall.end());
-  std::sort(cpu.begin(), cpu.end());
-  return {wall[wall.size() / 2], cpu[cpu.size() / 2]};
-}
+using coolgas::bench::median_time;
+using coolgas::bench::Timing;
 
 std::vector<double> uniform_positions(std::uint64_t seed) {
   std::mt19937_64 rng(seed);

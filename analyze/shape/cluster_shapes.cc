@@ -1,0 +1,47 @@
+#include "analyze/shape/cluster_shapes.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace coolgas {
+
+std::vector<ClusterShape> ClusterShapes::of_particles(const ClusterGrid& grid, std::span<const double> positions) {
+  labeller_.label(grid, positions);
+  unwrapping_.build(grid, labeller_, positions);
+  const auto& clusters = unwrapping_.clusters();
+  sums_.assign(clusters.size(), GyrationSums{});
+  const std::int64_t n = grid.per_side();
+  const double w = grid.width(), L = grid.box();
+  const std::size_t count = positions.size() / 3;
+  for (std::size_t p = 0; p < count; ++p) {
+    const double* r = positions.data() + 3 * p;
+    const std::int32_t cell = grid.cell_of(r[0], r[1], r[2]);
+    const CellImage& img = unwrapping_.image(cell);
+    const std::size_t k = std::size_t(img.cluster);
+    // Relative to the lower corner of the cluster's first cell, which is in image 0.
+    const std::int64_t f = clusters[k].first_cell;
+    sums_[k].add(r[0] + L * img.x - w * double(f % n), r[1] + L * img.y - w * double((f / n) % n),
+                 r[2] + L * img.z - w * double(f / (n * n)));
+  }
+  std::vector<ClusterShape> out(clusters.size());
+  for (std::size_t k = 0; k < clusters.size(); ++k) out[k] = {shape_of(sums_[k]), unwrapping_.wraps(k)};
+  return out;
+}
+
+std::vector<ClusterShape> aggregate_shapes(std::span<const double> mass) {
+  std::vector<ClusterShape> out;
+  out.reserve(mass.size());
+  for (double m : mass) {
+    ClusterShape c;
+    c.shape.mass = std::llround(m);
+    const double d = std::cbrt(m), l = d * d / 20;
+    c.shape.lambda = {l, l, l};
+    c.shape.Rg = std::sqrt(3 * l);
+    out.push_back(c);
+  }
+  std::stable_sort(out.begin(), out.end(),
+                   [](const ClusterShape& a, const ClusterShape& b) { return a.shape.mass > b.shape.mass; });
+  return out;
+}
+
+}  // namespace coolgas

@@ -1,0 +1,78 @@
+# The growing length (coolgas-structure) and the shape of clusters (coolgas-shape):
+#  (a) S(k, t) of the gas at every dump (table sk);
+#  (b) its dynamic-scaling collapse L_t^-3 S(k L_t) for t >= collapse_from;
+#  (c) L_t(t) (first moment of the low-k peak), L_C (first zero of the density
+#      correlation) and L_v (of the momentum correlation) for each series in lt,
+#      with the fits L = A t^{1/z} of L_t and L_C over window (coolgas-fit
+#      tables fit_lt_* and fit_lc_* beside each lt_*);
+#  (d) the fractal dimension d_f(t) of the gas clusters and, if shape_ba is
+#      not empty, of the BA aggregates.
+plots = system("dirname " . ARG0)
+load plots . "/common.gp"
+# The fit tables of a series: kind "lt" (L_t) or "lc" (L_C).
+fitof(t, kind) = system("echo " . q(t) . " | sed 's,/lt_,/fit_" . kind . "_,'")
+th(t, kind) = tsvval(fitof(t, kind), "theta")
+z(t, kind) = -1 / th(t, kind)
+ze(t, kind) = tsvval(fitof(t, kind), "theta_err") * z(t, kind)**2
+A(t, kind) = tsvval(fitof(t, kind), "A")
+lo(t) = tsvval(fitof(t, "lt"), "t_min")
+hi(t) = tsvval(fitof(t, "lt"), "t_max")
+if (!exists("shape_ba")) shape_ba = ""
+nb = nblocks(sk); nl = words(lt); ng = words(shape_gas); nba = words(shape_ba)
+blockt(i) = real(bfield(sk, i + 1, "t"))
+
+set terminal pngcairo size 1400, 1000 font "sans,11"
+set output out
+set multiplot layout 2, 2 title sprintf("Growing length and cluster shape: L = %s, {/Symbol f} = %.3f, r_0 = %s, {/Symbol d} = %s", \
+    meta(sk, "L"), real(meta(sk, "phi")), meta(sk, "r0"), meta(sk, "delta"))
+set grid
+set logscale xy
+set format x "10^{%L}"; set format y "10^{%L}"
+set palette defined (0 "#1b3a93", 1 "#2aa198", 2 "#e0a000", 3 "#c0392b")
+set cbrange [log10(blockt(1) > 0 ? blockt(1) : 0.01):log10(blockt(nb - 1))]
+set cblabel "log_{10} t"
+set colorbox
+
+set title "(a) structure factor S(k, t), every dump"
+set xlabel "k  [1/{/Symbol s}]"
+set ylabel "S(k, t)"
+plot for [i = 0 : nb - 1] sk index i using 3:4:(log10($1 > 0 ? $1 : 0.01)) with lines lw 1.5 lc palette notitle
+
+set title sprintf("(b) dynamic scaling, t ≥ %g: L_t^{-3} S(k, t) against k L_t", collapse_from)
+set xlabel "k L_t"
+set ylabel "S / L_t^3  [{/Symbol s}^{-3}]"
+plot for [i = 0 : nb - 1] sk index i using ($1 >= collapse_from ? $7 : NaN):8:(log10($1 > 0 ? $1 : 0.01)) \
+     with linespoints pt 7 ps 0.5 lw 1.5 lc palette notitle
+unset colorbox
+
+set title sprintf("(c) growing lengths; black lines: L = A t^{1/z} fitted over t = %s", window)
+set xlabel "t  [1/{/Symbol w}_0]"
+set ylabel "length  [{/Symbol s}]"
+set key bottom right opaque box
+set xrange [0.5:*]
+plot for [i = 1 : nl] word(lt, i) using 1:($1 > 0 ? $2 : NaN) with linespoints pt 7 ps 0.6 lc i \
+       title sprintf("L_t = 2{/Symbol p}/<k> (L = %s, seed %s)", meta(word(lt, i), "L"), meta(word(lt, i), "seed")), \
+     for [i = 1 : nl] word(lt, i) using 1:($1 > 0 ? $7 : NaN) with linespoints pt 4 ps 0.6 dt 2 lc i \
+       title "L_C: first zero of C(r)", \
+     for [i = 1 : nl] word(lt, i) using 1:($1 > 0 ? $8 : NaN) with linespoints pt 6 ps 0.6 dt 3 lc i \
+       title "L_v: first zero of C_v(r) (momentum)", \
+     for [i = 1 : nl] [lo(word(lt, i)):hi(word(lt, i))] A(word(lt, i), "lt") * x**(-th(word(lt, i), "lt")) \
+       with lines lw 3 lc rgb "black" title sprintf("L_t: z = %.2f ± %.2f", z(word(lt, i), "lt"), ze(word(lt, i), "lt")), \
+     for [i = 1 : nl] [lo(word(lt, i)):hi(word(lt, i))] A(word(lt, i), "lc") * x**(-th(word(lt, i), "lc")) \
+       with lines lw 3 dt 2 lc rgb "black" title sprintf("L_C: z = %.2f ± %.2f", z(word(lt, i), "lc"), ze(word(lt, i), "lc"))
+unset xrange
+
+set title "(d) fractal dimension of clusters, M ∝ R_g^{d_f} (mass bins from 10 particles)"
+set xlabel "t  [1/{/Symbol w}_0]"
+set ylabel "d_f"
+unset logscale y
+set format y "%g"
+set yrange [0:3.5]
+set xrange [0.5:*]
+set key bottom left opaque box
+plot for [i = 1 : ng] word(shape_gas, i) using 1:($4 >= 3 ? $2 : NaN):3 with yerrorbars pt 7 ps 0.7 lc i \
+       title sprintf("gas, L = %s (clusters that wrap left out)", meta(word(shape_gas, i), "L")), \
+     for [i = 1 : nba] word(shape_ba, i) using 1:($4 >= 3 ? $2 : NaN):3 with yerrorbars pt 5 ps 0.7 lc (ng + i) \
+       title sprintf("BA, L = %s: aggregates as solid spheres, 3 by construction", meta(word(shape_ba, i), "L")), \
+     3 with lines dt 2 lc rgb "gray40" title "d_f = 3", 2.5226 with lines dt 3 lc rgb "gray60" title "percolation 2.52"
+unset multiplot
