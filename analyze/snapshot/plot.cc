@@ -61,9 +61,10 @@ void write_data(const SnapshotScene& scene, const fs::path& file) {
 }
 
 // Terminal line: the width adds room for the key beside the square picture;
-// the font grows with the picture (11 at 900 pixels).
+// the font grows with the picture (18 at 900 pixels, 14 at 700), so that it
+// stays readable where the picture is shown smaller (the pipelines' Fig. 3).
 std::string terminal(const PlotOptions& o, int width) {
-  const int font = std::max(9, int(std::lround(11.0 * o.size_px / 900)));
+  const int font = std::max(10, int(std::lround(o.size_px / 50.0)));
   std::ostringstream t;
   switch (o.format) {
     case PictureFormat::kPng: t << "pngcairo noenhanced size " << width << "," << o.size_px; break;
