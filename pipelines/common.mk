@@ -35,6 +35,7 @@ ARCHIVE ?=
 
 # Output grids of the runs (scene [output] tables).
 ENERGY_OUTPUT ?= observables_per_decade = 20$(newline)dumps_per_decade = 1
+PARAM_OUTPUT ?= $(ENERGY_OUTPUT)
 SNAP_OUTPUT ?= observables_per_decade = 20$(newline)dumps_per_decade = 2$(newline)dump_times = [$(SNAP_DUMP_TIMES)]
 BA_OUTPUT ?= observables_per_decade = 20$(newline)dumps_per_decade = 2$(newline)dump_times = [$(BA_DUMP_TIMES)]
 EQUILIBRATE ?= 5
@@ -113,7 +114,7 @@ $(foreach L,$(SIZE_L),$(foreach s,$(SIZE_SEEDS),$(call keep,$(SCENES)/size_L$(L)
   gas_scene,size_L$(L)_s$(s),$(L),$(PHI),$(R0),$(DELTA),$(call size_t_end,$(L)),$(s),$(ENERGY_OUTPUT)))))
 $(foreach p,$(PARAM_SETS),$(foreach s,$(PARAM_SEEDS),$(call keep,$(SCENES)/param_$(p)_s$(s).toml,$(call \
   gas_scene,param_$(p)_s$(s),$(PARAM_L),$(call field,phi,x_$(p)),$(call field,r,x_$(p)),$(call \
-  field,d,x_$(p)),$(PARAM_T_END),$(s),$(ENERGY_OUTPUT)))))
+  field,d,x_$(p)),$(PARAM_T_END),$(s),$(PARAM_OUTPUT)))))
 $(call keep,$(SCENES)/snap_s$(SNAP_SEED).toml,$(call \
   gas_scene,snap_s$(SNAP_SEED),$(SNAP_L),$(PHI),$(R0),$(DELTA),$(SNAP_T_END),$(SNAP_SEED),$(SNAP_OUTPUT)))
 ifeq ($(BA),1)
@@ -187,10 +188,17 @@ $(TABLES)/energy_param_%.tsv: $$(call param_runs,$$*)
 $(TABLES)/fit_size_Lmax.tsv: $(TABLES)/energy_size_L$(L_MAX).tsv $(call knob,theta,$(THETA_WINDOW))
 	$(BIN)/coolgas-fit --power --window $(THETA_WINDOW) $< > $@
 
+# E(t) of each run alone: the collapse resamples whole runs for its errors
+# (a jackknife over seeds; one table per L would treat times as independent).
+$(TABLES)/energy_run_%.tsv: $(RUNS)/%.h5
+	@mkdir -p $(@D)
+	$(BIN)/coolgas-energy $< > $@
+SIZE_RUN_TABLES := $(foreach L,$(SIZE_L),$(patsubst $(RUNS)/%.h5,$(TABLES)/energy_run_%.tsv,$(call size_runs,$(L))))
+
 COLLAPSE_ARGS := --optimize --bootstrap $(COLLAPSE_BOOTSTRAP) --seed 1 --t-window $(COLLAPSE_T_WINDOW) \
                  --eta-window $(COLLAPSE_ETA_WINDOW)
-$(TABLES)/collapse.tsv: $(SIZE_TABLES) $(call knob,collapse,$(COLLAPSE_ARGS))
-	$(BIN)/coolgas-collapse $(COLLAPSE_ARGS) $(SIZE_TABLES) > $@
+$(TABLES)/collapse.tsv: $(SIZE_RUN_TABLES) $(call knob,collapse,$(COLLAPSE_ARGS))
+	$(BIN)/coolgas-collapse $(COLLAPSE_ARGS) $(SIZE_RUN_TABLES) > $@
 
 # The paper's own collapse, theta = 6/5 and z = 5/2, for comparison.
 $(TABLES)/collapse_paper.tsv: $(SIZE_TABLES)
@@ -198,8 +206,8 @@ $(TABLES)/collapse_paper.tsv: $(SIZE_TABLES)
 
 $(OUT)/fig1_energy_size.png: $(SIZE_TABLES) $(TABLES)/fit_size_Lmax.tsv $(TABLES)/collapse.tsv \
     $(TABLES)/collapse_paper.tsv $(PLOTS)/fig1_energy_size.gp
-	gnuplot -e "tables='$(SIZE_TABLES)'; fit='$(TABLES)/fit_size_Lmax.tsv'; collapse='$(TABLES)/collapse.tsv'; \
-	  paper='$(TABLES)/collapse_paper.tsv'; out='$@'" $(PLOTS)/fig1_energy_size.gp
+	for o in $@ $(@:.png=.pdf); do gnuplot -e "tables='$(SIZE_TABLES)'; fit='$(TABLES)/fit_size_Lmax.tsv'; collapse='$(TABLES)/collapse.tsv'; \
+	  paper='$(TABLES)/collapse_paper.tsv'; out='$$o'" $(PLOTS)/fig1_energy_size.gp || exit 1; done
 
 # ---- Fig. 2: E(t) for several phi, r0, delta, each with its fitted theta
 PARAM_TABLES := $(foreach p,$(PARAM_SETS),$(TABLES)/energy_param_$(p).tsv)
@@ -207,15 +215,20 @@ PARAM_FITS := $(foreach p,$(PARAM_SETS),$(TABLES)/fit_param_$(p).tsv)
 panel_tables = $(foreach v,$(2),$(TABLES)/energy_param_$(call param_name,$(if $(filter phi,$(1)),$(v),$(PHI)),$(if \
   $(filter r,$(1)),$(v),$(R0)),$(if $(filter d,$(1)),$(v),$(DELTA))).tsv)
 
-$(TABLES)/fit_param_%.tsv: $(TABLES)/energy_param_%.tsv $(call knob,param_fit,$(PARAM_FIT_WINDOW))
-	$(BIN)/coolgas-fit --power --window $(PARAM_FIT_WINDOW) $< > $@
+# Each parameter set's scaling regime has its own window: PARAM_FIT_WINDOW_<set>
+# (e.g. PARAM_FIT_WINDOW_phi0.052_r0.1_d1e-4) where the scale sets one, else PARAM_FIT_WINDOW.
+param_window = $(or $(PARAM_FIT_WINDOW_$(1)),$(PARAM_FIT_WINDOW))
+# (the knob files are written now, while make reads this file)
+PARAM_FIT_KNOBS := $(foreach p,$(PARAM_SETS),$(call knob,param_fit_$(p),$(call param_window,$(p))))
+$(TABLES)/fit_param_%.tsv: $(TABLES)/energy_param_%.tsv $(KNOBS)/param_fit_%.txt
+	$(BIN)/coolgas-fit --power --window $(call param_window,$*) $< > $@
 
 $(OUT)/fig2_energy_parameters.png: $(PARAM_TABLES) $(PARAM_FITS) $(PLOTS)/fig2_energy_parameters.gp
-	gnuplot -e "phi_tables='$(call panel_tables,phi,$(PARAM_PHIS))'; phis='$(PARAM_PHIS)'; \
+	for o in $@ $(@:.png=.pdf); do gnuplot -e "phi_tables='$(call panel_tables,phi,$(PARAM_PHIS))'; phis='$(PARAM_PHIS)'; \
 	  r0_tables='$(call panel_tables,r,$(PARAM_R0S))'; r0s='$(PARAM_R0S)'; \
 	  delta_tables='$(call panel_tables,d,$(PARAM_DELTAS))'; deltas='$(PARAM_DELTAS)'; \
-	  phi0='$(PHI)'; r00='$(R0)'; delta0='$(DELTA)'; L='$(PARAM_L)'; window='$(PARAM_FIT_WINDOW)'; out='$@'" \
-	  $(PLOTS)/fig2_energy_parameters.gp
+	  phi0='$(PHI)'; r00='$(R0)'; delta0='$(DELTA)'; L='$(PARAM_L)'; out='$$o'" \
+	  $(PLOTS)/fig2_energy_parameters.gp || exit 1; done
 
 # ---- Fig. 3: snapshot of the gas, scaled cluster-mass distribution N(m,t)
 $(TABLES)/snapshot_gas.png: $(SNAP_RUN) $(call knob,snapshot,$(SNAPSHOT_TIME))
@@ -245,9 +258,9 @@ endif
 
 $(OUT)/fig3_clusters.png: $(TABLES)/snapshot_gas.png $(TABLES)/nm_gas.tsv $(TABLES)/fit_nm_gas.tsv $(FIG3_BA) \
     $(PLOTS)/fig3_clusters.gp
-	gnuplot -e "snapshot='$(TABLES)/snapshot_gas.png'; nm='$(TABLES)/nm_gas.tsv'; fit='$(TABLES)/fit_nm_gas.tsv'; \
+	for o in $@ $(@:.png=.pdf); do gnuplot -e "snapshot='$(TABLES)/snapshot_gas.png'; nm='$(TABLES)/nm_gas.tsv'; fit='$(TABLES)/fit_nm_gas.tsv'; \
 	  ba_snapshot='$(if $(FIG3_BA),$(TABLES)/snapshot_ba.png)'; ba_nm='$(if $(FIG3_BA),$(TABLES)/nm_ba.tsv)'; \
-	  snapshot_time='$(SNAPSHOT_TIME)'; out='$@'" $(PLOTS)/fig3_clusters.gp
+	  snapshot_time='$(SNAPSHOT_TIME)'; out='$$o'" $(PLOTS)/fig3_clusters.gp || exit 1; done
 
 # ---- Fig. 4: largest cluster M_max(t), gas for each phi of Fig. 2 and the snapshot run, BA
 MMAX_GAS_RUNS := $(SNAP_RUN) $(foreach p,$(PARAM_PHIS),$(firstword $(call param_runs,$(call param_name,$(p),$(R0),$(DELTA)))))
@@ -268,8 +281,8 @@ $(TABLES)/fit_mmax_ba_%.tsv: $(TABLES)/mmax_ba_%.tsv $(call knob,ba_mmax_fit,$(B
 
 $(OUT)/fig4_largest_mass.png: $(MMAX_GAS) $(MMAX_BA) $(subst mmax_,fit_mmax_,$(MMAX_GAS) $(MMAX_BA)) \
     $(PLOTS)/fig4_largest_mass.gp
-	gnuplot -e "gas='$(MMAX_GAS)'; ba='$(MMAX_BA)'; window='$(MMAX_FIT_WINDOW)'; ba_window='$(BA_MMAX_FIT_WINDOW)'; out='$@'" \
-	  $(PLOTS)/fig4_largest_mass.gp
+	for o in $@ $(@:.png=.pdf); do gnuplot -e "gas='$(MMAX_GAS)'; ba='$(MMAX_BA)'; window='$(MMAX_FIT_WINDOW)'; ba_window='$(BA_MMAX_FIT_WINDOW)'; out='$$o'" \
+	  $(PLOTS)/fig4_largest_mass.gp || exit 1; done
 
 # ---- Fig. 5: Phi(y) early and late, kurtosis kappa(t), tails -ln Phi(y)
 $(TABLES)/phi_early.tsv: $(SNAP_RUN) $(call knob,phi_early,$(PHI_EARLY_TIMES))
@@ -294,8 +307,8 @@ endif
 
 $(OUT)/fig5_velocity.png: $(TABLES)/phi_early.tsv $(TABLES)/phi_late.tsv $(TABLES)/velocity_series.tsv \
     $(TABLES)/tail_gas.tsv $(FIG5_BA) $(PLOTS)/fig5_velocity.gp
-	gnuplot -e "early='$(TABLES)/phi_early.tsv'; late='$(TABLES)/phi_late.tsv'; series='$(TABLES)/velocity_series.tsv'; \
-	  tail_gas='$(TABLES)/tail_gas.tsv'; tail_ba='$(FIG5_BA)'; out='$@'" $(PLOTS)/fig5_velocity.gp
+	for o in $@ $(@:.png=.pdf); do gnuplot -e "early='$(TABLES)/phi_early.tsv'; late='$(TABLES)/phi_late.tsv'; series='$(TABLES)/velocity_series.tsv'; \
+	  tail_gas='$(TABLES)/tail_gas.tsv'; tail_ba='$(FIG5_BA)'; out='$$o'" $(PLOTS)/fig5_velocity.gp || exit 1; done
 
 # ---- Smoluchowski equation (paper Eqs. 3-4) beside the simulated gas
 # Volume = N of the snapshot run (c_1(0) = 1), so its M_max is that of a system
@@ -314,9 +327,9 @@ $(TABLES)/fit_smoluchowski_%.tsv: $(TABLES)/smoluchowski_series.tsv $(call knob,
 $(OUT)/smoluchowski.png: $(TABLES)/smoluchowski_nm.tsv $(TABLES)/smoluchowski_series.tsv \
     $(TABLES)/fit_smoluchowski_M_max.tsv $(TABLES)/fit_smoluchowski_M_avg.tsv $(TABLES)/nm_gas.tsv \
     $(call mmax_table,$(SNAP_RUN)) $(PLOTS)/smoluchowski.gp
-	gnuplot -e "nm='$(TABLES)/smoluchowski_nm.tsv'; series='$(TABLES)/smoluchowski_series.tsv'; \
+	for o in $@ $(@:.png=.pdf); do gnuplot -e "nm='$(TABLES)/smoluchowski_nm.tsv'; series='$(TABLES)/smoluchowski_series.tsv'; \
 	  fit_max='$(TABLES)/fit_smoluchowski_M_max.tsv'; fit_avg='$(TABLES)/fit_smoluchowski_M_avg.tsv'; \
-	  gas_nm='$(TABLES)/nm_gas.tsv'; gas_series='$(call mmax_table,$(SNAP_RUN))'; out='$@'" $(PLOTS)/smoluchowski.gp
+	  gas_nm='$(TABLES)/nm_gas.tsv'; gas_series='$(call mmax_table,$(SNAP_RUN))'; out='$$o'" $(PLOTS)/smoluchowski.gp || exit 1; done
 
 # ---- theta_BA: E(t) of each aggregation run (per initial particle) and its power law
 BA_FITS := $(foreach r,$(BA_RUNS),$(TABLES)/fit_energy_$(notdir $(basename $(r))).tsv)
@@ -330,9 +343,10 @@ $(TABLES)/fit_energy_ba_%.tsv: $(TABLES)/energy_ba_%.tsv $(call knob,ba_theta_fi
 EXPONENT_INPUTS := $(TABLES)/collapse.tsv $(TABLES)/fit_size_Lmax.tsv $(TABLES)/fit_nm_gas.tsv \
   $(TABLES)/nm_gas.tsv $(TABLES)/fit_$(notdir $(call mmax_table,$(SNAP_RUN))) $(TABLES)/velocity_series.tsv \
   $(TABLES)/fit_smoluchowski_M_max.tsv $(TABLES)/fit_smoluchowski_M_avg.tsv $(PARAM_FITS)
-$(OUT)/exponents.tsv: $(EXPONENT_INPUTS) $(PIPE)tsv-value.sh
-	sh $(PIPE)exponents.sh $(TABLES) $(notdir $(basename $(SNAP_RUN))) "$(lastword $(PHI_LATE_TIMES))" > $@
+$(OUT)/exponents.tsv: $(EXPONENT_INPUTS) $(BA_FITS) $(PIPE)tsv-value.sh $(PIPE)exponents.sh
+	sh $(PIPE)exponents.sh $(TABLES) $(notdir $(basename $(SNAP_RUN))) "$(lastword $(PHI_LATE_TIMES))" \
+	  $(L_MAX) $(SNAP_L) $(PARAM_L) "$(PARAM_SETS)" "$(BA_FITS)" > $@
 
-$(OUT)/exponents.md: $(OUT)/exponents.tsv $(PARAM_FITS) $(BA_FITS) $(PIPE)exponents-md.sh
-	sh $(PIPE)exponents-md.sh $< $(TABLES) "$(SCALE)" "$(PARAM_SETS)" "$(BA_FITS)" > $@
+$(OUT)/exponents.md: $(OUT)/exponents.tsv $(PIPE)exponents-md.sh
+	sh $(PIPE)exponents-md.sh $< "$(SCALE)" > $@
 	@echo "$(SCALE) pipeline: figures and tables in $(OUT)"; cat $@

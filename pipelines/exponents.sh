@@ -1,13 +1,17 @@
 #!/bin/sh
-# exponents.sh TABLES SNAP_RUN LATE_TIME
-# Gathers the exponents a figure pipeline measured into one TSV row (the
-# coolgas table format: provenance, column line, one row). TABLES is the
-# pipeline's tables folder, SNAP_RUN the name of the run of Figs. 3-5 and
-# LATE_TIME the time at which its late-time values are read.
+# exponents.sh TABLES SNAP_RUN LATE_TIME L_MAX SNAP_L PARAM_L "PARAM_SETS" "BA_FITS"
+# The quantities a figure pipeline measured, one row each, judged against
+# the paper (Pathak, Jabeen, Das, Rajesh 2014): a TSV table with columns
+#   quantity  figure  measured  error  paper  paper_error  deviation  regime
+# deviation = (measured - paper) / sqrt(error^2 + paper_error^2) where both
+# are numbers; regime says whether the run reached the regime the paper
+# measures the quantity in ("yes", or "no: why"), judged with the paper's
+# crossover to finite-size behaviour at x = t / L^(5/2) ~ 0.1 (its Fig. 1).
+# TABLES is the pipeline's tables folder, SNAP_RUN the run of Figs. 3-5,
+# LATE_TIME the time its late-time values are read at, L_MAX the largest L
+# of Fig. 1, SNAP_L and PARAM_L the box sides of Figs. 3-5 and Fig. 2.
 set -e
-tables=$1
-snap=$2
-late=$3
+tables=$1 snap=$2 late=$3 L_max=$4 snap_L=$5 param_L=$6 sets=$7 ba_fits=${8:-}
 here=$(dirname "$0")
 value() { sh "$here/tsv-value.sh" "$@"; }
 # Column $2 of table $1 in the row whose t is nearest $3.
@@ -17,25 +21,91 @@ at_time() {
     NF > 0 { d = $tc - t; if (d < 0) d = -d; if (best == "" || d < best) { best = d; v = $col } }
     END { print v }' "$1"
 }
+calc() { awk "BEGIN { printf \"%.6g\", $1 }"; }
+short() { awk "BEGIN { printf \"%.3g\", $1 }"; }
+# x = t / L^(5/2) and whether it is before the finite-size crossover (x < 0.1)
+before_crossover() {  # t L what
+  x=$(short "$1 / ($2 ^ 2.5)")
+  if awk "BEGIN { exit !($x < 0.1) }"; then echo yes
+  else echo "no: $3 at t = $(short "$1") has x = t/L^(5/2) = $x > 0.1 in L = $2 (finite-size regime)"; fi
+}
+# Local slope -d ln E / d ln t of an E(t) table over the quarter decade from t.
+local_slope() {  # table t
+  awk -F '\t' -v t0="$2" '
+    /^#/ || NF == 0 || $1 <= 0 { next }
+    $1 >= t0 && !a { ta = $1; ea = $2; a = 1 }
+    $1 >= t0 * 1.778 && !b { tb = $1; eb = $2; b = 1 }
+    END { if (a && b) printf "%.3g", -log(eb / ea) / log(tb / ta); else print "nan" }' "$1"
+}
+# The paper measures theta once E(t) has left Haff's t^-2 decay: a window
+# whose start still decays faster than t^-3/2 (the largest exponent any
+# theory proposes, Burgers') is still in the crossover. Then the finite-size test.
+scaling_regime() {  # energy_table fit_table L
+  s=$(local_slope "$1" "$(value "$2" t_min)")
+  if awk "BEGIN { exit !(\"$s\" == \"nan\" || $s > 1.5) }"; then
+    echo "no: at the window's start E(t) still falls as t^-$s, faster than t^-3/2 (not yet past the crossover from Haff's law)"
+  else before_crossover "$(value "$2" t_max)" "$3" "the window's end"; fi
+}
+# row QUANTITY FIGURE MEASURED ERROR PAPER PAPER_ERROR REGIME
+is_num() { echo "$1" | grep -Eq '^[-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?$'; }
+row() {
+  dev=-
+  if is_num "$3" && is_num "$4" && is_num "$5" && is_num "$6"; then
+    dev=$(awk "BEGIN { s = sqrt($4 * $4 + $6 * $6); if (s > 0) printf \"%.2f\", ($3 - $5) / s; else print \"-\" }")
+  fi
+  printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$1" "$2" "$3" "$4" "$5" "$6" "$dev" "$7"
+}
+
 collapse=$tables/collapse.tsv
 printf '# tool: pipelines/exponents.sh\n'
-printf '# input: %s\n' collapse.tsv fit_size_Lmax.tsv fit_nm_gas.tsv "mmax_$snap.tsv" velocity_series.tsv \
-  fit_smoluchowski_M_max.tsv fit_smoluchowski_M_avg.tsv
+printf '# version: %s\n' "$(value "$collapse" version '#')"
+printf '# date: %s\n' "$(date -u +%Y-%m-%d)"
 printf '# late_time: %s\n' "$late"
-printf '# theta\ttheta_err\tz\tz_err\teta\teta_err\tcollapse_quality\ttheta_Lmax\ttheta_Lmax_err'
-printf '\tmass_exponent\tmass_exponent_err\tlargest_fraction\tmmax_exponent\tmmax_exponent_err'
-printf '\tbeta_late\tbeta_late_err\tkappa_late\tsmol_mmax_exponent\tsmol_mavg_exponent\n'
-# Growth exponents are minus the fitted decay exponent theta of coolgas-fit.
-printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' \
-  "$(value "$collapse" theta '#')" "$(value "$collapse" theta_err '#')" \
-  "$(value "$collapse" z '#')" "$(value "$collapse" z_err '#')" \
-  "$(value "$collapse" eta '#')" "$(value "$collapse" eta_err '#')" "$(value "$collapse" quality '#')" \
-  "$(value "$tables/fit_size_Lmax.tsv" theta)" "$(value "$tables/fit_size_Lmax.tsv" theta_err)" \
-  "$(value "$tables/fit_nm_gas.tsv" theta)" "$(value "$tables/fit_nm_gas.tsv" theta_err)" \
-  "$(at_time "$tables/mmax_$snap.tsv" largest_fraction "$late")" \
-  "$(awk "BEGIN { print -($(value "$tables/fit_mmax_$snap.tsv" theta)) }")" \
-  "$(value "$tables/fit_mmax_$snap.tsv" theta_err)" \
-  "$(at_time "$tables/velocity_series.tsv" beta "$late")" "$(at_time "$tables/velocity_series.tsv" beta_err "$late")" \
-  "$(at_time "$tables/velocity_series.tsv" kappa "$late")" \
-  "$(awk "BEGIN { print -($(value "$tables/fit_smoluchowski_M_max.tsv" theta)) }")" \
-  "$(awk "BEGIN { print -($(value "$tables/fit_smoluchowski_M_avg.tsv" theta)) }")"
+printf '# quantity\tfigure\tmeasured\terror\tpaper\tpaper_error\tdeviation\tregime\n'
+
+# Fig. 1: the collapse spans both sides of the crossover x ~ 1 when it reaches x < 0.1 and x > 1.
+xr=$(awk -F '\t' '!/^#/ && NF > 0 { if (lo == "" || $1 < lo) lo = $1; if ($1 > hi) hi = $1 } END { printf "%.3g %.3g", lo, hi }' "$collapse")
+xlo=${xr% *} xhi=${xr#* }
+if awk "BEGIN { exit !($xlo < 0.1 && $xhi > 1) }"; then reg=yes; else reg="no: the scaled data span x = $xlo to $xhi, not both x < 0.1 and x > 1"; fi
+row "theta, collapse E L^(z theta) vs t/L^z" 1 "$(value "$collapse" theta '#')" "$(value "$collapse" theta_err '#')" 1.2 0 "$reg"
+row "z, same collapse" 1 "$(value "$collapse" z '#')" "$(value "$collapse" z_err '#')" 2.5 0 "$reg"
+ew=$(value "$collapse" eta_window '#')
+ewlo=${ew%%:*}
+if awk "BEGIN { exit !(${ewlo:-0} >= 1) }"; then reg=yes; else reg="no: the fit window starts at x = ${ewlo:-0} < 1"; fi
+row "eta, f(x) ~ x^-eta for x >> 1 (x = $ew)" 1 "$(value "$collapse" eta '#')" "$(value "$collapse" eta_err '#')" 1.83 0 "$reg"
+fit=$tables/fit_size_Lmax.tsv
+row "theta, power-law fit at L = $L_max (t = $(short "$(value "$fit" t_min)"):$(short "$(value "$fit" t_max)"))" 1 \
+  "$(value "$fit" theta)" "$(value "$fit" theta_err)" 1.2 0 "$(scaling_regime "$tables/energy_size_L$L_max.tsv" "$fit" "$L_max")"
+
+# Fig. 2: each parameter set's fit.
+for p in $sets; do
+  fit=$tables/fit_param_$p.tsv
+  name=$(echo "$p" | sed 's/_/, /g; s/^phi/phi = /; s/, r/, r0 = /; s/, d/, delta = /')
+  row "theta at $name (t = $(short "$(value "$fit" t_min)"):$(short "$(value "$fit" t_max)"))" 2 \
+    "$(value "$fit" theta)" "$(value "$fit" theta_err)" 1.2 0 "$(scaling_regime "$tables/energy_param_$p.tsv" "$fit" "$param_L")"
+done
+
+# Figs. 3-5: the snapshot run at the late time.
+late_regime=$(before_crossover "$late" "$snap_L" "the late time")
+row "tau, N(m) ~ m^-tau below the largest cluster" 3 "$(value "$tables/fit_nm_gas.tsv" theta)" \
+  "$(value "$tables/fit_nm_gas.tsv" theta_err)" 2.7 0 "$late_regime"
+f0=$(at_time "$tables/mmax_$snap.tsv" largest_fraction 0)
+if awk "BEGIN { exit !($f0 > 0.5) }"; then
+  reg="no: the largest cluster holds $(short "$f0") of the particles already at t = 0 (the unit-cell occupancy is above the site-percolation threshold 0.3116)"
+else reg=$late_regime; fi
+row "largest cluster's share of the particles" 3 "$(at_time "$tables/mmax_$snap.tsv" largest_fraction "$late")" - 0.75 - "$reg"
+mm=$tables/fit_mmax_$snap.tsv
+row "a, M_max ~ t^a, gas (paper: rapid, gel-like growth)" 4 "$(calc "-($(value "$mm" theta))")" "$(value "$mm" theta_err)" - - "$reg"
+vs=$tables/velocity_series.tsv
+row "beta, -ln Phi(y) ~ y^beta at t = $late" 5 "$(at_time "$vs" beta "$late")" "$(at_time "$vs" beta_err "$late")" 1.66667 0 "$late_regime"
+row "kappa at t = $late (paper: > 0, saturating)" 5 "$(at_time "$vs" kappa "$late")" "$(at_time "$vs" kappa_err "$late")" - - "$late_regime"
+row "Smoluchowski Eq. 4: M_max ~ t^a" S "$(calc "-($(value "$tables/fit_smoluchowski_M_max.tsv" theta))")" - 1.2 0 yes
+row "Smoluchowski Eq. 4: M_avg ~ t^a" S "$(calc "-($(value "$tables/fit_smoluchowski_M_avg.tsv" theta))")" - 1.2 0 yes
+
+# Ballistic aggregation: the paper gives theta_BA = 1.283 +- 0.005 at phi = 0.005 and 1.206 +- 0.005 at 0.208.
+for fit in $ba_fits; do
+  phi=$(basename "$fit" .tsv | sed 's/^fit_energy_ba_phi//; s/_s[0-9]*$//')
+  case $phi in 0.208) paper=1.206 pe=0.005 ;; 0.005) paper=1.283 pe=0.005 ;; *) paper=- pe=- ;; esac
+  row "theta_BA at phi = $phi (t = $(short "$(value "$fit" t_min)"):$(short "$(value "$fit" t_max)"))" BA \
+    "$(value "$fit" theta)" "$(value "$fit" theta_err)" "$paper" "$pe" yes
+done

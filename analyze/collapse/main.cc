@@ -13,16 +13,20 @@ int main(int argc, char** argv) {
     std::string t_window = ":", eta_window;
     CLI::App app{
         "Finite-size scaling E(t) = L^(-z theta) f(t/L^z) of E(t) tables (coolgas-energy output; L is read from\n"
-        "each table's '# L:' line). Writes one block per L (ascending) with columns x = t/L^z [1/omega0 / sigma^z],\n"
+        "each table's '# L:' line). Several tables of one L are its runs (seeds) and are averaged at their common\n"
+        "times. Writes one block per L (ascending) with columns x = t/L^z [1/omega0 / sigma^z],\n"
         "y = E L^(z theta) [m sigma^2 omega0^2 x sigma^(z theta)], L [sigma], t [1/omega0], E [m sigma^2 omega0^2];\n"
         "theta, z [dimensionless] and the results as '# key: value' lines. --optimize finds the theta, z that\n"
         "minimise the collapse quality Q (mean over pairs of curves of the mean squared difference of ln y on\n"
-        "their overlap) by Nelder-Mead, with errors from a bootstrap over rows. --summary: one row instead."};
-    app.add_option("tables", o.inputs, "E(t) tables, one per L (- for stdin, once)")->required();
+        "their overlap) by Nelder-Mead. theta_err, z_err are one standard error: with two or more tables (runs)\n"
+        "per L, from the jackknife over whole runs (resampling the seeds, which keeps each run's correlation in\n"
+        "time); with one table per L, from a bootstrap over its E errors or rows, which treats the times as\n"
+        "independent and so comes out too small. --summary: one row instead."};
+    app.add_option("tables", o.inputs, "E(t) tables: one per L, or one per run (seed) of each L (- for stdin, once)")->required();
     app.add_option("--theta", o.theta, "energy exponent theta (with --optimize: the starting value)")->capture_default_str();
     app.add_option("--z", o.z, "dynamical exponent z (with --optimize: the starting value)")->capture_default_str();
     app.add_flag("--optimize", o.optimize, "find the theta and z that collapse the curves best");
-    app.add_option("--bootstrap", o.search.bootstrap, "bootstrap replicas for the uncertainties (0: none)")
+    app.add_option("--bootstrap", o.search.bootstrap, "bootstrap replicas with one table per L (0: no uncertainties at all)")
         ->capture_default_str();
     app.add_option("--seed", o.search.seed, "random seed of the bootstrap")->capture_default_str();
     app.add_option("--min-overlap", o.search.min_overlap_decades,

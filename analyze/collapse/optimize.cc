@@ -87,43 +87,91 @@ std::vector<ScalingCurve> resample_rows(const std::vector<ScalingCurve>& curves,
   return out;
 }
 
-double standard_deviation(const std::vector<double>& v) {
+// Sum of squared deviations from the mean.
+double sum_of_squares(const std::vector<double>& v) {
   double mean = 0, ss = 0;
   for (double x : v) mean += x;
   mean /= double(v.size());
   for (double x : v) ss += (x - mean) * (x - mean);
-  return v.size() > 1 ? std::sqrt(ss / double(v.size() - 1)) : 0;
+  return ss;
 }
 
-}  // namespace
+// The stratified delete-one jackknife over runs (optimize.h).
+void jackknife_runs(const std::vector<SizeEnsemble>& sizes, const Minimum& best, double min_overlap, CollapseFit& fit) {
+  double var_theta = 0, var_z = 0;
+  fit.replicas = 0;
+  for (std::size_t s = 0; s < sizes.size(); ++s) {
+    const std::size_t n = sizes[s].runs.size();
+    std::vector<double> thetas, zs;
+    for (std::size_t r = 0; r < n; ++r) {
+      std::vector<std::size_t> keep;
+      for (std::size_t k = 0; k < n; ++k)
+        if (k != r) keep.push_back(k);
+      std::vector<ScalingCurve> replica = mean_curves(sizes);
+      replica[s] = ensemble_mean(sizes[s], keep);
+      const Minimum m = minimise(replica, best.theta, best.z, min_overlap);
+      thetas.push_back(m.theta);
+      zs.push_back(m.z);
+      ++fit.replicas;
+    }
+    const double factor = double(n - 1) / double(n);
+    var_theta += factor * sum_of_squares(thetas);
+    var_z += factor * sum_of_squares(zs);
+  }
+  fit.theta_err = std::sqrt(var_theta);
+  fit.z_err = std::sqrt(var_z);
+}
 
-CollapseFit optimize_collapse(const std::vector<ScalingCurve>& curves, const CollapseSearch& search) {
-  if (curves.size() < 2)
-    throw InputError("--optimize needs E(t) tables of at least 2 system sizes, got " + std::to_string(curves.size()));
-  if (search.bootstrap < 0)
-    throw InputError("--bootstrap " + std::to_string(search.bootstrap) + " is not allowed; it must be >= 0");
-  gsl_set_error_handler_off();
-  const Minimum best = minimise(curves, search.theta0, search.z0, search.min_overlap_decades);
-  if (best.quality >= kNoOverlapPenalty)
-    throw InputError("no collapse found: near theta = " + format_number(best.theta) + ", z = " + format_number(best.z) +
-                     " the scaled curves overlap by less than " + format_number(search.min_overlap_decades) +
-                     " decades of x; start closer (--theta, --z) or lower --min-overlap");
-  const bool errors = std::all_of(curves.begin(), curves.end(), [](const auto& c) { return !c.ln_E_err.empty(); });
-  CollapseFit fit{best.theta, best.z, best.quality, 0, 0, search.bootstrap,
-                  errors ? BootstrapKind::kErrors : BootstrapKind::kRows};
-  if (search.bootstrap == 0) return fit;
+void bootstrap(const std::vector<ScalingCurve>& curves, const Minimum& best, const CollapseSearch& search,
+               CollapseFit& fit) {
   std::unique_ptr<gsl_rng, void (*)(gsl_rng*)> rng(gsl_rng_alloc(gsl_rng_mt19937), gsl_rng_free);
   gsl_rng_set(rng.get(), static_cast<unsigned long>(search.seed));
   std::vector<double> thetas, zs;
   for (int b = 0; b < search.bootstrap; ++b) {
-    const auto replica = errors ? perturb(curves, rng.get()) : resample_rows(curves, rng.get());
+    const auto replica =
+        fit.kind == BootstrapKind::kErrors ? perturb(curves, rng.get()) : resample_rows(curves, rng.get());
     const Minimum m = minimise(replica, best.theta, best.z, search.min_overlap_decades);
     thetas.push_back(m.theta);
     zs.push_back(m.z);
   }
-  fit.theta_err = standard_deviation(thetas);
-  fit.z_err = standard_deviation(zs);
+  fit.replicas = search.bootstrap;
+  const double dof = std::max(1.0, double(thetas.size()) - 1);
+  fit.theta_err = std::sqrt(sum_of_squares(thetas) / dof);
+  fit.z_err = std::sqrt(sum_of_squares(zs) / dof);
+}
+
+BootstrapKind resampling_kind(const std::vector<SizeEnsemble>& sizes, const std::vector<ScalingCurve>& means) {
+  if (std::all_of(sizes.begin(), sizes.end(), [](const auto& s) { return s.runs.size() >= 2; }))
+    return BootstrapKind::kRuns;
+  const bool errors = std::all_of(means.begin(), means.end(), [](const auto& c) { return !c.ln_E_err.empty(); });
+  return errors ? BootstrapKind::kErrors : BootstrapKind::kRows;
+}
+
+}  // namespace
+
+CollapseFit optimize_collapse(const std::vector<SizeEnsemble>& sizes, const CollapseSearch& search) {
+  if (sizes.size() < 2)
+    throw InputError("--optimize needs E(t) tables of at least 2 system sizes, got " + std::to_string(sizes.size()));
+  if (search.bootstrap < 0)
+    throw InputError("--bootstrap " + std::to_string(search.bootstrap) + " is not allowed; it must be >= 0");
+  gsl_set_error_handler_off();
+  const std::vector<ScalingCurve> means = mean_curves(sizes);
+  const Minimum best = minimise(means, search.theta0, search.z0, search.min_overlap_decades);
+  if (best.quality >= kNoOverlapPenalty)
+    throw InputError("no collapse found: near theta = " + format_number(best.theta) + ", z = " + format_number(best.z) +
+                     " the scaled curves overlap by less than " + format_number(search.min_overlap_decades) +
+                     " decades of x; start closer (--theta, --z) or lower --min-overlap");
+  CollapseFit fit{best.theta, best.z, best.quality, 0, 0, 0, resampling_kind(sizes, means)};
+  if (search.bootstrap == 0) return fit;
+  if (fit.kind == BootstrapKind::kRuns) jackknife_runs(sizes, best, search.min_overlap_decades, fit);
+  else bootstrap(means, best, search, fit);
   return fit;
+}
+
+CollapseFit optimize_collapse(const std::vector<ScalingCurve>& curves, const CollapseSearch& search) {
+  std::vector<SizeEnsemble> sizes;
+  for (const auto& c : curves) sizes.push_back(SizeEnsemble{c.L, {c}});
+  return optimize_collapse(sizes, search);
 }
 
 }  // namespace coolgas

@@ -14,13 +14,22 @@ namespace {
 
 constexpr const char* kTool = "coolgas-collapse";
 
-// Curves in increasing L: a deterministic block order for gnuplot's index.
-std::vector<ScalingCurve> load_curves(const CollapseOptions& o) {
+// The tables grouped by L, in increasing L: a deterministic block order for gnuplot's index.
+std::vector<SizeEnsemble> load_sizes(const CollapseOptions& o) {
   if (o.inputs.empty()) throw InputError("no E(t) tables given (usage: coolgas-collapse TABLE...)");
   std::vector<ScalingCurve> curves;
   for (const auto& path : o.inputs) curves.push_back(make_scaling_curve(read_table(path), o.columns, o.t_window));
-  std::stable_sort(curves.begin(), curves.end(), [](const auto& a, const auto& b) { return a.L < b.L; });
-  return curves;
+  return group_by_size(curves);
+}
+
+std::string uncertainty_text(const CollapseFit& fit, std::uint64_t seed) {
+  if (fit.kind == BootstrapKind::kRuns)
+    return "jackknife over whole runs (one table per seed), " + std::to_string(fit.replicas) + " replicas";
+  const char* kind = fit.kind == BootstrapKind::kErrors
+                         ? "parametric bootstrap over the E errors (treats times as independent: too small for one "
+                           "ensemble's time-correlated mean; give one table per seed instead), "
+                         : "bootstrap over rows (underestimates; no E errors), ";
+  return kind + std::to_string(fit.replicas) + " replicas, seed " + std::to_string(seed);
 }
 
 struct Results {
@@ -29,9 +38,10 @@ struct Results {
   std::optional<PowerLawFit> eta;
 };
 
-Provenance collapse_provenance(const CollapseOptions& o, const std::vector<ScalingCurve>& curves, const Results& r) {
+Provenance collapse_provenance(const CollapseOptions& o, const std::vector<SizeEnsemble>& sizes, const Results& r) {
   Provenance p;
-  for (const auto& c : curves) p.emplace_back("input", c.source + " (L = " + format_number(c.L) + ")");
+  for (const auto& s : sizes)
+    for (const auto& c : s.runs) p.emplace_back("input", c.source + " (L = " + format_number(c.L) + ")");
   p.emplace_back("t_window", o.t_window.text());
   p.emplace_back("min_overlap_decades", format_number(o.search.min_overlap_decades));
   p.emplace_back("theta", format_number(r.theta));
@@ -39,10 +49,7 @@ Provenance collapse_provenance(const CollapseOptions& o, const std::vector<Scali
   if (r.fit) {
     p.emplace_back("theta_err", format_number(r.fit->theta_err));
     p.emplace_back("z_err", format_number(r.fit->z_err));
-    const char* kind = r.fit->kind == BootstrapKind::kErrors ? "parametric bootstrap over the E errors, "
-                                                              : "bootstrap over rows (underestimates; no E errors), ";
-    p.emplace_back("uncertainty", kind + std::to_string(r.fit->replicas) + " replicas, seed " +
-                                      std::to_string(o.search.seed));
+    p.emplace_back("uncertainty", uncertainty_text(*r.fit, o.search.seed));
   }
   p.emplace_back("quality", format_number(r.quality));
   if (r.eta) {
@@ -80,19 +87,20 @@ void write_summary(const Results& r, const Provenance& p, std::ostream& out) {
 void write_collapse_table(const CollapseOptions& o, std::ostream& out) {
   if (!(o.search.min_overlap_decades >= 0))
     throw InputError("--min-overlap " + format_number(o.search.min_overlap_decades) + " is not allowed; it must be >= 0");
-  const auto curves = load_curves(o);
+  const auto sizes = load_sizes(o);
+  const auto curves = mean_curves(sizes);
   Results r{o.theta, o.z, 0, std::nullopt, std::nullopt};
   if (o.optimize) {
     CollapseSearch s = o.search;
     s.theta0 = o.theta;
     s.z0 = o.z;
-    r.fit = optimize_collapse(curves, s);
+    r.fit = optimize_collapse(sizes, s);
     r.theta = r.fit->theta;
     r.z = r.fit->z;
   }
   r.quality = collapse_quality(curves, r.theta, r.z, o.search.min_overlap_decades);
   if (o.eta_window) r.eta = fit_tail_exponent(curves, r.theta, r.z, *o.eta_window);
-  const Provenance p = collapse_provenance(o, curves, r);
+  const Provenance p = collapse_provenance(o, sizes, r);
   if (o.summary) write_summary(r, p, out);
   else write_curves(curves, r, p, out);
 }

@@ -12,7 +12,7 @@
 namespace coolgas {
 
 struct CollapseOptions {
-  std::vector<std::string> inputs;  // E(t) tables, one per L ("-" at most once)
+  std::vector<std::string> inputs;  // E(t) tables, one or more (runs) per L ("-" at most once)
   FitColumns columns;               // t and E column names (errors unused)
   double theta = 1.2, z = 2.5;      // fixed scaling, or the optimiser's start
   bool optimize = false;

@@ -11,25 +11,28 @@ int main(int argc, char** argv) {
   return coolgas::run_tool("coolgas-snapshot", [&] {
     coolgas::SnapshotToolOptions o;
     CLI::App app{
-        "Picture (PNG, drawn by gnuplot's pngcairo terminal) of the particles of a coolgas trajectory at the dump\n"
+        "Picture (PNG, PDF or SVG by the extension of -o, drawn by gnuplot) of the particles of a coolgas trajectory at the dump\n"
         "nearest --time, coloured by cluster as in Pathak et al. (2014), Fig. 3: the --colored largest clusters in\n"
         "distinct colours (largest first: blue, red, green, orange, ...), all other particles grey. Clusters are\n"
-        "those of coolgas-clusters (floor(L)^3 cells, face neighbours, periodic). Lengths in particle diameters\n"
+        "those of coolgas-clusters (floor(L)^3 cells, face neighbours, periodic); in a ballistic-aggregation file\n"
+        "they are the aggregates, drawn at their true diameter m^(1/3) and ranked by mass. A key beside the picture\n"
+        "gives each coloured cluster's mass. Lengths in particle diameters\n"
         "sigma, times in 1/omega0.\n"
-        "Views: slab (default): particles with |z - L/2| < thickness/2, seen along z, drawn at their true size;\n"
+        "Views: slab (default): particles with |z - L/2| < thickness/2 (aggregates of diameter d: < (thickness + d - 1)/2),\n"
+        "seen along z, drawn at their true size;\n"
         "3d: all particles in perspective, at most --max-points of them (every k-th particle).\n"
         "Table on stdout, one row per coloured cluster: rank (1 = largest), mass [particles],\n"
         "fraction = mass/N, shown [particles drawn], rgb (colour as the integer 0xRRGGBB)."};
     app.add_option("trajectory", o.input, "trajectory file (H5MD, written by coolgas-simulate)")->required();
     app.add_option("--time", o.time, "draw the dump nearest this time [1/omega0]")->required();
-    app.add_option("-o,--output", o.output, "PNG file to write (replaced if it exists)")->required();
+    app.add_option("-o,--output", o.output, "picture to write: .png, .pdf or .svg (replaced if it exists)")->required();
     std::string view = "slab";
     app.add_option("--view", view, "slab or 3d")->check(CLI::IsMember({"slab", "3d"}))->capture_default_str();
     app.add_option("--thickness", o.scene.thickness, "slab thickness [sigma]")->capture_default_str();
     app.add_option("--colored", o.scene.colored, "number of largest clusters drawn in colour (0-9)")
         ->capture_default_str();
     app.add_option("--max-points", o.scene.max_points, "3d view: most particles drawn")->capture_default_str();
-    app.add_option("--size", o.size_px, "picture width and height [pixels]")->capture_default_str();
+    app.add_option("--size", o.size_px, "picture height [pixels; PDF: 72 to the inch]; the width adds 30 % for the key")->capture_default_str();
     app.add_option("--gnuplot", o.gnuplot, "gnuplot program to run")->capture_default_str();
     if (coolgas::parse_command_line(app, argc, argv)) return 0;
     o.scene.view = view == "3d" ? coolgas::SnapshotView::k3d : coolgas::SnapshotView::kSlab;

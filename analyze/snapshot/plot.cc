@@ -3,6 +3,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -51,30 +54,75 @@ void write_data(const SnapshotScene& scene, const fs::path& file) {
   std::ofstream out(file);
   char line[96];
   for (const auto& p : scene.points) {
-    std::snprintf(line, sizeof line, "%.6g %.6g %.6g %u\n", p.x, p.y, p.z, p.rgb);
+    std::snprintf(line, sizeof line, "%.6g %.6g %.6g %u %.6g\n", p.x, p.y, p.z, p.rgb, p.diameter);
     out << line;
   }
   if (!out) throw std::runtime_error("cannot write the snapshot data to " + file.string());
 }
 
-std::string script(const PlotOptions& o, const fs::path& data, const fs::path& png) {
+// Terminal line: the width adds room for the key beside the square picture;
+// the font grows with the picture (18 at 900 pixels, 14 at 700), so that it
+// stays readable where the picture is shown smaller (the pipelines' Fig. 3).
+std::string terminal(const PlotOptions& o, int width) {
+  const int font = std::max(10, int(std::lround(o.size_px / 50.0)));
+  std::ostringstream t;
+  switch (o.format) {
+    case PictureFormat::kPng: t << "pngcairo noenhanced size " << width << "," << o.size_px; break;
+    case PictureFormat::kPdf:  // cairo's PDF size in inches: 72 pixels to the inch keeps the proportions
+      t << "pdfcairo noenhanced size " << format_number(width / 72.0) << "in," << format_number(o.size_px / 72.0) << "in";
+      break;
+    case PictureFormat::kSvg: t << "svg noenhanced size " << width << "," << o.size_px; break;
+  }
+  t << " font '," << font << "'";
+  return t.str();
+}
+
+std::string hex(std::uint32_t rgb) {
+  char s[16];
+  std::snprintf(s, sizeof s, "#%06x", unsigned(rgb));
+  return s;
+}
+
+// One key entry per coloured cluster (and one for the grey rest), drawn as
+// empty plots so the key never covers a particle.
+std::string key_entries(const SnapshotScene& scene, const std::string& what) {
+  std::ostringstream k;
+  for (const auto& c : scene.clusters)
+    k << ", NaN with points pt 7 ps 2 lc rgb '" << hex(c.rgb) << "' title "
+      << quoted(std::to_string(c.rank) + ": m = " + std::to_string(c.mass));
+  k << ", NaN with points pt 7 ps 2 lc rgb '" << hex(kOtherClusters) << "' title " << quoted("other " + what + "s");
+  return k.str();
+}
+
+std::string script(const SnapshotScene& scene, const PlotOptions& o, const fs::path& data, const fs::path& picture) {
   std::ostringstream s;
-  s << "set terminal pngcairo noenhanced size " << o.size_px << "," << o.size_px << " font ',11'\n"
-    << "set output " << quoted(png.string()) << "\n"
+  s << "set terminal " << terminal(o, o.size_px + o.size_px * 3 / 10) << "\n"
+    << "set output " << quoted(picture.string()) << "\n"
     << "set title " << quoted(o.title) << "\n"
-    << "unset key\n"
+    << "set key outside right top samplen 1 title " << quoted("largest " + o.what + "s") << "\n"
     << "set xrange [0:" << format_number(o.L) << "]\nset yrange [0:" << format_number(o.L) << "]\n"
     << "set xlabel 'x [sigma]'\nset ylabel 'y [sigma]'\n";
+  const std::string keys = key_entries(scene, o.what);
   if (o.view == SnapshotView::kSlab) {
-    // Circles of radius 1/2 in axis units: the particles at their true size.
+    // Circles of radius d/2 in axis units: the particles at their true size.
     s << "set size ratio -1\n"
-      << "plot " << quoted(data.string()) << " using 1:2:(0.5):4 with circles fill solid noborder lc rgb variable\n";
+      << "plot " << quoted(data.string()) << " using 1:2:($5/2):4 with circles fill solid noborder lc rgb variable notitle"
+      << keys << "\n";
   } else {
     s << "set zrange [0:" << format_number(o.L) << "]\nset zlabel 'z [sigma]'\n"
       << "set view 60, 35\nset view equal xyz\nset xyplane 0\n"
-      << "splot " << quoted(data.string()) << " using 1:2:3:4 with points pt 7 ps 0.25 lc rgb variable\n";
+      << "splot " << quoted(data.string())
+      << " using 1:2:3:(0.25*$5):4 with points pt 7 ps variable lc rgb variable notitle" << keys << "\n";
   }
   return s.str();
+}
+
+const char* extension(PictureFormat f) {
+  switch (f) {
+    case PictureFormat::kPdf: return ".pdf";
+    case PictureFormat::kSvg: return ".svg";
+    default: return ".png";
+  }
 }
 
 // Runs `program script` with stdout and stderr into `log`; returns the exit
@@ -111,15 +159,25 @@ void move_into_place(const fs::path& from, const std::string& to) {
 
 }  // namespace
 
-void render_png(const SnapshotScene& scene, const PlotOptions& opt, const std::string& output) {
+PictureFormat picture_format(const std::string& output) {
+  std::string ext = fs::path(output).extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".png") return PictureFormat::kPng;
+  if (ext == ".pdf") return PictureFormat::kPdf;
+  if (ext == ".svg") return PictureFormat::kSvg;
+  throw InputError("-o " + output + ": the picture type is taken from the extension, which must be .png, .pdf or .svg" +
+                   (ext.empty() ? std::string(" (none given)") : ", not " + ext));
+}
+
+void render_picture(const SnapshotScene& scene, const PlotOptions& opt, const std::string& output) {
   const fs::path dir = fs::absolute(output).parent_path();
   if (!fs::is_directory(dir))
     throw InputError("cannot write '" + output + "': directory '" + dir.string() + "' does not exist");
   TempDir tmp;
-  const fs::path data = tmp.path() / "particles.dat", png = tmp.path() / "snapshot.png";
+  const fs::path data = tmp.path() / "particles.dat", png = tmp.path() / (std::string("snapshot") + extension(opt.format));
   const fs::path gp = tmp.path() / "snapshot.gp", log = tmp.path() / "gnuplot.log";
   write_data(scene, data);
-  std::ofstream(gp) << script(opt, data, png);
+  std::ofstream(gp) << script(scene, opt, data, png);
   const int rc = run_gnuplot(opt.gnuplot, gp, log);
   if (rc == 127)
     throw InputError("cannot run gnuplot ('" + opt.gnuplot +

@@ -1,24 +1,35 @@
-// Drawing a snapshot scene (simulate/run/scene.h) into a PNG with gnuplot
-// (pngcairo terminal). The data and the script go to a temporary directory;
-// the PNG is moved to its destination only once gnuplot has succeeded, so a
-// failure never leaves a truncated picture behind.
+// Drawing a snapshot scene (analyze/snapshot/scene.h) into a picture with
+// gnuplot's cairo terminals (PNG or PDF) or its SVG terminal, chosen by the
+// output's extension. The data and the script go to a temporary directory;
+// the picture is moved to its destination only once gnuplot has succeeded,
+// so a failure never leaves a truncated picture behind. A key beside the
+// picture names each coloured cluster's mass.
 #pragma once
 #include <string>
+
 
 #include "analyze/snapshot/scene.h"
 
 namespace coolgas {
 
+enum class PictureFormat { kPng, kPdf, kSvg };
+
+// The format named by the file's extension (.png, .pdf, .svg, any case);
+// InputError for any other.
+PictureFormat picture_format(const std::string& output);
+
 struct PlotOptions {
   std::string title;
   double L = 0;  // box side: axis ranges, and particle size in the slab view
   SnapshotView view = SnapshotView::kSlab;
-  int size_px = 900;                // width = height of the picture
+  int size_px = 900;                // height of the picture; the width adds 30 % for the key
+  std::string what = "cluster";     // what the colours mark ("cluster" or "aggregate"), for the key
   std::string gnuplot = "gnuplot";  // program to run
+  PictureFormat format = PictureFormat::kPng;
 };
 
 // InputError (one line) if the destination's directory is missing, gnuplot
 // cannot be run, or gnuplot fails (quoting its first error line).
-void render_png(const SnapshotScene& scene, const PlotOptions& opt, const std::string& output);
+void render_picture(const SnapshotScene& scene, const PlotOptions& opt, const std::string& output);
 
 }  // namespace coolgas

@@ -1,6 +1,8 @@
 // What coolgas-snapshot draws: the particles of one frame, coloured by
 // cluster like the paper's Fig. 3 (upper panels): the largest clusters in
-// distinct colours, all others grey.
+// distinct colours, all others grey. For ballistic aggregation the clusters
+// are the aggregates themselves, drawn at their true diameter m^(1/3)
+// (volumes add, unit spheres) and ranked by mass.
 #pragma once
 #include <cstdint>
 #include <span>
@@ -24,7 +26,8 @@ struct SnapshotOptions {
 
 struct SnapshotPoint {
   double x, y, z;
-  std::uint32_t rgb;  // 0xRRGGBB
+  std::uint32_t rgb;      // 0xRRGGBB
+  double diameter = 1;    // [sigma]
 };
 
 // A coloured cluster, for the legend.
@@ -47,5 +50,10 @@ int palette_size();
 
 // Labels the clusters of the frame and picks and colours the particles to draw.
 SnapshotScene make_scene(const ClusterGrid& grid, std::span<const double> positions, const SnapshotOptions& opt);
+
+// The aggregates of a ballistic-aggregation frame (mass in particles, id the
+// stable aggregate id): ranked by mass, ties by smaller id; box side L.
+SnapshotScene make_aggregate_scene(double L, std::span<const double> positions, std::span<const double> mass,
+                                   std::span<const std::int32_t> id, const SnapshotOptions& opt);
 
 }  // namespace coolgas

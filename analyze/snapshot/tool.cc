@@ -1,5 +1,6 @@
 #include "analyze/snapshot/tool.h"
 
+#include <cstdio>
 #include <filesystem>
 #include <ostream>
 
@@ -23,8 +24,18 @@ Provenance provenance(const Trajectory& traj, const SnapshotToolOptions& o, cons
   return p;
 }
 
+ClusterGrid cluster_grid(const SnapshotToolOptions& o, const Frame& frame) {
+  try {
+    return ClusterGrid(frame.L);
+  } catch (const InputError& e) {
+    throw InputError(o.input + ": " + e.what());
+  }
+}
+
 std::string title(const SnapshotToolOptions& o, const Frame& f) {
-  std::string t = std::filesystem::path(o.input).filename().string() + "   t = " + format_number(f.time);
+  char time[32];
+  std::snprintf(time, sizeof time, "%.4g", f.time);
+  std::string t = std::filesystem::path(o.input).filename().string() + "   t = " + time;
   if (o.scene.view == SnapshotView::kSlab) t += "   slab |z - L/2| < " + format_number(0.5 * o.scene.thickness);
   return t;
 }
@@ -34,18 +45,20 @@ std::string title(const SnapshotToolOptions& o, const Frame& f) {
 void run_snapshot(const SnapshotToolOptions& o, std::ostream& os) {
   if (o.size_px < 100 || o.size_px > 10000)
     throw InputError("--size must be between 100 and 10000 pixels, got " + std::to_string(o.size_px));
+  const PictureFormat format = picture_format(o.output);
   Trajectory traj(o.input, kPosition);
   Frame frame;
   traj.read(traj.nearest_dump(o.time), frame);
-  const ClusterGrid grid = [&] {
-    try {
-      return ClusterGrid(frame.L);
-    } catch (const InputError& e) {
-      throw InputError(o.input + ": " + e.what());
-    }
-  }();
-  const SnapshotScene scene = make_scene(grid, frame.position, o.scene);
-  render_png(scene, {title(o, frame), frame.L, o.scene.view, o.size_px, o.gnuplot}, o.output);
+  const SnapshotScene scene = traj.aggregates() ? make_aggregate_scene(frame.L, frame.position, frame.mass, frame.id, o.scene)
+                                                : make_scene(cluster_grid(o, frame), frame.position, o.scene);
+  const PlotOptions plot{.title = title(o, frame),
+                         .L = frame.L,
+                         .view = o.scene.view,
+                         .size_px = o.size_px,
+                         .what = traj.aggregates() ? "aggregate" : "cluster",
+                         .gnuplot = o.gnuplot,
+                         .format = format};
+  render_picture(scene, plot, o.output);
   TsvWriter out(os, "coolgas-snapshot", provenance(traj, o, frame), {"rank", "mass", "fraction", "shown", "rgb"});
   for (const auto& c : scene.clusters)
     out.row(

@@ -15,3 +15,16 @@ tsvval(file, col) = real(system("sh " . q(plots . "/../tsv-value.sh") . " " . q(
 nblocks(f) = int(system("grep -c '^# t = ' " . q(f)))
 bfield(f, i, key) = system("grep '^# t = ' " . q(f) . " | sed -n " . sprintf("%d", i) . "p | tr ';' '\\n' | sed -n " . \
                            q("s/^[# ]*" . key . " = //p") . " | cut -d' ' -f1")
+
+# term(w, h): the terminal command for `out`: pdfcairo if it ends in .pdf
+# (w, h in pixels at 100 per inch), else pngcairo. Use: eval term(1800, 600)
+is_pdf(f) = strlen(f) > 4 && f[strlen(f) - 3:strlen(f)] eq ".pdf"
+term(w, h) = is_pdf(out) ? sprintf("set terminal pdfcairo enhanced size %.2fin,%.2fin font 'sans,10'", w / 100.0, h / 100.0) \
+                         : sprintf("set terminal pngcairo enhanced size %d,%d font 'sans,11'", w, h)
+# Line styles 1-8: colour, dash and point type all differ, so curves stay
+# apart in grey print too. Curves use 'ls i' and 'pi 6' (a point every 6 rows).
+array style_rgb[8] = ["#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00", "#56b4e9", "#000000", "#999999"]
+array style_pt[8] = [7, 5, 9, 11, 13, 4, 6, 8]
+do for [i = 1:8] {
+  eval sprintf("set style line %d lc rgb '%s' dt %d pt %d ps 0.9 lw 2", i, style_rgb[i], i <= 5 ? i : i - 5, style_pt[i])
+}

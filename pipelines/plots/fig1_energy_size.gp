@@ -13,7 +13,7 @@ fit_theta = tsvval(fit, "theta"); fit_err = tsvval(fit, "theta_err"); fit_A = ts
 fit_lo = tsvval(fit, "t_min"); fit_hi = tsvval(fit, "t_max")
 Lof(i) = meta(word(tables, i), "L") + 0
 
-set terminal pngcairo size 1800, 600 font "sans,11"
+eval term(1800, 600)
 set output out
 set multiplot layout 1, 3 title sprintf("Energy decay of the freely cooling gas for several system sizes L ({/Symbol f} = %.3f, r_0 = %s, {/Symbol d} = %s; %s seed(s) per L)", \
     real(meta(word(tables, 1), "phi")), meta(word(tables, 1), "r0"), meta(word(tables, 1), "delta"), meta(word(tables, 1), "runs"))
@@ -27,7 +27,7 @@ set title "(a) E(t)"
 set key bottom left
 set xlabel "t  [initial mean collision times 1/{/Symbol w}_0]"
 set ylabel "E(t)  [m {/Symbol s}^2 {/Symbol w}_0^2 per particle]"
-plot for [i = 1 : n] word(tables, i) using 1:($1 > 0 ? $2 : NaN) with lines lw 2 title sprintf("L = %d", Lof(i)), \
+plot for [i = 1 : n] word(tables, i) using 1:($1 > 0 ? $2 : NaN) with linespoints ls i pi 6 title sprintf("L = %d", Lof(i)), \
      [fit_lo:fit_hi] fit_A * x**(-fit_theta) with lines lw 3 dt 1 lc rgb "black" \
        title sprintf("fit t^{-{/Symbol q}} at L = %d: {/Symbol q} = %.3f ± %.3f", Lof(n), fit_theta, fit_err)
 
@@ -43,7 +43,7 @@ stats collapse using ($1 >= xlo && $1 <= xhi ? log($2) + eta * log($1) : 1/0) no
 B_eta = exp(STATS_mean)
 stats collapse using ($1 < xlo / 3 ? log($2) + theta * log($1) : 1/0) nooutput
 B_theta = exp(STATS_mean)
-plot for [i = 0 : n - 1] collapse index i using 1:2 with lines lw 2 title sprintf("L = %d", Lof(i + 1)), \
+plot for [i = 0 : n - 1] collapse index i using 1:2 with linespoints ls (i + 1) pi 6 title sprintf("L = %d", Lof(i + 1)), \
      [x_min:xlo] B_theta * x**(-theta) with lines lw 3 lc rgb "black" \
        title sprintf("x^{-{/Symbol q}}, {/Symbol q} = %.3f ± %.3f, z = %.2f ± %.2f", theta, theta_err, z, z_err), \
      [xlo:xhi] B_eta * x**(-eta) with lines lw 3 dt 2 lc rgb "black" title sprintf("x^{-{/Symbol h}}, {/Symbol h} = %.2f ± %.2f", eta, eta_err)
@@ -56,7 +56,7 @@ stats paper using 1 nooutput
 px_min = STATS_min; px_max = STATS_max
 stats paper using ($1 < px_min * 30 ? log($2) + 1.2 * log($1) : 1/0) nooutput
 P = exp(STATS_mean)
-plot for [i = 0 : n - 1] paper index i using 1:2 with lines lw 2 title sprintf("L = %d", Lof(i + 1)), \
+plot for [i = 0 : n - 1] paper index i using 1:2 with linespoints ls (i + 1) pi 6 title sprintf("L = %d", Lof(i + 1)), \
      [px_min:px_max] P * x**(-1.2) with lines lw 2 dt 2 lc rgb "black" title "x^{-6/5} (paper)", \
      [px_min:px_max] P * x**(-1.5) with lines lw 1 dt 3 lc rgb "gray40" title "x^{-3/2} (Burgers)"
 unset multiplot

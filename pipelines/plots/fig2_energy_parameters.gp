@@ -8,11 +8,15 @@ load plots . "/common.gp"
 fitof(t) = system("echo " . q(t) . " | sed 's,energy_param_,fit_param_,'")
 th(t) = tsvval(fitof(t), "theta")
 the(t) = tsvval(fitof(t), "theta_err")
-wlo = real(system("echo '" . window . "' | cut -d: -f1")); whi = real(system("echo '" . window . "' | cut -d: -f2"))
+# each curve's fit, E/E0 = (A/E0) t^-theta, drawn over its own window
+E0(t) = real(system("awk '!/^#/ && $4 > 0 { printf \"%.17g\", $2 / $4; exit }' " . q(t)))
+fA(t) = tsvval(fitof(t), "A") / E0(t)
+flo(t) = tsvval(fitof(t), "t_min")
+fhi(t) = tsvval(fitof(t), "t_max")
 
-set terminal pngcairo size 1800, 600 font "sans,11"
+eval term(1800, 600)
 set output out
-set multiplot layout 1, 3 title sprintf("Energy decay for varying parameters (L = %s; otherwise {/Symbol f} = %s, r_0 = %s, {/Symbol d} = %s; fits over t = %s)", L, phi0, r00, delta0, window)
+set multiplot layout 1, 3 title sprintf("Energy decay for varying parameters (L = %s; otherwise {/Symbol f} = %s, r_0 = %s, {/Symbol d} = %s); thin lines: each curve's power-law fit over its window", L, phi0, r00, delta0)
 set logscale xy
 set format x "10^{%L}"; set format y "10^{%L}"
 set grid
@@ -21,19 +25,21 @@ set xlabel "t  [initial mean collision times 1/{/Symbol w}_0]"
 set ylabel "E(t) / E(0)"
 set xrange [0.1:*]
 ref(x) = 3 * x**(-1.2)
+# panel(tables, values, name): the curves, their fits, and t^-6/5 (joined
+# with '.', not sprintf, which cuts long strings such as lists of paths)
+panel(tables, values, name) = "for [i = 1 : words(" . q(tables) . ")] word(" . q(tables) . ", i) using 1:($1 > 0 ? $4 : NaN) " . \
+  "with linespoints ls i pi 6 title sprintf('" . name . " = %s: {/Symbol q} = %.3f ± %.3f', word(" . q(values) . ", i), " . \
+  "th(word(" . q(tables) . ", i)), the(word(" . q(tables) . ", i))), " . \
+  "for [i = 1 : words(" . q(tables) . ")] [flo(word(" . q(tables) . ", i)):fhi(word(" . q(tables) . ", i))] " . \
+  "fA(word(" . q(tables) . ", i)) * x**(-th(word(" . q(tables) . ", i))) with lines ls i lw 1 dt 1 notitle, " . \
+  "[1:*] ref(x) with lines lw 3 lc rgb 'black' title 't^{-6/5}'"
 
 set title "(a) volume fraction {/Symbol f}"
-plot for [i = 1 : words(phi_tables)] word(phi_tables, i) using 1:($1 > 0 ? $4 : NaN) with lines lw 2 \
-       title sprintf("{/Symbol f} = %s: {/Symbol q} = %.3f ± %.3f", word(phis, i), th(word(phi_tables, i)), the(word(phi_tables, i))), \
-     [wlo:whi] ref(x) with lines lw 3 lc rgb "black" title "t^{-6/5}"
+eval "plot " . panel(phi_tables, phis, "{/Symbol f}")
 
 set title "(b) coefficient of restitution r_0"
-plot for [i = 1 : words(r0_tables)] word(r0_tables, i) using 1:($1 > 0 ? $4 : NaN) with lines lw 2 \
-       title sprintf("r_0 = %s: {/Symbol q} = %.3f ± %.3f", word(r0s, i), th(word(r0_tables, i)), the(word(r0_tables, i))), \
-     [wlo:whi] ref(x) with lines lw 3 lc rgb "black" title "t^{-6/5}"
+eval "plot " . panel(r0_tables, r0s, "r_0")
 
 set title "(c) cut-off velocity {/Symbol d}"
-plot for [i = 1 : words(delta_tables)] word(delta_tables, i) using 1:($1 > 0 ? $4 : NaN) with lines lw 2 \
-       title sprintf("{/Symbol d} = %s: {/Symbol q} = %.3f ± %.3f", word(deltas, i), th(word(delta_tables, i)), the(word(delta_tables, i))), \
-     [wlo:whi] ref(x) with lines lw 3 lc rgb "black" title "t^{-6/5}"
+eval "plot " . panel(delta_tables, deltas, "{/Symbol d}")
 unset multiplot

@@ -16,12 +16,12 @@ bfrac(f, i) = real(bfield(f, i, "largest_fraction"))
 bavg(f, i) = real(bfield(f, i, "M_avg"))
 Mavg_last = bavg(nm, blocks)
 
-set terminal pngcairo size 1400, (has_ba ? 1300 : 650) font "sans,11"
+eval term(1400, has_ba ? 1300 : 650)
 set output out
 set multiplot layout (has_ba ? 2 : 1), 2 title sprintf("Clusters of the granular gas (L = %s, N = %s, {/Symbol f} = %.3f, r_0 = %s)", meta(nm, "L"), meta(nm, "N"), real(meta(nm, "phi")), meta(nm, "r0"))
 
 set title sprintf("(a) gas at t = %s: slab |z - L/2| < 2, the largest clusters in colour", snapshot_time)
-unset key; unset tics; unset border
+unset key; unset tics; unset border; unset xlabel; unset ylabel
 set size ratio -1
 plot snapshot binary filetype=png with rgbimage
 set size noratio; set tics; set border
@@ -34,7 +34,7 @@ set key top right
 set xlabel "m / M_{avg}"
 set ylabel "N(m,t) M_{avg}^2 / n     (n = N / L^3)"
 # fitted N = A m^-tau in scaled variables: y = A (x M_avg)^-tau M_avg^2 / n
-plot for [i = 1 : blocks] nm index (i - 1) using 5:($6 / n) with points pt 7 ps 0.9 \
+plot for [i = 1 : blocks] nm index (i - 1) using 5:($6 / n) with points ls i \
        title sprintf("t = %s (largest cluster %.0f %%)", bt(nm, i), 100 * bfrac(nm, i)), \
      [flo / Mavg_last : fhi / Mavg_last] fA * (x * Mavg_last)**(-tau) * Mavg_last**2 / n with lines lw 3 lc rgb "black" \
        title sprintf("fit m^{-%.2f ± %.2f} (t = %s)", tau, tau_err, bt(nm, blocks)), \
@@ -42,15 +42,17 @@ plot for [i = 1 : blocks] nm index (i - 1) using 5:($6 / n) with points pt 7 ps 
        title "m^{-2.7} (paper)"
 
 if (has_ba) {
-  set title "(c) ballistic aggregation"
-  unset key; unset tics; unset border; unset logscale; unset grid
+  set title "(c) ballistic aggregation: aggregates at their true size, the largest in colour"
+  unset key; unset tics; unset border; unset logscale; unset grid; unset xlabel; unset ylabel
   set size ratio -1
   plot ba_snapshot binary filetype=png with rgbimage
   set size noratio; set tics; set border
   set title "(d) scaled mass distribution, ballistic aggregation"
   set logscale xy; set grid; set key top right
+  set xlabel "m / M_{avg}"
+  set ylabel "N(m,t) M_{avg}^2 / n     (n = N / L^3)"
   nb = real(meta(ba_nm, "N")) / real(meta(ba_nm, "L"))**3
   bblocks = nblocks(ba_nm)
-  plot for [i = 1 : bblocks] ba_nm index (i - 1) using 5:($6 / nb) with points pt 7 ps 0.9 title sprintf("t = %s", bt(ba_nm, i))
+  plot for [i = 1 : bblocks] ba_nm index (i - 1) using 5:($6 / nb) with points ls i title sprintf("t = %s", bt(ba_nm, i))
 }
 unset multiplot

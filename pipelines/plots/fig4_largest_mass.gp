@@ -11,9 +11,10 @@ A(t) = tsvval(fitof(t), "A")
 lo(t) = tsvval(fitof(t), "t_min")
 hi(t) = tsvval(fitof(t), "t_max")
 label(t) = sprintf("L = %s, {/Symbol f} = %.3f", meta(t, "L"), real(meta(t, "phi")))
+Nof(t) = real(meta(t, "N"))
 ng = words(gas); nb = words(ba)
 
-set terminal pngcairo size 1000, 700 font "sans,11"
+eval term(1300, 700)
 set output out
 if (!exists("ba_window")) ba_window = ""
 set title sprintf("Largest cluster M_{max}(t): gas (r_0 = %s, {/Symbol d} = %s)%s; lines: power-law fits over t = %s%s", \
@@ -22,14 +23,14 @@ set title sprintf("Largest cluster M_{max}(t): gas (r_0 = %s, {/Symbol d} = %s)%
 set logscale xy
 set format x "10^{%L}"; set format y "10^{%L}"
 set grid
-set key top left
+set key outside right top
 set xlabel "t  [initial mean collision times 1/{/Symbol w}_0]"
-set ylabel "M_{max}(t)  [particles]"
+set ylabel "M_{max}(t) / N  (largest cluster's share of the particles)"
 set xrange [0.01:*]
-gas_curves = "for [i = 1 : ng] word(gas, i) using 1:($1 > 0 ? $6 : NaN) with linespoints pt 7 ps 0.6 lc i title sprintf('gas %s', label(word(gas, i))), \
-  for [i = 1 : ng] [lo(word(gas, i)):hi(word(gas, i))] A(word(gas, i)) * x**a(word(gas, i)) with lines lw 2 lc i title sprintf('t^{%.2f ± %.2f}', a(word(gas, i)), ae(word(gas, i)))"
-ba_curves = "for [i = 1 : nb] word(ba, i) using 1:($1 > 0 ? $6 : NaN) with linespoints pt 5 ps 0.6 lc (ng + i) title sprintf('BA %s', label(word(ba, i))), \
-  for [i = 1 : nb] [lo(word(ba, i)):hi(word(ba, i))] A(word(ba, i)) * x**a(word(ba, i)) with lines lw 2 lc (ng + i) title sprintf('t^{%.2f ± %.2f}', a(word(ba, i)), ae(word(ba, i)))"
+gas_curves = "for [i = 1 : ng] word(gas, i) using 1:($1 > 0 ? $6 / Nof(word(gas, i)) : NaN) with linespoints ls i title sprintf('gas %s', label(word(gas, i))), \
+  for [i = 1 : ng] [lo(word(gas, i)):hi(word(gas, i))] A(word(gas, i)) * x**a(word(gas, i)) / Nof(word(gas, i)) with lines ls i lw 1 dt 1 title sprintf('  fit t^{%.2f ± %.2f}', a(word(gas, i)), ae(word(gas, i)))"
+ba_curves = "for [i = 1 : nb] word(ba, i) using 1:($1 > 0 ? $6 / Nof(word(ba, i)) : NaN) with linespoints ls (ng + i) title sprintf('BA %s', label(word(ba, i))), \
+  for [i = 1 : nb] [lo(word(ba, i)):hi(word(ba, i))] A(word(ba, i)) * x**a(word(ba, i)) / Nof(word(ba, i)) with lines ls (ng + i) lw 1 dt 1 title sprintf('  fit t^{%.2f ± %.2f}', a(word(ba, i)), ae(word(ba, i)))"
 if (nb > 0) {
   eval "plot " . gas_curves . ", " . ba_curves
 } else {

@@ -10,7 +10,7 @@ bbeta(f, i) = bfield(f, i, "beta")
 ne = nblocks(early); nl = nblocks(late); nt = nblocks(tail_gas)
 gauss(y) = exp(-y**2 / 2) / sqrt(2 * pi)
 
-set terminal pngcairo size 1800, 600 font "sans,11"
+eval term(1800, 600)
 set output out
 set multiplot layout 1, 3 title sprintf("Velocity distribution of the granular gas (L = %s, N = %s, {/Symbol f} = %.3f, r_0 = %s)", meta(early, "L"), meta(early, "N"), real(meta(early, "phi")), meta(early, "r0"))
 
@@ -23,8 +23,8 @@ set xlabel "y = v_{/Symbol a} / v_{rms}"
 set ylabel "{/Symbol F}(y)"
 set yrange [1e-6:1]
 set xrange [-7:7]
-plot for [i = 1 : ne] early index (i - 1) using 2:3 with points pt 7 ps 0.5 title sprintf("t = %s (early)", bt(early, i)), \
-     for [i = 1 : nl] late index (i - 1) using 2:3 with points pt 5 ps 0.5 title sprintf("t = %s (late)", bt(late, i)), \
+plot for [i = 1 : ne] early index (i - 1) using 2:3 with points ls i ps 0.6 title sprintf("t = %s (early)", bt(early, i)), \
+     for [i = 1 : nl] late index (i - 1) using 2:3 with points ls (ne + i) ps 0.6 title sprintf("t = %s (late)", bt(late, i)), \
      gauss(x) with lines lw 2 lc rgb "black" title "Gaussian"
 
 set title "(b) kurtosis {/Symbol k} = <v^4>/<v^2>^2 - 5/3"
@@ -41,10 +41,17 @@ set title sprintf("(c) tails: -ln {/Symbol F}(y) ∝ y^{/Symbol b}%s", has_ba ? 
 set logscale xy
 set format x "%g"; set format y "%g"
 set key top left font ",10"
-set xrange [*:*]; set yrange [*:*]
+# axes fitted to the data (a decade each way would leave two tick labels)
+stats tail_gas using 2:3 nooutput
+ylo = STATS_min_x; yhi = STATS_max_x; flo = STATS_min_y; fhi = STATS_max_y
+if (has_ba) { stats tail_ba using 2:3 nooutput; ylo = (STATS_min_x < ylo ? STATS_min_x : ylo); yhi = (STATS_max_x > yhi ? STATS_max_x : yhi); \
+              flo = (STATS_min_y < flo ? STATS_min_y : flo); fhi = (STATS_max_y > fhi ? STATS_max_y : fhi) }
+set xrange [ylo / 1.08 : yhi * 1.08]; set yrange [flo / 1.15 : fhi * 1.15]
+set xtics ("1" 1, "1.5" 1.5, "2" 2, "2.5" 2.5, "3" 3, "4" 4, "5" 5, "6" 6, "8" 8, "10" 10)
+set ytics ("0.5" 0.5, "1" 1, "1.5" 1.5, "2" 2, "3" 3, "4" 4, "5" 5, "6" 6, "8" 8, "10" 10, "15" 15, "20" 20, "30" 30)
 set xlabel "y = |v_{/Symbol a}| / v_{rms}"
 set ylabel "-ln {/Symbol F}(y)"
-plot for [i = 1 : nt] tail_gas index (i - 1) using 2:3:4 with yerrorbars pt 7 ps 0.5 lc i title sprintf("gas t = %s", bt(tail_gas, i)), \
-     for [i = 1 : nt] tail_gas index (i - 1) using 2:5 with lines lw 2 lc i title sprintf("fit {/Symbol b} = %.2f", real(bbeta(tail_gas, i))), \
-     (has_ba ? tail_ba : tail_gas) index 0 using 2:(has_ba ? $3 : NaN) with points pt 5 ps 0.5 lc rgb "black" title (has_ba ? "BA" : "")
+plot for [i = 1 : nt] tail_gas index (i - 1) using 2:3:4 with yerrorbars ls i ps 0.6 title sprintf("gas t = %s", bt(tail_gas, i)), \
+     for [i = 1 : nt] tail_gas index (i - 1) using 2:5 with lines ls i title sprintf("fit {/Symbol b} = %.2f", real(bbeta(tail_gas, i))), \
+     (has_ba ? tail_ba : tail_gas) index 0 using 2:(has_ba ? $3 : NaN) with points ls 7 ps 0.7 title (has_ba ? "BA" : "")
 unset multiplot

@@ -12,7 +12,7 @@ amax = -tsvval(fit_max, "theta"); aavg = -tsvval(fit_avg, "theta")
 Amax = tsvval(fit_max, "A"); Aavg = tsvval(fit_avg, "A")
 lo = tsvval(fit_max, "t_min"); hi = tsvval(fit_max, "t_max")
 
-set terminal pngcairo size 1500, 650 font "sans,11"
+eval term(1900, 650)
 set output out
 set multiplot layout 1, 2 title sprintf("Smoluchowski equation, kernel (m_1^{-1/2} + m_2^{-1/2})(m_1^{1/3} + m_2^{1/3})^2, beside the gas (L = %s, {/Symbol f} = %.3f)", meta(gas_nm, "L"), real(meta(gas_nm, "phi")))
 set logscale xy
@@ -20,25 +20,25 @@ set format x "10^{%L}"; set format y "10^{%L}"
 set grid
 
 set title "(a) scaled mass distribution"
-set key bottom left font ",10"
+set key outside right top font ",10"
 set xlabel "m / M_{avg}"
 set ylabel "N(m,t) M_{avg}^2 / M_1"
 set yrange [1e-8:*]
-plot for [i = 1 : ns] nm index (i - 1) using 5:6 with lines lw 2 title sprintf("Smoluchowski t = %s", bt(nm, i)), \
-     for [i = 1 : ng] gas_nm index (i - 1) using 5:($6 / n) with points pt 7 ps 0.6 title sprintf("gas t = %s", bt(gas_nm, i))
+plot for [i = 1 : ns] nm index (i - 1) using 5:6 with lines ls i title sprintf("Smoluchowski t = %s", bt(nm, i)), \
+     for [i = 1 : ng] gas_nm index (i - 1) using 5:($6 / n) with points ls (ns + i) title sprintf("gas t = %s", bt(gas_nm, i))
 
 set title "(b) cluster growth"
-set key top left font ",10"
+set key outside right top font ",10"
 set yrange [1:*]
 set xlabel "t  [Smoluchowski time 1/(c_1(0) K_0), ½-gain convention]"
 set x2label "t  [gas: initial mean collision times 1/{/Symbol w}_0]"
 set x2tics; set logscale x2; set format x2 "10^{%L}"
 set xtics nomirror
 set ylabel "mass  [particles]"
-plot series using 1:($1 > 0 ? $6 : NaN) with lines lw 2 lc 1 title "Smoluchowski M_{max} (V = N of the gas)", \
-     [lo:hi] Amax * x**amax with lines dt 2 lw 2 lc 1 title sprintf("fit t^{%.3f}", amax), \
-     series using 1:($1 > 0 ? $5 : NaN) with lines lw 2 lc 2 title "Smoluchowski M_{avg}", \
-     [lo:hi] Aavg * x**aavg with lines dt 2 lw 2 lc 2 title sprintf("fit t^{%.3f} (mean field 6/5)", aavg), \
-     gas_series using 1:($1 > 0 ? $6 : NaN) axes x2y1 with linespoints pt 7 ps 0.6 lc 3 title "gas M_{max} (top axis)", \
-     gas_series using 1:($1 > 0 ? $5 : NaN) axes x2y1 with linespoints pt 5 ps 0.6 lc 4 title "gas M_{avg} (top axis)"
+plot series using 1:($1 > 0 ? $6 : NaN) with lines ls 1 title "Smoluchowski M_{max}", \
+     [lo:hi] Amax * x**amax with lines ls 1 lw 4 dt 1 title sprintf("  fit t^{%.3f}", amax), \
+     series using 1:($1 > 0 ? $5 : NaN) with lines ls 2 title "Smoluchowski M_{avg}", \
+     [lo:hi] Aavg * x**aavg with lines ls 2 lw 4 dt 1 title sprintf("  fit t^{%.3f} (mean field 6/5)", aavg), \
+     gas_series using 1:($1 > 0 ? $6 : NaN) axes x2y1 with linespoints ls 3 title "gas M_{max} (top axis)", \
+     gas_series using 1:($1 > 0 ? $5 : NaN) axes x2y1 with linespoints ls 4 title "gas M_{avg} (top axis)"
 unset multiplot

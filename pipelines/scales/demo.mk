@@ -1,36 +1,52 @@
-# SCALE = demo: small systems that still show the physics, about 3 minutes
-# with make -j2 on a laptop-class machine (one core per run).
-# Every variable is documented in pipelines/common.mk.
+# SCALE = demo: the paper's result at the smallest sizes that show it, in
+# about 10 minutes with make -j2 on a 2-core machine (one core per run).
+# Every box is chosen so its quantity is measured in its own regime: Fig. 1
+# needs L >= 34 (smaller boxes stay in the finite-size regime), and the
+# exponent table (exponents.md) says for each quantity whether the run
+# reached the paper's regime. Every variable is documented in pipelines/common.mk.
 
 # The paper's gas (all figures unless varied).
 PHI := 0.208
 R0 := 0.1
 DELTA := 1e-4
 
-# Fig. 1: energy decay for several L, seeds averaged, finite-size collapse.
-SIZE_L := 12 16 24 32
-SIZE_SEEDS := 1 2 3 4
-SIZE_T_END := 30000
-THETA_WINDOW := 20:300
+# Fig. 1: energy decay for L = 34, 48, 68 (the paper's smallest sizes are 34
+# and 68), two seeds each, to x = t/L^(5/2) of about 8-15; the collapse's
+# errors come from the jackknife over the seeds.
+SIZE_L := 34 48 68
+SIZE_SEEDS := 1 2
+SIZE_T_END := 100000
+SIZE_T_END_L48 := 200000
+SIZE_T_END_L68 := 300000
+THETA_WINDOW := 100:3000
 COLLAPSE_T_WINDOW := 20:
-COLLAPSE_ETA_WINDOW := 0.3:
+COLLAPSE_ETA_WINDOW := 3:
 COLLAPSE_BOOTSTRAP := 100
 
-# Fig. 2: E(t) for several phi, r0, delta at fixed L.
-PARAM_L := 40
+# Fig. 2: E(t) for several phi, r0, delta at L = 68, fitted between the
+# crossover from Haff's regime (t ~ 100) and the finite-size crossover
+# (x = t/L^(5/2) = 0.1 at t = 3800). r0 = 0.9 leaves the homogeneous regime
+# too late for this box. The dilute gases cluster later still; at phi = 0.104
+# and 0.052 the table reports that this box does not reach their regime.
+PARAM_L := 68
 PARAM_SEEDS := 1
 PARAM_T_END := 10000
 PARAM_PHIS := 0.052 0.104 0.208
-PARAM_R0S := 0.1 0.5 0.9
+PARAM_R0S := 0.1 0.3 0.5
 PARAM_DELTAS := 1e-2 1e-3 1e-4
-PARAM_FIT_WINDOW := 30:1000
+PARAM_FIT_WINDOW := 100:3000
+PARAM_FIT_WINDOW_phi0.052_r0.1_d1e-4 := 300:10000
+PARAM_FIT_WINDOW_phi0.104_r0.1_d1e-4 := 300:3000
+# Fig. 4 draws M_max(t) of the phi runs: enough dumps to see its rapid rise.
+PARAM_OUTPUT = observables_per_decade = 20$(newline)dumps_per_decade = 5
 
-# Figs. 3-5: one larger run dumped at the paper's times.
-SNAP_L := 48
+# Figs. 3-5: one run at L = 68 dumped at the paper's times (its late times
+# 2000-8000 lie past this box's finite-size crossover; the table says so).
+SNAP_L := 68
 SNAP_SEED := 1
 SNAP_T_END := 10000
 SNAP_DUMP_TIMES := 5, 10, 100, 1000, 2000, 4000, 8000
-SNAPSHOT_TIME := 2000
+SNAPSHOT_TIME := 1000
 NM_TIMES := 1000 2000 4000 8000
 NM_FIT_WINDOW := 1:100
 MMAX_FIT_WINDOW := 100:10000
@@ -43,7 +59,7 @@ SMOL_T_END := 300
 SMOL_TIMES := 3,30,300
 SMOL_FIT_WINDOW := 10:300
 
-# Ballistic aggregation (with BA = 1, once coolgas-simulate has collision.model = "aggregation").
+# Ballistic aggregation (BA = 1).
 BA_L := 48
 BA_PHIS := 0.052 0.208
 BA_SEED := 1

@@ -53,6 +53,30 @@ TEST(SnapshotScene, ThreeDimensionalViewKeepsAtMostMaxPoints) {
   EXPECT_EQ(make_scene(ClusterGrid(10.0), positions(), o).points.size(), 9u);
 }
 
+// Aggregates: ranked by mass (ties by the smaller id), drawn at diameter
+// m^(1/3), and in the slab when they reach into it: |z - L/2| < (t + d - 1)/2.
+TEST(SnapshotScene, AggregatesAreRankedByMassAndDrawnAtTheirDiameter) {
+  const std::vector<double> pos{2, 2, 5, 6, 6, 5, 8, 2, 8.2, 2, 8, 9.5};
+  const std::vector<double> mass{8, 27, 8, 1};
+  const std::vector<std::int32_t> id{4, 7, 2, 9};
+  SnapshotOptions o;
+  o.thickness = 2;  // unit spheres: 4 < z < 6
+  o.colored = 3;
+  const auto s = make_aggregate_scene(10, pos, mass, id, o);
+  ASSERT_EQ(s.clusters.size(), 3u);
+  EXPECT_EQ(s.clusters[0].mass, 27);
+  EXPECT_EQ(s.clusters[1].mass, 8);  // id 2 before id 4
+  EXPECT_EQ(s.clusters[2].mass, 8);
+  // in view: m = 27 (d = 3) at z = 5; m = 8 (d = 2) at z = 5; m = 8 at z = 8.2 (2.7 from the middle, above 1.5)
+  // is not; the unit sphere at z = 9.5 is not.
+  ASSERT_EQ(s.points.size(), 2u);
+  EXPECT_EQ(s.points[0].rgb, cluster_colour(3));  // id 4 at (2, 2): rank 3
+  EXPECT_DOUBLE_EQ(s.points[0].diameter, 2);
+  EXPECT_EQ(s.points[1].rgb, cluster_colour(1));
+  EXPECT_DOUBLE_EQ(s.points[1].diameter, 3);
+  EXPECT_EQ(s.clusters[1].shown, 0);  // id 2 lies outside the slab
+}
+
 TEST(SnapshotScene, RejectsBadOptions) {
   SnapshotOptions o;
   o.colored = palette_size() + 1;
