@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "data-schema/h5md_profile.h"
+#include "common/trajectory/h5md_profile.h"
 
 namespace coolgas::schema {
 

@@ -11,7 +11,7 @@
 #include <sstream>
 
 #include "common/error.h"
-#include "common/h5md_writer.h"
+#include "common/trajectory/h5md_writer.h"
 #include "common/progress.h"
 #include "common/tsv.h"
 #include "simulate/run/engine_factory.h"

@@ -10,7 +10,7 @@
 #include <limits>
 
 #include "common/error.h"
-#include "common/h5md_writer.h"
+#include "common/trajectory/h5md_writer.h"
 #include "common/hdf5_file.h"
 #include "tests/support/run_command.h"
 

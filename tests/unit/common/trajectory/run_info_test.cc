@@ -1,7 +1,7 @@
-// Reading a trajectory's /parameters and observables back (analyze/trajectory/run_info.h): what
+// Reading a trajectory's /parameters and observables back (common/trajectory/run_info.h): what
 // the writer stored comes back exactly, and every defect is one InputError
 // naming the file and what is missing.
-#include "analyze/trajectory/run_info.h"
+#include "common/trajectory/run_info.h"
 
 #include <gtest/gtest.h>
 

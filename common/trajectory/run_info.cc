@@ -1,4 +1,4 @@
-#include "analyze/trajectory/run_info.h"
+#include "common/trajectory/run_info.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "common/h5md_writer.h"
+#include "common/trajectory/h5md_writer.h"
 
 #include <cstdlib>
 #include <filesystem>

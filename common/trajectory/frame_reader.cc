@@ -1,4 +1,4 @@
-#include "analyze/trajectory/frame_reader.h"
+#include "common/trajectory/frame_reader.h"
 
 #include <algorithm>
 #include <cmath>

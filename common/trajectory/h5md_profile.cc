@@ -1,4 +1,4 @@
-#include "data-schema/h5md_profile.h"
+#include "common/trajectory/h5md_profile.h"
 
 // The tables name only the fields a row needs; the others keep their member
 // defaults on purpose. GCC 12 warns about that even for designated initializers.

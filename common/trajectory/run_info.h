@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "common/h5md_writer.h"
+#include "common/trajectory/h5md_writer.h"
 
 namespace coolgas {
 
