@@ -1,5 +1,7 @@
 #include "common/trajectory/h5md_profile.h"
 
+#include "common/trajectory/run_parameters.h"
+
 // The tables name only the fields a row needs; the others keep their member
 // defaults on purpose. GCC 12 warns about that even for designated initializers.
 #pragma GCC diagnostic ignored "-Wmissing-field-initializers"
@@ -10,36 +12,52 @@ namespace {
 using enum DataType;
 using enum RowCount;
 using enum ValueRule;
+using namespace layout;
 
-// Version 2 adds the effects of issue 4: the viscoelastic model's constant,
-// and for ballistic aggregation per-particle id (fill value -1 marks an
-// absent aggregate), mass and diameter, and the aggregate observables. All
-// optional: a file has them when its model uses them.
-void append_version_2(Profile& p) {
-  p.version = 2;
-  p.attributes.push_back({.group = "/parameters",
-                          .name = "viscoelastic_b",
-                          .type = kFloat64,
-                          .meaning = "viscoelastic material constant b",
-                          .presence = Presence::kOptional,
-                          .since = 2});
-  const auto optional2 = [](ElementSpec e) {
-    e.presence = Presence::kOptional;
+// Version 2 adds the effects (viscoelastic restitution, ballistic
+// aggregation): the viscoelastic model's constant (a /parameters row of
+// run_parameters.cc), and for the aggregation layout per-particle id (fill
+// value -1 marks an absent aggregate), mass and diameter, and the aggregate
+// observables. Version 3 writes the model-specific /parameters only for the
+// models that use them; the rows stay, as kPerModel.
+void append_aggregation_layout(Profile& p) {
+  p.version = 3;
+  const auto aggregation = [](ElementSpec e) {
+    e.presence = Presence::kPerModel;
     e.since = 2;
+    e.only_in = layout::Layout::kAggregation;
     return e;
   };
-  p.elements.push_back(optional2({.path = "/particles/all/id", .type = kInt32, .row = {kParticles},
-                                  .meaning = "aggregate id, -1 if absent"}));
-  p.elements.push_back(optional2({.path = "/particles/all/mass", .row = {kParticles}, .rule = kFinite,
-                                  .meaning = "aggregate mass"}));
-  p.elements.push_back(optional2({.path = "/particles/all/diameter", .row = {kParticles}, .rule = kFinite,
-                                  .meaning = "aggregate diameter"}));
-  p.elements.push_back(optional2({.path = "/observables/aggregates", .type = kInt64, .rows = kObservableRows,
-                                  .meaning = "number of aggregates"}));
-  p.elements.push_back(optional2({.path = "/observables/mean_mass", .rows = kObservableRows, .rule = kFinite,
-                                  .meaning = "mean aggregate mass"}));
-  p.elements.push_back(optional2({.path = "/observables/largest_mass", .rows = kObservableRows, .rule = kFinite,
-                                  .meaning = "largest aggregate mass"}));
+  p.elements.push_back(aggregation({.path = kId, .type = kInt32, .row = {kParticles},
+                                    .meaning = "aggregate id, -1 if absent", .fill = layout::kAbsentId}));
+  p.elements.push_back(aggregation({.path = kMass, .row = {kParticles}, .rule = kFinite,
+                                    .meaning = "aggregate mass"}));
+  p.elements.push_back(aggregation({.path = kDiameter, .row = {kParticles}, .rule = kFinite,
+                                    .meaning = "aggregate diameter"}));
+  p.elements.push_back(aggregation({.path = kAggregates, .type = kInt64, .rows = kObservableRows,
+                                    .meaning = "number of aggregates"}));
+  p.elements.push_back(aggregation({.path = kMeanMass, .rows = kObservableRows, .rule = kFinite,
+                                    .meaning = "mean aggregate mass"}));
+  p.elements.push_back(aggregation({.path = kLargestMass, .rows = kObservableRows, .rule = kFinite,
+                                    .meaning = "largest aggregate mass"}));
+}
+
+DataType type_of(const ParameterField::Member& m) {
+  if (std::holds_alternative<std::int64_t RunParameters::*>(m)) return kInt64;
+  if (std::holds_alternative<std::string RunParameters::*>(m)) return kVlenString;
+  return kFloat64;
+}
+
+// The /parameters attributes: one row per field of the run-parameter table.
+void append_parameters(Profile& p) {
+  for (const ParameterField& f : run_parameter_fields())
+    p.attributes.push_back({.group = kParameters,
+                            .name = f.name,
+                            .type = type_of(f.member),
+                            .at_least = f.at_least,
+                            .meaning = f.meaning,
+                            .presence = is_model_specific(f) ? Presence::kPerModel : Presence::kRequired,
+                            .since = f.since});
 }
 
 // Version 1, row for row as in data-schema/h5md-profile.md. Later versions append.
@@ -47,70 +65,60 @@ Profile make_profile() {
   Profile p;
   p.version = 1;
   p.groups = {
-      {.path = "/h5md", .meaning = "H5MD metadata"},
-      {.path = "/h5md/author", .meaning = "who ran the simulation"},
-      {.path = "/h5md/creator", .meaning = "the program that wrote the file"},
-      {.path = "/particles/all/box", .meaning = "the periodic cubic box"},
-      {.path = "/parameters", .meaning = "the run's inputs, as attributes"},
-      {.path = "/restart", .meaning = "per-dump counters needed to resume"},
+      {.path = kH5md, .meaning = "H5MD metadata"},
+      {.path = kAuthor, .meaning = "who ran the simulation"},
+      {.path = kCreator, .meaning = "the program that wrote the file"},
+      {.path = kBox, .meaning = "the periodic cubic box"},
+      {.path = kParameters, .meaning = "the run's inputs, as attributes"},
+      {.path = kRestart, .meaning = "per-dump counters needed to resume"},
   };
   p.attributes = {
-      {.group = "/h5md", .name = "version", .type = kInt32, .length = 2, .equals = "[1, 1]", .meaning = "H5MD version"},
-      {.group = "/h5md/author", .name = "name", .type = kVlenString, .meaning = "user running the simulation"},
-      {.group = "/h5md/creator", .name = "name", .type = kVlenString, .meaning = "creating program"},
-      {.group = "/h5md/creator", .name = "version", .type = kVlenString, .meaning = "its version"},
+      {.group = kH5md, .name = "version", .type = kInt32, .length = 2, .equals = "[1, 1]", .meaning = "H5MD version"},
+      {.group = kAuthor, .name = "name", .type = kVlenString, .meaning = "user running the simulation"},
+      {.group = kCreator, .name = "name", .type = kVlenString, .meaning = "creating program"},
+      {.group = kCreator, .name = "version", .type = kVlenString, .meaning = "its version"},
       // The page says int32; coolgas 0.1 writes int64 and MDAnalysis reads either.
-      {.group = "/particles/all/box", .name = "dimension", .type = kInteger, .equals = "3", .meaning = "dimension"},
-      {.group = "/particles/all/box",
+      {.group = kBox, .name = "dimension", .type = kInteger, .equals = "3", .meaning = "dimension"},
+      {.group = kBox,
        .name = "boundary",
        .type = kVlenString,
        .length = 3,
        .equals = "[periodic, periodic, periodic]",
        .meaning = "boundary conditions"},
-      {.group = "/parameters", .name = "schema_version", .type = kInt64, .at_least = 1, .meaning = "profile version"},
-      {.group = "/parameters", .name = "program_version", .type = kVlenString, .meaning = "simulator version"},
-      {.group = "/parameters", .name = "scene", .type = kVlenString, .meaning = "effective scene (TOML)"},
-      {.group = "/parameters", .name = "seed", .type = kInt64, .meaning = "random seed"},
-      {.group = "/parameters", .name = "N", .type = kInt64, .at_least = 1, .meaning = "number of particles"},
-      {.group = "/parameters", .name = "L", .type = kFloat64, .meaning = "box side"},
-      {.group = "/parameters", .name = "phi", .type = kFloat64, .meaning = "volume fraction"},
-      {.group = "/parameters", .name = "T0", .type = kFloat64, .meaning = "initial temperature"},
-      {.group = "/parameters", .name = "model", .type = kVlenString, .meaning = "collision model"},
-      {.group = "/parameters", .name = "r0", .type = kFloat64, .meaning = "coefficient of restitution"},
-      {.group = "/parameters", .name = "delta", .type = kFloat64, .meaning = "elastic below this normal speed"},
   };
   p.elements = {
-      {.path = "/particles/all/box/edges", .row = {kThree, kThree}, .rule = kBoxMatrix, .meaning = "diag(L, L, L)"},
-      {.path = "/particles/all/position", .row = {kParticles, kThree}, .rule = kInsideBox, .meaning = "centres"},
-      {.path = "/particles/all/image", .type = kInt32, .row = {kParticles, kThree}, .meaning = "image counts"},
-      {.path = "/particles/all/velocity", .row = {kParticles, kThree}, .rule = kFinite, .meaning = "velocities"},
-      {.path = "/observables/kinetic_energy", .rows = kObservableRows, .rule = kFinite, .meaning = "E per particle"},
-      {.path = "/observables/collisions", .type = kInt64, .rows = kObservableRows, .meaning = "collisions so far"},
-      {.path = "/observables/collisions_per_particle",
+      {.path = kBoxEdges, .row = {kThree, kThree}, .rule = kBoxMatrix, .meaning = "diag(L, L, L)"},
+      {.path = kPosition, .row = {kParticles, kThree}, .rule = kInsideBox, .meaning = "centres"},
+      {.path = kImage, .type = kInt32, .row = {kParticles, kThree}, .meaning = "image counts"},
+      {.path = kVelocity, .row = {kParticles, kThree}, .rule = kFinite, .meaning = "velocities"},
+      {.path = kKineticEnergy, .rows = kObservableRows, .rule = kFinite, .meaning = "E per particle"},
+      {.path = kCollisions, .type = kInt64, .rows = kObservableRows, .meaning = "collisions so far"},
+      {.path = kCollisionsPerParticle,
        .rows = kObservableRows,
        .rule = kFinite,
        .meaning = "2 x collisions / N"},
-      {.path = "/observables/collisions_below_delta",
+      {.path = kCollisionsBelowDelta,
        .type = kInt64,
        .rows = kObservableRows,
        .meaning = "collisions below delta so far"},
-      {.path = "/observables/total_momentum",
+      {.path = kTotalMomentum,
        .row = {kThree},
        .rows = kObservableRows,
        .rule = kFinite,
        .meaning = "total momentum"},
   };
   p.datasets = {
-      {.path = "/restart/time", .type = kFloat64, .same_as = "/particles/all/position/time", .meaning = "dump time"},
-      {.path = "/restart/collisions", .meaning = "collisions at the dump"},
-      {.path = "/restart/collisions_below_delta", .meaning = "collisions below delta at the dump"},
+      {.path = kRestartTime, .type = kFloat64, .same_as = kPositionTime, .meaning = "dump time"},
+      {.path = kRestartCollisions, .meaning = "collisions at the dump"},
+      {.path = kRestartBelowDelta, .meaning = "collisions below delta at the dump"},
   };
-  append_version_2(p);
-  p.schema_version = {"/parameters", "schema_version"};
-  p.particle_count = {"/parameters", "N"};
-  p.box_side = {"/parameters", "L"};
-  p.frames_from = "/particles/all/position";
-  p.observable_rows_from = "/observables/kinetic_energy";
+  append_parameters(p);
+  append_aggregation_layout(p);
+  p.schema_version = {kParameters, "schema_version"};
+  p.particle_count = {kParameters, "N"};
+  p.box_side = {kParameters, "L"};
+  p.frames_from = kPosition;
+  p.observable_rows_from = kKineticEnergy;
   return p;
 }
 

@@ -1,9 +1,20 @@
 // Writes trajectory files in the coolgas H5MD profile (data-schema/h5md-profile.md).
 //
-// Writes happen in bursts: observables are buffered in memory and written,
-// together with a frame, by add_frame(), which ends with an HDF5 flush. A
-// process killed between bursts leaves a file whose earlier frames all read.
-// The /restart row is written last in each burst: it marks the frame complete.
+// Crash safety. Every object is created up front (by walking the profile,
+// h5md_profile.h); then the file is switched to HDF5's single-writer /
+// multiple-reader mode (SWMR), in which the library orders its writes so
+// that the file on disk is consistent at every moment, and the analysis
+// tools may read it while it grows. Writes happen in bursts: add_frame()
+// writes the buffered observables and the frame, flushes, and only then
+// appends the frame's /restart row and flushes again. A /restart row thus
+// marks a frame complete; a process killed at any moment leaves every
+// earlier frame readable and the file resumable (reopen()).
+//
+// Write errors. Every HDF5 write, flush and close is checked. A failure
+// (disk full, quota, file-size limit, I/O error) is a WriteError naming the
+// file and the system's reason; the frames before it stay complete. SIGXFSZ
+// is ignored from create()/reopen() on, so a file-size limit makes the write
+// fail with EFBIG instead of killing the process.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -11,23 +22,10 @@
 #include <vector>
 
 #include "common/hdf5_file.h"
+#include "common/trajectory/layout.h"
+#include "common/trajectory/run_parameters.h"
 
 namespace coolgas {
-
-// The run's inputs, stored as /parameters attributes.
-struct RunParameters {
-  std::string scene_toml;  // the complete effective scene
-  std::int64_t seed = 0;
-  std::int64_t N = 0;
-  double L = 0, phi = 0, T0 = 0;
-  std::string model = "elastic";
-  double r0 = 1, delta = 0;
-  double viscoelastic_b = 0;  // written for model "viscoelastic" only (schema version 2)
-};
-
-// Files of model "aggregation" hold, besides the version-1 layout, per-particle
-// id, mass and diameter and the aggregate observables (schema version 2).
-bool is_aggregation_model(const std::string& model);
 
 // One row of /observables.
 struct ObservableRow {
@@ -61,31 +59,46 @@ struct FrameView {
 
 class H5mdWriter {
  public:
-  // Creates a new file (fails if it exists unless overwrite).
+  // Creates a new file (fails if it exists unless overwrite). The schema and
+  // program versions of `params` are set here.
   static H5mdWriter create(const std::string& path, const RunParameters& params, bool overwrite);
   // Opens an existing file to append after its last complete frame; rows
   // written after that frame (an interrupted burst) are dropped.
   static H5mdWriter reopen(const std::string& path);
 
   void add_observables(const ObservableRow& row) { pending_.push_back(row); }
-  // Writes the buffered observables, then the frame, then its restart row, then flushes.
+  // Writes the buffered observables, then the frame, flushes, then its restart row, and flushes.
   void add_frame(const FrameView& frame);
   // Writes buffered observables and flushes (end of run).
   void flush();
   // Replaces the stored scene text (a resumed run may extend run.t_end).
+  // Only before the first write after create() or reopen(): SWMR writing
+  // forbids changing attributes.
   void update_scene(const std::string& scene_toml);
 
   std::int64_t particles() const { return n_; }
 
  private:
   H5mdWriter() = default;
-  void open_elements();
+  void create_objects(const RunParameters& params);
+  void drop_interrupted_burst();
+  void begin_appending();
   void write_pending();
+  void write_frame(const FrameView& frame);
+  void write_restart_row(const FrameView& frame);
+  void append(std::string_view element, std::int64_t step, double time, h5::Type type, const void* value,
+              int stride = 0);
+  void flush_file();
+  // Runs `body`, turning an HDF5 failure into a WriteError naming the file.
+  template <class F>
+  void writing(F&& body);
 
+  std::string path_;
   h5::Handle file_;
   std::int64_t n_ = 0;
   double box_ = 0;
-  bool aggregation_ = false;
+  layout::Layout layout_ = layout::Layout::kGas;
+  bool appending_ = false;  // SWMR writing started (or, for an old-format file, first row written)
   std::vector<ObservableRow> pending_;
 };
 

@@ -7,17 +7,17 @@
 #pragma once
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
-#include "common/trajectory/h5md_writer.h"
+#include "common/trajectory/run_parameters.h"
 
 namespace coolgas {
 
 // The run's inputs as stored in /parameters, and where they came from.
 struct RunInfo {
   std::string path;
-  RunParameters params;         // N, L, phi, T0, model, r0, delta, seed, scene
-  std::string program_version;  // of the coolgas-simulate that wrote the file
+  RunParameters params;  // every field of run_parameters.h that the file's model has
 };
 
 // One H5MD element of /observables: value[i] was recorded at time[i].
@@ -28,16 +28,13 @@ struct ObservableSeries {
 
 RunInfo read_run_info(const std::string& path);
 
-// Reads /observables/<name> (a scalar per row). Rejects an empty element,
-// time and value of different lengths, decreasing times and non-finite numbers.
-ObservableSeries read_observable(const std::string& path, const std::string& name);
+// Reads an observable element (layout.h, e.g. layout::kKineticEnergy; a
+// scalar per row) up to the last complete dump (all rows if the file has no
+// dump). Rejects an empty element, fewer values than times, decreasing
+// times and non-finite numbers.
+ObservableSeries read_observable(const std::string& path, std::string_view element);
 
-// "Equal parameters" for an ensemble: every /parameters attribute that
-// defines the physics (N, L, phi, T0, model, r0, delta) is equal; seed, scene
-// text and program_version may differ. The scene text is not compared because
-// it differs in the seed line and in output settings (t_end, dump grids) that
-// do not change the physics; the attributes hold everything that does.
-// Returns a description of the first difference, e.g. "L = 32 vs 48", or nothing.
-std::optional<std::string> physics_difference(const RunParameters& a, const RunParameters& b);
+// The ensemble check ("the same physics") is physics_difference() of
+// run_parameters.h: every field of role kPhysics is compared.
 
 }  // namespace coolgas

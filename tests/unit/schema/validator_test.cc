@@ -234,7 +234,9 @@ TEST(Validator, ElementAddedInALaterVersionIsRequiredOnlyFromThatVersion) {
                          .rule = ValueRule::kAny,
                          .meaning = "particle ids",
                          .presence = Presence::kRequired,
-                         .since = 2});
+                         .since = 2,
+                         .only_in = std::nullopt,
+                         .fill = std::nullopt});
   const std::string path = fresh_file("later_version");
   EXPECT_EQ(lines(validate(path, v2)), std::vector<std::string>{});
 
