@@ -1,5 +1,12 @@
 #include "common/hdf5_file.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+
 #include <functional>
 #include <numeric>
 #include <stdexcept>
@@ -177,6 +184,38 @@ bool start_swmr_write(const Handle& file) {
   check_status(H5Fset_libver_bounds(file.id(), H5F_LIBVER_V110, H5F_LIBVER_V110), "format version");
   check_status(H5Fstart_swmr_write(file.id()), "start SWMR writing");
   return true;
+}
+
+namespace {
+
+// The file's descriptor under the sec2 driver, or -1.
+int descriptor(const Handle& file) {
+  int* fd = nullptr;
+  if (H5Fget_vfd_handle(file.id(), H5P_DEFAULT, reinterpret_cast<void**>(&fd)) < 0 || !fd) return -1;
+  return *fd;
+}
+
+}  // namespace
+
+// HDF5 allocates new space at the end of its allocated address space (EOA),
+// so that is where the reservation starts; a reservation already there is
+// reused, not repeated.
+void reserve_space(const Handle& file, hsize_t bytes) {
+  haddr_t eoa = 0;
+  const int fd = descriptor(file);
+  if (fd < 0 || H5Fget_eoa(file.id(), &eoa) < 0) return;
+  const int err = posix_fallocate(fd, static_cast<off_t>(eoa), static_cast<off_t>(bytes));
+  if (err == 0 || err == EOPNOTSUPP || err == EINVAL) return;
+  throw Error("HDF5: reserve " + std::to_string(bytes) + " bytes", std::strerror(err));
+}
+
+void release_reserve(const Handle& file) {
+  haddr_t eoa = 0;
+  struct stat st {};
+  const int fd = descriptor(file);
+  if (fd < 0 || H5Fget_eoa(file.id(), &eoa) < 0 || fstat(fd, &st) != 0) return;
+  if (static_cast<haddr_t>(st.st_size) > eoa && ftruncate(fd, static_cast<off_t>(eoa)) != 0)
+    throw Error("HDF5: release reserved space", std::strerror(errno));
 }
 
 void flush(const Handle& file) { check_status(H5Fflush(file.id(), H5F_SCOPE_GLOBAL), "flush"); }

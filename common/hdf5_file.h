@@ -63,6 +63,14 @@ void flush(const Handle& file);
 // may be created or attribute written. Returns false, doing nothing, for a
 // file in the pre-1.10 format (written by an older coolgas).
 bool start_swmr_write(const Handle& file);
+// Makes sure the next `bytes` bytes past the end of the file can be written
+// (posix_fallocate), so that a full disk, a quota or a file-size limit fails
+// here, before HDF5 writes a byte, instead of in the middle of a write that
+// would leave its metadata pointing past the end of the file. Throws Error
+// with the system's reason; does nothing where the file system cannot tell.
+void reserve_space(const Handle& file, hsize_t bytes);
+// Gives back what the last reservation left unused (the end of a run).
+void release_reserve(const Handle& file);
 
 bool exists(hid_t loc, const std::string& path);  // link exists (each path component checked)
 Handle open_group(hid_t loc, const std::string& path);

@@ -83,6 +83,7 @@ H5mdWriter H5mdWriter::create(const std::string& path, const RunParameters& para
   H5mdWriter w;
   w.path_ = path;
   w.file_ = h5::open_file(path, overwrite ? h5::Mode::kCreateTruncate : h5::Mode::kCreateExclusive);
+  w.lock_ = WriterLock::take(path);
   w.n_ = params.N;
   w.box_ = params.L;
   w.layout_ = model->layout;
@@ -113,6 +114,7 @@ H5mdWriter H5mdWriter::reopen(const std::string& path) {
   ignore_file_size_signal();
   H5mdWriter w;
   w.path_ = path;
+  w.lock_ = WriterLock::take(path);  // before the status flags are cleared
   w.file_ = h5::open_file(path, h5::Mode::kReadWrite);
   const hid_t f = w.file_.id();
   if (!h5::exists(f, std::string(kRestartTime)))
@@ -210,8 +212,19 @@ void H5mdWriter::write_restart_row(const FrameView& fr) {
   rt.close_checked();
 }
 
+// What a burst adds to the file: the frame, the pending observable rows,
+// and room for the chunks and index blocks HDF5 allocates with them.
+hsize_t H5mdWriter::burst_bytes(bool with_frame) const {
+  const auto n = static_cast<hsize_t>(n_);
+  hsize_t frame = n * (3 * 8 + 3 * 4 + 3 * 8) + 9 * 8 + 4 * 16;
+  if (layout_ == Layout::kAggregation) frame += n * (4 + 8 + 8) + 3 * 16;
+  const hsize_t rows = pending_.size() * 8 * 48;
+  return (with_frame ? frame + frame / 64 : 0) + rows + (hsize_t{1} << 20);
+}
+
 void H5mdWriter::add_frame(const FrameView& fr) {
   writing([&] {
+    h5::reserve_space(file_, burst_bytes(true));
     begin_appending();
     write_pending();
     write_frame(fr);
@@ -223,10 +236,17 @@ void H5mdWriter::add_frame(const FrameView& fr) {
 
 void H5mdWriter::flush() {
   writing([&] {
+    h5::reserve_space(file_, burst_bytes(false));
     begin_appending();
     write_pending();
     flush_file();
+    h5::release_reserve(file_);
   });
+}
+
+void H5mdWriter::rename(const std::string& to) {
+  std::filesystem::rename(path_, to);
+  path_ = to;
 }
 
 void H5mdWriter::flush_file() { h5::flush(file_); }

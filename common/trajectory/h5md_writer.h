@@ -10,9 +10,11 @@
 // marks a frame complete; a process killed at any moment leaves every
 // earlier frame readable and the file resumable (reopen()).
 //
-// Write errors. Every HDF5 write, flush and close is checked. A failure
-// (disk full, quota, file-size limit, I/O error) is a WriteError naming the
-// file and the system's reason; the frames before it stay complete. SIGXFSZ
+// Write errors. Each burst first reserves the disk space it needs, so a
+// full disk, a quota or a file-size limit fails before HDF5 writes anything;
+// every HDF5 write, flush and close is checked too. A failure is a
+// WriteError naming the file and the system's reason; the frames before it
+// stay complete. SIGXFSZ
 // is ignored from create()/reopen() on, so a file-size limit makes the write
 // fail with EFBIG instead of killing the process.
 #pragma once
@@ -24,6 +26,7 @@
 #include "common/hdf5_file.h"
 #include "common/trajectory/layout.h"
 #include "common/trajectory/run_parameters.h"
+#include "common/trajectory/writer_lock.h"
 
 namespace coolgas {
 
@@ -63,7 +66,8 @@ class H5mdWriter {
   // program versions of `params` are set here.
   static H5mdWriter create(const std::string& path, const RunParameters& params, bool overwrite);
   // Opens an existing file to append after its last complete frame; rows
-  // written after that frame (an interrupted burst) are dropped.
+  // written after that frame (an interrupted burst) are dropped. InputError
+  // if another process is writing it (writer_lock.h).
   static H5mdWriter reopen(const std::string& path);
 
   void add_observables(const ObservableRow& row) { pending_.push_back(row); }
@@ -75,6 +79,10 @@ class H5mdWriter {
   // Only before the first write after create() or reopen(): SWMR writing
   // forbids changing attributes.
   void update_scene(const std::string& scene_toml);
+
+  // Renames the file (the simulator writes its first dump under a temporary
+  // name); later errors name the new path.
+  void rename(const std::string& to);
 
   std::int64_t particles() const { return n_; }
 
@@ -89,11 +97,13 @@ class H5mdWriter {
   void append(std::string_view element, std::int64_t step, double time, h5::Type type, const void* value,
               int stride = 0);
   void flush_file();
+  hsize_t burst_bytes(bool with_frame) const;
   // Runs `body`, turning an HDF5 failure into a WriteError naming the file.
   template <class F>
   void writing(F&& body);
 
   std::string path_;
+  WriterLock lock_;  // declared before file_: released after the file is closed
   h5::Handle file_;
   std::int64_t n_ = 0;
   double box_ = 0;

@@ -218,7 +218,7 @@ int start_new(const SimulationRequest& req) {
   try {
     writer.add_observables(observe(*engine));
     writer.add_frame(frame(*engine));
-    std::filesystem::rename(tmp, out);
+    writer.rename(out);
   } catch (...) {
     std::filesystem::remove(tmp);
     throw;
