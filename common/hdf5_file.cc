@@ -1,5 +1,12 @@
 #include "common/hdf5_file.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+
 #include <functional>
 #include <numeric>
 #include <stdexcept>
@@ -9,7 +16,25 @@
 namespace coolgas::h5 {
 namespace {
 
-[[noreturn]] void fail(const std::string& what) { throw std::runtime_error("HDF5: " + what); }
+// The system error message HDF5's file driver put on the error stack, e.g.
+// "... errno = 28, error message = 'No space left on device', ...".
+herr_t find_system_message(unsigned, const H5E_error2_t* e, void* out) {
+  const std::string desc = e->desc ? e->desc : "";
+  const std::string key = "error message = '";
+  const auto at = desc.find(key);
+  if (at == std::string::npos) return 0;
+  const auto end = desc.find('\'', at + key.size());
+  *static_cast<std::string*>(out) = desc.substr(at + key.size(), end - at - key.size());
+  return 1;  // stop at the innermost one
+}
+
+std::string system_cause() {
+  std::string cause;
+  H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, find_system_message, &cause);
+  return cause;
+}
+
+[[noreturn]] void fail(const std::string& what) { throw Error("HDF5: " + what, system_cause()); }
 
 hid_t check(hid_t id, const std::string& what) {
   if (id < 0) fail(what);
@@ -82,16 +107,62 @@ void Handle::close() {
   id_ = H5I_INVALID_HID;
 }
 
+void Handle::close_checked() {
+  if (id_ < 0) return;
+  herr_t st = 0;
+  switch (H5Iget_type(id_)) {
+    case H5I_FILE: st = H5Fclose(id_); break;
+    case H5I_DATASET: st = H5Dclose(id_); break;
+    default: close(); return;
+  }
+  id_ = H5I_INVALID_HID;
+  check_status(st, "close");
+}
+
 void silence_library_errors() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
+
+namespace {
+
+// The 1.10 format (superblock version 3) is the oldest SWMR writing accepts;
+// pinned, so a newer library writes the same format.
+Handle fapl_v110() {
+  Handle fapl(check(H5Pcreate(H5P_FILE_ACCESS), "file access property list"));
+  check_status(H5Pset_libver_bounds(fapl.id(), H5F_LIBVER_V110, H5F_LIBVER_V110), "format version");
+  return fapl;
+}
+
+// A writer killed during SWMR writing leaves the superblock's "open for
+// writing" flags set, and HDF5 then refuses to open the file for writing.
+// This is the property h5clear -s sets; it clears them on open.
+Handle fapl_clearing_status_flags() {
+  Handle fapl(check(H5Pcreate(H5P_FILE_ACCESS), "file access property list"));
+  hbool_t clear = true;
+  check_status(H5Pset(fapl.id(), "clear_status_flags", &clear), "clear status flags");
+  return fapl;
+}
+
+hid_t open_existing(const std::string& path, Mode mode) {
+  if (mode == Mode::kReadWrite) {
+    Handle fapl = fapl_clearing_status_flags();
+    return H5Fopen(path.c_str(), H5F_ACC_RDWR, fapl.id());
+  }
+  const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (id >= 0) return id;
+  // Being written, or left by a killed writer: only a SWMR reader may open it.
+  return H5Fopen(path.c_str(), H5F_ACC_RDONLY | H5F_ACC_SWMR_READ, H5P_DEFAULT);
+}
+
+}  // namespace
 
 Handle open_file(const std::string& path, Mode mode) {
   silence_library_errors();
   hid_t id = H5I_INVALID_HID;
-  switch (mode) {
-    case Mode::kCreateExclusive: id = H5Fcreate(path.c_str(), H5F_ACC_EXCL, H5P_DEFAULT, H5P_DEFAULT); break;
-    case Mode::kCreateTruncate: id = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT); break;
-    case Mode::kReadOnly: id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT); break;
-    case Mode::kReadWrite: id = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT); break;
+  if (mode == Mode::kCreateExclusive || mode == Mode::kCreateTruncate) {
+    Handle fapl = fapl_v110();
+    id = H5Fcreate(path.c_str(), mode == Mode::kCreateExclusive ? H5F_ACC_EXCL : H5F_ACC_TRUNC, H5P_DEFAULT,
+                   fapl.id());
+  } else {
+    id = open_existing(path, mode);
   }
   if (id < 0) {
     switch (mode) {
@@ -104,6 +175,47 @@ Handle open_file(const std::string& path, Mode mode) {
     }
   }
   return Handle(id);
+}
+
+bool start_swmr_write(const Handle& file) {
+  H5F_info2_t info{};
+  check_status(H5Fget_info2(file.id(), &info), "file info");
+  if (info.super.version < 3) return false;
+  check_status(H5Fset_libver_bounds(file.id(), H5F_LIBVER_V110, H5F_LIBVER_V110), "format version");
+  check_status(H5Fstart_swmr_write(file.id()), "start SWMR writing");
+  return true;
+}
+
+namespace {
+
+// The file's descriptor under the sec2 driver, or -1.
+int descriptor(const Handle& file) {
+  int* fd = nullptr;
+  if (H5Fget_vfd_handle(file.id(), H5P_DEFAULT, reinterpret_cast<void**>(&fd)) < 0 || !fd) return -1;
+  return *fd;
+}
+
+}  // namespace
+
+// HDF5 allocates new space at the end of its allocated address space (EOA),
+// so that is where the reservation starts; a reservation already there is
+// reused, not repeated.
+void reserve_space(const Handle& file, hsize_t bytes) {
+  haddr_t eoa = 0;
+  const int fd = descriptor(file);
+  if (fd < 0 || H5Fget_eoa(file.id(), &eoa) < 0) return;
+  const int err = posix_fallocate(fd, static_cast<off_t>(eoa), static_cast<off_t>(bytes));
+  if (err == 0 || err == EOPNOTSUPP || err == EINVAL) return;
+  throw Error("HDF5: reserve " + std::to_string(bytes) + " bytes", std::strerror(err));
+}
+
+void release_reserve(const Handle& file) {
+  haddr_t eoa = 0;
+  struct stat st {};
+  const int fd = descriptor(file);
+  if (fd < 0 || H5Fget_eoa(file.id(), &eoa) < 0 || fstat(fd, &st) != 0) return;
+  if (static_cast<haddr_t>(st.st_size) > eoa && ftruncate(fd, static_cast<off_t>(eoa)) != 0)
+    throw Error("HDF5: release reserved space", std::strerror(errno));
 }
 
 void flush(const Handle& file) { check_status(H5Fflush(file.id(), H5F_SCOPE_GLOBAL), "flush"); }
@@ -173,6 +285,12 @@ void write_attr(hid_t obj, const std::string& name, const std::vector<std::int32
 }
 
 bool has_attr(hid_t obj, const std::string& name) { return H5Aexists(obj, name.c_str()) > 0; }
+
+H5T_class_t attr_class(hid_t obj, const std::string& name) {
+  Handle a = open_attr(obj, name);
+  Handle type(check(H5Aget_type(a.id()), "attribute type"));
+  return H5Tget_class(type.id());
+}
 
 std::string read_attr_string(hid_t obj, const std::string& name) {
   Handle a = open_attr(obj, name);

@@ -6,11 +6,20 @@
 
 #include <cstdint>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace coolgas::h5 {
+
+// An HDF5 call failed. `cause` is the operating system's reason when the
+// library failed to read or write the file ("No space left on device",
+// "File too large"), empty otherwise.
+struct Error : std::runtime_error {
+  Error(const std::string& what, std::string cause) : std::runtime_error(what), cause(std::move(cause)) {}
+  std::string cause;
+};
 
 // Owns one hid_t and closes it with the matching H5*close.
 class Handle {
@@ -30,7 +39,10 @@ class Handle {
   ~Handle() { close(); }
   hid_t id() const { return id_; }
   bool valid() const { return id_ >= 0; }
-  void close();
+  void close();  // errors ignored: for handles that wrote nothing
+  // Closes and throws Error if closing failed: closing a dataset or file
+  // writes what HDF5 still caches, so a writer must know.
+  void close_checked();
 
  private:
   hid_t id_ = H5I_INVALID_HID;
@@ -39,9 +51,26 @@ class Handle {
 // Turns off HDF5's own error printing; coolgas reports errors itself.
 void silence_library_errors();
 
+// Files are created in the HDF5 1.10 format, which SWMR writing needs.
+// kReadOnly also opens a file that a SWMR writer has open, or left behind
+// when it was killed (as a SWMR reader). kReadWrite clears the status flags
+// such a writer leaves (as `h5clear -s` does), so a killed run can resume.
 enum class Mode { kCreateExclusive, kCreateTruncate, kReadOnly, kReadWrite };
 Handle open_file(const std::string& path, Mode mode);
 void flush(const Handle& file);
+// Starts single-writer/multiple-reader writing: from here on the file is
+// consistent on disk at every moment, readers may open it, and no object
+// may be created or attribute written. Returns false, doing nothing, for a
+// file in the pre-1.10 format (written by an older coolgas).
+bool start_swmr_write(const Handle& file);
+// Makes sure the next `bytes` bytes past the end of the file can be written
+// (posix_fallocate), so that a full disk, a quota or a file-size limit fails
+// here, before HDF5 writes a byte, instead of in the middle of a write that
+// would leave its metadata pointing past the end of the file. Throws Error
+// with the system's reason; does nothing where the file system cannot tell.
+void reserve_space(const Handle& file, hsize_t bytes);
+// Gives back what the last reservation left unused (the end of a run).
+void release_reserve(const Handle& file);
 
 bool exists(hid_t loc, const std::string& path);  // link exists (each path component checked)
 Handle open_group(hid_t loc, const std::string& path);
@@ -55,6 +84,7 @@ void write_attr(hid_t obj, const std::string& name, double value);
 void write_attr(hid_t obj, const std::string& name, std::int64_t value);
 void write_attr(hid_t obj, const std::string& name, const std::vector<std::int32_t>& values);
 bool has_attr(hid_t obj, const std::string& name);
+H5T_class_t attr_class(hid_t obj, const std::string& name);  // H5T_INTEGER, H5T_FLOAT, H5T_STRING, ...
 std::string read_attr_string(hid_t obj, const std::string& name);
 double read_attr_double(hid_t obj, const std::string& name);
 std::int64_t read_attr_int(hid_t obj, const std::string& name);

@@ -13,6 +13,9 @@ int run_tool(const std::string& tool, const std::function<int()>& body) {
   } catch (const InputError& e) {
     std::cerr << tool << ": error: " << e.what() << "\n";
     return kExitInput;
+  } catch (const WriteError& e) {
+    std::cerr << tool << ": error: " << e.what() << "\n";
+    return kExitWrite;
   } catch (const std::exception& e) {
     std::cerr << tool << ": internal error: " << e.what() << "\n";
     return kExitFailure;

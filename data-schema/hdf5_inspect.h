@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-#include "data-schema/h5md_profile.h"
+#include "common/trajectory/h5md_profile.h"
 
 namespace coolgas::schema {
 

@@ -17,6 +17,8 @@ constexpr const char* kDescription =
     "N from /parameters/N matches the particle arrays; particle elements share F rows, observables K rows;\n"
     "times never decrease; positions lie in [0, L); velocities and observables are finite;\n"
     "/restart has F rows and the dump times; /parameters holds every documented attribute.\n"
+    "F counts the complete dumps (rows of /restart/time); rows after the last of them, which a killed\n"
+    "or still running writer leaves, are not checked.\n"
     "Objects the profile does not list are ignored (schema versions only add).\n"
     "Output: 'FILE: valid (...)' and exit 0, or one line 'FILE: PATH: PROBLEM' per problem on stdout\n"
     "and exit 2. A missing or non-HDF5 file: one error line on stderr, exit 2.";

@@ -6,6 +6,8 @@
 #include <set>
 
 #include "common/hdf5_file.h"
+#include "common/trajectory/collision_models.h"
+#include "common/trajectory/layout.h"
 #include "data-schema/hdf5_inspect.h"
 #include "data-schema/value_checks.h"
 
@@ -34,6 +36,8 @@ class Checker {
 
   Report run() {
     read_schema_version();
+    read_model();
+    read_completion();
     for (const GroupSpec& g : profile_.groups) check_group(g);
     for (const AttributeSpec& a : profile_.attributes) check_attribute(a);
     read_box_parameters();
@@ -42,7 +46,7 @@ class Checker {
     check_shared_rows(RowCount::kObservableRows, profile_.observable_rows_from);
     for (const DatasetSpec& d : profile_.datasets) guarded(d.path, [&] { check_dataset(d); });
     report_.summary = {N_.value_or(0), rows_of(profile_.frames_from), rows_of(profile_.observable_rows_from),
-                       file_version_};
+                       file_version_, interrupted_};
     return std::move(report_);
   }
 
@@ -61,9 +65,56 @@ class Checker {
     }
   }
 
-  // Rows added in a later schema version are optional in files of earlier versions.
-  bool required(Presence presence, int since) const {
+  // Rows added in a later schema version are optional in files of earlier
+  // versions; a per-model row is required when the file's model has it.
+  bool required(Presence presence, int since, bool model_has_it = false) const {
+    if (presence == Presence::kPerModel) return model_has_it;
     return presence == Presence::kRequired && since <= file_version_;
+  }
+
+  bool model_has(const AttributeSpec& a) const { return model_ && model_uses(*model_, a.name); }
+  bool model_has(const ElementSpec& e) const {
+    const CollisionModelSpec* m = model_ ? find_collision_model(*model_) : nullptr;
+    return m && (!e.only_in || *e.only_in == m->layout);
+  }
+
+  // The model decides which per-model rows are required; an unknown one is a problem of its own.
+  void read_model() {
+    AttributeFound m;
+    if (!read_attribute(file_, layout::kParameters, "model", m) || m.type != type_name(DataType::kVlenString)) return;
+    model_ = m.text;
+    if (!find_collision_model(*model_))
+      problem(layout::kParameters, "attribute 'model' is " + m.text + ", not one of " + collision_model_names());
+  }
+
+  // The /restart/time rows mark the complete dumps (layout.h); rows of a
+  // later, interrupted burst are not checked. Without a usable marker every
+  // row counts.
+  void read_completion() {
+    const std::string rt(layout::kRestartTime);
+    if (kind_of(file_, rt) != ObjectKind::kDataset) return;
+    h5::Handle t = h5::open_dataset(file_, rt);
+    if (h5::shape(t.id()).size() != 1) return;
+    const std::vector<double> times = h5::read_all<double>(t.id());
+    if (times.empty()) return;
+    complete_[RowCount::kFrames] = times.size();
+    const std::string ot = path_of(profile_.observable_rows_from, "time");
+    if (kind_of(file_, ot) != ObjectKind::kDataset) return;
+    h5::Handle o = h5::open_dataset(file_, ot);
+    if (h5::shape(o.id()).size() != 1) return;
+    const std::vector<double> obs = h5::read_all<double>(o.id());
+    complete_[RowCount::kObservableRows] =
+        hsize_t(std::upper_bound(obs.begin(), obs.end(), times.back()) - obs.begin());
+  }
+
+  std::optional<hsize_t> complete(RowCount kind) const {
+    const auto it = complete_.find(kind);
+    if (it == complete_.end()) return std::nullopt;
+    return it->second;
+  }
+
+  Scan scan(RowCount kind) const {
+    return {.block_values = options_.block_values, .rows = complete(kind).value_or(Scan{}.rows)};
   }
 
   // A missing or nonsensical version (reported by the attribute check) holds
@@ -89,7 +140,7 @@ class Checker {
     const std::string name = "attribute '" + std::string(a.name) + "'";
     AttributeFound found;
     if (!read_attribute(file_, a.group, a.name, found)) {
-      if (required(a.presence, a.since))
+      if (required(a.presence, a.since, model_has(a)))
         problem(a.group,
                 "missing " + name + " (" + std::string(type_name(a.type)) + ", " + std::string(a.meaning) + ")");
       return;
@@ -157,26 +208,32 @@ class Checker {
   void check_element(const ElementSpec& e) {
     const ObjectKind kind = kind_of(file_, e.path);
     if (kind == ObjectKind::kMissing) {
-      if (required(e.presence, e.since)) problem(e.path, "missing element (" + std::string(e.meaning) + ")");
+      if (required(e.presence, e.since, model_has(e)))
+        problem(e.path, "missing element (" + std::string(e.meaning) + ")");
       return;
     }
     if (kind != ObjectKind::kGroup) return problem(e.path, "is not a group (an H5MD element holds step, time, value)");
     auto step = check_series(path_of(e.path, "step"), DataType::kInt64, e.rows, {});
     auto time = check_series(path_of(e.path, "time"), DataType::kFloat64, e.rows, {});
     auto value = check_series(path_of(e.path, "value"), e.type, e.rows, e.row);
-    if (time) check_found(path_of(e.path, "time"), check_nondecreasing(time->first.id(), options_.block_values));
+    if (time) check_found(path_of(e.path, "time"), check_nondecreasing(time->first.id(), scan(e.rows)));
     if (value) check_values(e, value->first.id());
     if (!step || !time || !value) return;
-    if (step->second != value->second || time->second != value->second)
+    const hsize_t least = std::min({step->second, time->second, value->second});
+    const hsize_t most = std::max({step->second, time->second, value->second});
+    const auto done = complete(e.rows);
+    // Rows beyond the complete ones may be ragged: the burst that wrote them was cut short.
+    if (done ? least < *done && least != most : least != most)
       return problem(e.path, "step, time and value have " + std::to_string(step->second) + ", " +
                                  std::to_string(time->second) + " and " + std::to_string(value->second) +
                                  " rows; they must agree");
-    good_.push_back({std::string(e.path), e.rows, value->second});
+    if (done && most > *done) interrupted_ = true;
+    good_.push_back({std::string(e.path), e.rows, done ? std::min(least, *done) : least});
   }
 
   void check_values(const ElementSpec& e, hid_t value) {
     const std::string path = path_of(e.path, "value");
-    const std::size_t block = options_.block_values;
+    const Scan block = scan(e.rows);
     const std::string L_from = attr_text(profile_.box_side);
     switch (e.rule) {
       case ValueRule::kAny:
@@ -230,12 +287,15 @@ class Checker {
     auto ds = check_series(std::string(d.path), d.type, d.rows, {});
     if (!ds) return;
     const auto ref = reference_.find(d.rows);
-    if (ref != reference_.end() && ds->second != ref->second.rows)
+    const auto done = complete(d.rows);
+    const hsize_t rows = done ? std::min(ds->second, *done) : ds->second;
+    if (ref != reference_.end() && rows != ref->second.rows)
       return problem(d.path, rows_message(ds->second, ref->second));
+    if (done && ds->second > *done) interrupted_ = true;
     if (!d.same_as.empty() && kind_of(file_, d.same_as) == ObjectKind::kDataset) {
       h5::Handle other = h5::open_dataset(file_, std::string(d.same_as));
-      if (h5::shape(other.id()) == h5::shape(ds->first.id()))
-        check_found(d.path, check_equal(ds->first.id(), other.id(), d.same_as, options_.block_values));
+      if (h5::shape(other.id()).at(0) >= rows)
+        check_found(d.path, check_equal(ds->first.id(), other.id(), d.same_as, scan(d.rows)));
     }
   }
 
@@ -249,6 +309,9 @@ class Checker {
   std::optional<double> L_;
   std::vector<GoodElement> good_;              // in table order
   std::map<RowCount, GoodElement> reference_;  // the element defining F or K
+  std::optional<std::string> model_;           // /parameters/model, when readable
+  std::map<RowCount, hsize_t> complete_;       // rows of complete dumps, when /restart/time is usable
+  bool interrupted_ = false;                   // rows of an interrupted burst follow them
 };
 
 }  // namespace
@@ -263,7 +326,8 @@ std::string problem_line(const std::string& file, const Problem& p) { return fil
 std::string valid_line(const std::string& file, const Summary& s, int profile_version) {
   return file + ": valid (coolgas H5MD profile v" + std::to_string(profile_version) + ", " +
          std::to_string(s.particles) + " particles, " + std::to_string(s.frames) + " frames, " +
-         std::to_string(s.observable_rows) + " observable rows)";
+         std::to_string(s.observable_rows) + " observable rows" +
+         (s.interrupted ? "; later rows of an interrupted or unfinished burst not checked" : "") + ")";
 }
 
 }  // namespace coolgas::schema

@@ -6,7 +6,10 @@
 // matches the particle arrays; the particle elements share F rows and the
 // observables K rows; times never decrease; positions lie in [0, L);
 // velocities and observables are finite; box edges are diag(L, L, L);
-// /restart has F rows and the dump times. Objects the profile does not list
+// /restart has F rows and the dump times. F and K count the complete dumps
+// (rows of /restart/time) and the observable rows up to the last of them:
+// rows after it, which a killed writer (or one still running) leaves, are
+// not checked. Objects the profile does not list
 // are ignored (later versions only add). Rows an element gained in a later
 // schema version are required only from that version on.
 #pragma once
@@ -15,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "data-schema/h5md_profile.h"
+#include "common/trajectory/h5md_profile.h"
 
 namespace coolgas::schema {
 
@@ -30,6 +33,7 @@ struct Summary {
   hsize_t frames = 0;           // F
   hsize_t observable_rows = 0;  // K
   int schema_version = 0;       // the file's /parameters/schema_version (the profile's when unreadable)
+  bool interrupted = false;     // rows after the last complete dump (a burst cut short, or under way)
 };
 
 struct Report {

@@ -59,9 +59,11 @@ std::string at(hsize_t i, double v) {
 
 }  // namespace
 
-void for_each_block(hid_t dataset, std::size_t block_values,
+void for_each_block(hid_t dataset, const Scan& scan,
                     const std::function<void(hsize_t first, std::span<const double> values)>& visit) {
-  const std::vector<hsize_t> dims = h5::shape(dataset);
+  std::vector<hsize_t> dims = h5::shape(dataset);
+  if (!dims.empty()) dims[0] = std::min(dims[0], scan.rows);
+  const std::size_t block_values = scan.block_values;
   std::vector<double> buf;
   if (dims.empty()) {  // scalar
     read_slab(dataset, {}, {}, buf);
@@ -96,20 +98,20 @@ void for_each_block(hid_t dataset, std::size_t block_values,
   }
 }
 
-Finding check_finite(hid_t dataset, std::size_t block_values) {
+Finding check_finite(hid_t dataset, const Scan& scan) {
   const auto dims = h5::shape(dataset);
   Offences bad;
-  for_each_block(dataset, block_values, [&](hsize_t first, std::span<const double> v) {
+  for_each_block(dataset, scan, [&](hsize_t first, std::span<const double> v) {
     for (std::size_t i = 0; i < v.size(); ++i)
       if (!std::isfinite(v[i])) bad.add([&] { return at(dims, first + i, v[i]) + " is not finite"; });
   });
   return bad.result();
 }
 
-Finding check_inside_box(hid_t dataset, double L, std::string_view L_source, std::size_t block_values) {
+Finding check_inside_box(hid_t dataset, double L, std::string_view L_source, const Scan& scan) {
   const auto dims = h5::shape(dataset);
   Offences bad;
-  for_each_block(dataset, block_values, [&](hsize_t first, std::span<const double> v) {
+  for_each_block(dataset, scan, [&](hsize_t first, std::span<const double> v) {
     for (std::size_t i = 0; i < v.size(); ++i)
       if (!(v[i] >= 0 && v[i] < L))  // also catches NaN
         bad.add([&] {
@@ -120,10 +122,10 @@ Finding check_inside_box(hid_t dataset, double L, std::string_view L_source, std
   return bad.result();
 }
 
-Finding check_box_matrix(hid_t dataset, double L, std::string_view L_source, std::size_t block_values) {
+Finding check_box_matrix(hid_t dataset, double L, std::string_view L_source, const Scan& scan) {
   const auto dims = h5::shape(dataset);
   Offences bad;
-  for_each_block(dataset, block_values, [&](hsize_t first, std::span<const double> v) {
+  for_each_block(dataset, scan, [&](hsize_t first, std::span<const double> v) {
     for (std::size_t i = 0; i < v.size(); ++i) {
       const hsize_t k = (first + i) % 9;
       const double want = k % 4 == 0 ? L : 0.0;  // the diagonal of a row-major 3x3 is 0, 4, 8
@@ -137,10 +139,10 @@ Finding check_box_matrix(hid_t dataset, double L, std::string_view L_source, std
   return bad.result();
 }
 
-Finding check_nondecreasing(hid_t dataset, std::size_t block_values) {
+Finding check_nondecreasing(hid_t dataset, const Scan& scan) {
   Offences bad;
   double previous = -INFINITY;
-  for_each_block(dataset, block_values, [&](hsize_t first, std::span<const double> v) {
+  for_each_block(dataset, scan, [&](hsize_t first, std::span<const double> v) {
     for (std::size_t i = 0; i < v.size(); ++i) {
       if (std::isnan(v[i])) {
         bad.add([&] { return at(first + i, v[i]) + " is not a number"; });
@@ -157,10 +159,10 @@ Finding check_nondecreasing(hid_t dataset, std::size_t block_values) {
   return bad.result();
 }
 
-Finding check_equal(hid_t dataset, hid_t reference, std::string_view reference_path, std::size_t block_values) {
+Finding check_equal(hid_t dataset, hid_t reference, std::string_view reference_path, const Scan& scan) {
   Offences bad;
   std::vector<double> ref;
-  for_each_block(dataset, block_values, [&](hsize_t first, std::span<const double> v) {
+  for_each_block(dataset, scan, [&](hsize_t first, std::span<const double> v) {
     read_slab(reference, {first}, {v.size()}, ref);
     for (std::size_t i = 0; i < v.size(); ++i)
       if (v[i] != ref[i])

@@ -7,28 +7,36 @@
 
 #include <cstddef>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <span>
 #include <string>
 
 namespace coolgas::schema {
 
-// Reads a numeric dataset in row-major order as doubles, at most
-// `block_values` numbers at a time (at least one innermost row); visit gets
-// the flat index of the block's first number and the numbers.
-void for_each_block(hid_t dataset, std::size_t block_values,
+// How a check reads a dataset: at most `block_values` numbers at a time (at
+// least one innermost row), and only its first `rows` rows (the rows of
+// complete dumps: later ones belong to an interrupted burst).
+struct Scan {
+  std::size_t block_values = std::size_t{1} << 20;
+  hsize_t rows = std::numeric_limits<hsize_t>::max();
+};
+
+// Reads a numeric dataset in row-major order as doubles, block by block;
+// visit gets the flat index of the block's first number and the numbers.
+void for_each_block(hid_t dataset, const Scan& scan,
                     const std::function<void(hsize_t first, std::span<const double> values)>& visit);
 
 using Finding = std::optional<std::string>;
 
-Finding check_finite(hid_t dataset, std::size_t block_values);
+Finding check_finite(hid_t dataset, const Scan& scan);
 // Finite and 0 <= x < L.
-Finding check_inside_box(hid_t dataset, double L, std::string_view L_source, std::size_t block_values);
+Finding check_inside_box(hid_t dataset, double L, std::string_view L_source, const Scan& scan);
 // Every row of a (R, 3, 3) dataset equals diag(L, L, L).
-Finding check_box_matrix(hid_t dataset, double L, std::string_view L_source, std::size_t block_values);
+Finding check_box_matrix(hid_t dataset, double L, std::string_view L_source, const Scan& scan);
 // Values never decrease along a (R,) dataset.
-Finding check_nondecreasing(hid_t dataset, std::size_t block_values);
+Finding check_nondecreasing(hid_t dataset, const Scan& scan);
 // Two (R,) datasets of equal length hold the same numbers.
-Finding check_equal(hid_t dataset, hid_t reference, std::string_view reference_path, std::size_t block_values);
+Finding check_equal(hid_t dataset, hid_t reference, std::string_view reference_path, const Scan& scan);
 
 }  // namespace coolgas::schema

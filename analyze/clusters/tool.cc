@@ -8,7 +8,7 @@
 
 #include "analyze/labelling/cluster_labeller.h"
 #include "analyze/clusters/mass_distribution.h"
-#include "analyze/trajectory/frame_reader.h"
+#include "common/trajectory/frame_reader.h"
 #include "common/error.h"
 #include "common/tsv.h"
 

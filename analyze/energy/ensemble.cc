@@ -6,6 +6,7 @@
 
 #include "analyze/energy/grid.h"
 #include "common/error.h"
+#include "common/trajectory/layout.h"
 #include "common/tsv.h"
 
 namespace coolgas {
@@ -53,7 +54,7 @@ EnergyRow average_row(double t, const std::vector<double>& E, const std::vector<
 }  // namespace
 
 EnergyRun load_energy_run(const std::string& path) {
-  EnergyRun run{read_run_info(path), read_observable(path, "kinetic_energy")};
+  EnergyRun run{read_run_info(path), read_observable(path, layout::kKineticEnergy)};
   const auto& s = run.energy;
   for (std::size_t i = 0; i < s.value.size(); ++i)
     if (!(s.value[i] > 0))

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "analyze/trajectory/run_info.h"
+#include "common/trajectory/run_info.h"
 
 namespace coolgas {
 
@@ -26,7 +26,8 @@ struct EnergyRow {
 EnergyRun load_energy_run(const std::string& path);
 
 // InputError naming both files and the first differing parameter unless every
-// run has the same physics (see physics_difference in analyze/trajectory/run_info.h).
+// run has the same physics (physics_difference in common/trajectory/run_parameters.h: every
+// parameter of role kPhysics, the model's own included).
 void require_same_physics(const std::vector<EnergyRun>& runs);
 
 // The ensemble table: a t = 0 row first if every run has one, then the grid

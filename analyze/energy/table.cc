@@ -9,7 +9,8 @@
 namespace coolgas {
 namespace {
 
-// L, N, ... go into the provenance because coolgas-collapse reads L from it.
+// The physics fields (N, L, ..., the model's own; run_parameters.h) go into
+// the provenance: coolgas-collapse reads L from it.
 Provenance energy_provenance(const std::vector<EnergyRun>& runs, int per_decade) {
   Provenance p;
   std::string seeds;
@@ -18,17 +19,10 @@ Provenance energy_provenance(const std::vector<EnergyRun>& runs, int per_decade)
     if (!seeds.empty()) seeds += ' ';
     seeds += std::to_string(r.info.params.seed);
   }
-  const RunParameters& q = runs[0].info.params;
   p.emplace_back("runs", std::to_string(runs.size()));
   p.emplace_back("seeds", seeds);
-  p.emplace_back("N", std::to_string(q.N));
-  p.emplace_back("L", format_number(q.L));
-  p.emplace_back("phi", format_number(q.phi));
-  p.emplace_back("T0", format_number(q.T0));
-  p.emplace_back("model", q.model);
-  p.emplace_back("r0", format_number(q.r0));
-  p.emplace_back("delta", format_number(q.delta));
-  p.emplace_back("simulator_version", runs[0].info.program_version);
+  for (auto& entry : physics_provenance(runs[0].info.params)) p.push_back(std::move(entry));
+  p.emplace_back("simulator_version", runs[0].info.params.program_version);
   p.emplace_back("per_decade", std::to_string(per_decade));
   return p;
 }

@@ -5,7 +5,7 @@
 
 #include "analyze/shape/cluster_shapes.h"
 #include "analyze/shape/mass_radius.h"
-#include "analyze/trajectory/frame_reader.h"
+#include "common/trajectory/frame_reader.h"
 #include "common/error.h"
 #include "common/tsv.h"
 

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <ostream>
 
-#include "analyze/trajectory/frame_reader.h"
+#include "common/trajectory/frame_reader.h"
 #include "common/error.h"
 #include "common/tsv.h"
 

@@ -7,7 +7,7 @@
 
 #include "analyze/structure/frame_structure.h"
 #include "analyze/structure/growing_length.h"
-#include "analyze/trajectory/frame_reader.h"
+#include "common/trajectory/frame_reader.h"
 #include "common/error.h"
 #include "common/tsv.h"
 

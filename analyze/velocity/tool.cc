@@ -4,7 +4,7 @@
 #include <ostream>
 #include <sstream>
 
-#include "analyze/trajectory/frame_reader.h"
+#include "common/trajectory/frame_reader.h"
 #include "analyze/velocity/distribution.h"
 #include "analyze/velocity/tail.h"
 #include "common/error.h"

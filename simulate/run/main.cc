@@ -16,7 +16,10 @@ std::string scene_help() {
   for (const auto& k : coolgas::scene_keys()) s << "  " << k.key << " (" << k.type << "): " << k.help << "\n";
   s << "\nExit codes: 0 done, 2 bad input, 3 interrupted by SIGINT/SIGTERM (final dump written),\n"
        "4 inelastic collapse (set collision.delta > 0), or an aggregate grown wider than a third of the box\n"
-       "(aggregation: use more particles); in both cases the state is written as the last dump.\n";
+       "(aggregation: use more particles); in both cases the state is written as the last dump;\n"
+       "5 writing the trajectory failed (disk full, quota, file-size limit, I/O error): the line names the\n"
+       "file and the cause, every earlier dump is intact, and --resume FILE completes the run once space is freed.\n"
+       "The trajectory can be read while it is written (the analysis tools open it as HDF5 SWMR readers).\n";
   return s.str();
 }
 

@@ -1,4 +1,5 @@
-// Reading the state to resume from: the last complete dump of a trajectory.
+// The engine state to resume from: the last complete dump of a trajectory
+// (common/trajectory/resume_frame.h) as particles, counters and aggregates.
 #pragma once
 #include <optional>
 #include <string>

@@ -11,7 +11,8 @@
 #include <sstream>
 
 #include "common/error.h"
-#include "common/h5md_writer.h"
+#include "common/trajectory/collision_models.h"
+#include "common/trajectory/h5md_writer.h"
 #include "common/progress.h"
 #include "common/tsv.h"
 #include "simulate/run/engine_factory.h"
@@ -164,9 +165,13 @@ RunParameters parameters_of(const Scene& s) {
   p.phi = s.phi;
   p.T0 = initial_temperature(s);
   p.model = s.model_name();
-  p.r0 = s.model == CollisionModel::kAggregation ? 0.0 : s.r0;  // aggregates keep no relative velocity
-  p.delta = s.delta;
-  p.viscoelastic_b = s.viscoelastic_b;
+  // Only the parameters the model has (common/trajectory/collision_models.h).
+  const auto if_used = [&](const char* name, double v) {
+    return model_uses(p.model, name) ? std::optional<double>(v) : std::nullopt;
+  };
+  p.r0 = if_used("r0", s.r0);
+  p.delta = if_used("delta", s.delta);
+  p.viscoelastic_b = if_used("viscoelastic_b", s.viscoelastic_b);
   return p;
 }
 
@@ -213,7 +218,7 @@ int start_new(const SimulationRequest& req) {
   try {
     writer.add_observables(observe(*engine));
     writer.add_frame(frame(*engine));
-    std::filesystem::rename(tmp, out);
+    writer.rename(out);
   } catch (...) {
     std::filesystem::remove(tmp);
     throw;

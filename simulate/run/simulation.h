@@ -18,7 +18,8 @@ struct SimulationRequest {
 
 // Returns the process exit code: 0 done, 3 interrupted by a signal (a final
 // dump was written), 4 inelastic collapse (a final dump was written).
-// Throws InputError for bad input, before anything is written.
+// Throws InputError for bad input, before anything is written, and
+// WriteError (exit code 5) when writing the trajectory fails.
 int run_simulation(const SimulationRequest& request);
 
 }  // namespace coolgas

@@ -18,8 +18,8 @@
 
 #include "analyze/labelling/cluster_labeller.h"
 #include "analyze/clusters/mass_distribution.h"
-#include "analyze/trajectory/frame_reader.h"
-#include "common/h5md_writer.h"
+#include "common/trajectory/frame_reader.h"
+#include "common/trajectory/h5md_writer.h"
 #include "tests/bench/median_timing.h"
 
 namespace {

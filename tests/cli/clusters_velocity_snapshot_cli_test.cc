@@ -11,7 +11,7 @@
 #include <limits>
 #include <random>
 
-#include "common/h5md_writer.h"
+#include "common/trajectory/h5md_writer.h"
 #include "common/hdf5_file.h"
 #include "tests/support/cli_checks.h"
 #include "tests/support/run_command.h"

@@ -64,7 +64,8 @@ std::int64_t schema_version(const std::string& path) {
   return h5::read_attr_int(par.id(), "schema_version");
 }
 
-TEST(EffectsCli, ViscoelasticRunValidatesAsVersion2AndElasticStaysVersion1) {
+// Version 3: a viscoelastic file holds viscoelastic_b and delta, and no r0.
+TEST(EffectsCli, ViscoelasticRunValidatesAsVersion3AndElasticStaysVersion1) {
   const std::string dir = test::scratch_dir("effects_visco");
   const std::string scene = write_file(dir, "ba.toml", kAggregationScene);
   const std::string visco = dir + "/visco.h5", elastic = dir + "/elastic.h5";
@@ -77,8 +78,14 @@ TEST(EffectsCli, ViscoelasticRunValidatesAsVersion2AndElasticStaysVersion1) {
             0);
   const auto v = run_command(bin("coolgas-validate") + " " + visco);
   EXPECT_EQ(v.exit_code, 0) << v.out << v.err;
-  EXPECT_NE(v.out.find("profile v2"), std::string::npos) << v.out;
-  EXPECT_EQ(schema_version(visco), 2);
+  EXPECT_NE(v.out.find("profile v3"), std::string::npos) << v.out;
+  EXPECT_EQ(schema_version(visco), 3);
+  {
+    h5::Handle vf = h5::open_file(visco, h5::Mode::kReadOnly);
+    h5::Handle par = h5::open_group(vf.id(), "parameters");
+    EXPECT_EQ(h5::read_attr_double(par.id(), "viscoelastic_b"), 0.2);
+    EXPECT_FALSE(h5::has_attr(par.id(), "r0"));
+  }
   EXPECT_EQ(schema_version(elastic), 1);
   h5::Handle f = h5::open_file(elastic, h5::Mode::kReadOnly);
   EXPECT_FALSE(h5::exists(f.id(), "particles/all/id"));

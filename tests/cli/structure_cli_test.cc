@@ -9,7 +9,7 @@
 #include <limits>
 #include <sstream>
 
-#include "common/h5md_writer.h"
+#include "common/trajectory/h5md_writer.h"
 #include "common/hdf5_file.h"
 #include "common/random.h"
 #include "common/tsv.h"

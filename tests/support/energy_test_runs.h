@@ -1,12 +1,12 @@
 // Synthetic trajectories for the energy tests: files written by the real
-// H5MD writer (common/h5md_writer.h) holding only /parameters and the
+// H5MD writer (common/trajectory/h5md_writer.h) holding only /parameters and the
 // observables, with a kinetic energy chosen by the test.
 #pragma once
 #include <functional>
 #include <string>
 #include <vector>
 
-#include "common/h5md_writer.h"
+#include "common/trajectory/h5md_writer.h"
 
 namespace coolgas::test {
 

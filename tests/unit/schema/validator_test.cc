@@ -10,7 +10,7 @@
 #include <limits>
 
 #include "common/error.h"
-#include "common/h5md_writer.h"
+#include "common/trajectory/h5md_writer.h"
 #include "common/hdf5_file.h"
 #include "tests/support/run_command.h"
 
@@ -234,7 +234,9 @@ TEST(Validator, ElementAddedInALaterVersionIsRequiredOnlyFromThatVersion) {
                          .rule = ValueRule::kAny,
                          .meaning = "particle ids",
                          .presence = Presence::kRequired,
-                         .since = 2});
+                         .since = 2,
+                         .only_in = std::nullopt,
+                         .fill = std::nullopt});
   const std::string path = fresh_file("later_version");
   EXPECT_EQ(lines(validate(path, v2)), std::vector<std::string>{});
 

@@ -10,7 +10,7 @@
 
 #include "analyze/clusters/mass_distribution.h"
 #include "common/error.h"
-#include "common/h5md_writer.h"
+#include "common/trajectory/h5md_writer.h"
 #include "common/tsv.h"
 #include "tests/support/run_command.h"
 

@@ -6,9 +6,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <sstream>
 
 #include "analyze/energy/grid.h"
+#include "analyze/energy/table.h"
 #include "common/error.h"
+#include "common/tsv.h"
 #include "tests/support/run_command.h"
 #include "tests/support/energy_test_runs.h"
 
@@ -92,6 +95,31 @@ TEST_F(EnsembleOfThree, DifferentPhysicsIsRefusedNamingTheParameter) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("L = 32 vs 48"), std::string::npos) << e.what();
   }
+}
+
+// The bug of the hand-written parameter lists: b was neither compared nor shown.
+TEST(EnergyEnsemble, ViscoelasticRunsWithDifferentBAreRefusedNamingB) {
+  const std::string dir = test::scratch_dir("energy_viscoelastic_b");
+  std::vector<EnergyRun> runs;
+  for (double b : {0.1, 0.9}) {
+    RunParameters p = test::paper_parameters(32, 1);
+    p.model = "viscoelastic";
+    p.r0.reset();
+    p.viscoelastic_b = b;
+    const std::string path = dir + "/b" + format_number(b) + ".h5";
+    test::write_energy_run(path, p, {0, 1, 10}, [](double t) { return 1 / (1 + t); });
+    runs.push_back(load_energy_run(path));
+  }
+  try {
+    require_same_physics(runs);
+    FAIL() << "runs with b = 0.1 and 0.9 were accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("viscoelastic_b = 0.1 vs 0.9"), std::string::npos) << e.what();
+  }
+  std::ostringstream table;
+  write_energy_table({{runs[0].info.path}, 20}, table);
+  EXPECT_NE(table.str().find("# viscoelastic_b: 0.1\n"), std::string::npos) << table.str();
+  EXPECT_EQ(table.str().find("# r0:"), std::string::npos) << table.str();
 }
 
 TEST(EnergyEnsemble, NonPositiveEnergyIsRefused) {

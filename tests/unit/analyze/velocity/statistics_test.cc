@@ -11,7 +11,7 @@
 #include "analyze/velocity/tail.h"
 #include "analyze/velocity/tool.h"
 #include "common/error.h"
-#include "common/h5md_writer.h"
+#include "common/trajectory/h5md_writer.h"
 #include "common/tsv.h"
 #include "tests/support/run_command.h"
 

@@ -14,6 +14,8 @@
 #include <string_view>
 #include <vector>
 
+#include "common/trajectory/layout.h"
+
 namespace coolgas::schema {
 
 // Types as the profile names them. kInteger accepts any signed integer width
@@ -21,7 +23,10 @@ namespace coolgas::schema {
 enum class DataType { kInt32, kInt64, kFloat64, kVlenString, kInteger };
 std::string_view type_name(DataType t);
 
-enum class Presence { kRequired, kOptional };
+// kPerModel: required when the file's model (common/trajectory/collision_models.h)
+// has it: a model-specific /parameters attribute the model lists, or an
+// element of the layout the model writes.
+enum class Presence { kRequired, kOptional, kPerModel };
 
 // One dimension of a dataset's shape: a fixed size or N (/parameters/N).
 struct Extent {
@@ -74,6 +79,8 @@ struct ElementSpec {
   std::string_view meaning;
   Presence presence = Presence::kRequired;
   int since = 1;
+  std::optional<layout::Layout> only_in;  // written only in files of this layout
+  std::optional<std::int64_t> fill;       // the dataset's fill value (H5MD: marks absent particles)
 };
 
 // A plain time series outside H5MD elements (the /restart counters).

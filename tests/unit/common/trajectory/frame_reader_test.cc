@@ -1,12 +1,12 @@
 // The dump reader on files from the real H5MD writer: frames read back
 // exactly, dump times and the nearest dump, the provenance of the run,
 // and the errors for files that are not trajectories.
-#include "analyze/trajectory/frame_reader.h"
+#include "common/trajectory/frame_reader.h"
 
 #include <gtest/gtest.h>
 
 #include "common/error.h"
-#include "common/h5md_writer.h"
+#include "common/trajectory/h5md_writer.h"
 #include "common/hdf5_file.h"
 #include "tests/support/run_command.h"
 

@@ -64,8 +64,9 @@ class Trajectory {
   // numbers in a double element are an InputError naming dump and particle.
   void read(std::size_t dump, Frame& frame) const;
 
-  // "input", then the /parameters attributes that are present (N, L, phi,
-  // model, r0, delta, seed), for the provenance block of a table.
+  // "input", then seed and the physics fields of /parameters
+  // (run_parameters.h: N, L, phi, T0, model and the model's own), for the
+  // provenance block of a table.
   Provenance provenance() const;
 
  private:

@@ -1,10 +1,12 @@
-#include "analyze/trajectory/frame_reader.h"
+#include "common/trajectory/frame_reader.h"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 #include "common/error.h"
+#include "common/trajectory/layout.h"
+#include "common/trajectory/run_parameters.h"
 
 namespace coolgas {
 
@@ -12,17 +14,17 @@ namespace {
 
 struct ElementSpec {
   Field field;
-  const char* path;       // the H5MD element (group holding step, time, value)
+  std::string_view path;  // the H5MD element (group holding step, time, value)
   hsize_t per_particle;   // numbers per particle: value is (F, N, 3) or (F, N)
 };
 
 // The per-particle elements a Trajectory can read.
 constexpr ElementSpec kElements[] = {
-    {kPosition, "particles/all/position", 3},
-    {kVelocity, "particles/all/velocity", 3},
-    {kImage, "particles/all/image", 3},
-    {kId, "particles/all/id", 1},
-    {kMass, "particles/all/mass", 1},
+    {kPosition, layout::kPosition, 3},
+    {kVelocity, layout::kVelocity, 3},
+    {kImage, layout::kImage, 3},
+    {kId, layout::kId, 1},
+    {kMass, layout::kMass, 1},
 };
 
 // Moves the entries of present slots (keep[i]) to the front, `k` numbers each.
@@ -38,7 +40,7 @@ void compact(std::vector<T>& v, const std::vector<bool>& keep, std::size_t k) {
   v.resize(out * k);
 }
 
-std::string value_of(const ElementSpec& e) { return std::string(e.path) + "/value"; }
+std::string value_of(const ElementSpec& e) { return layout::value_of(e.path); }
 
 // Rejects NaN and infinities, naming the first offending particle.
 void check_finite(const std::vector<double>& v, const std::string& where) {
@@ -54,52 +56,50 @@ void check_finite(const std::vector<double>& v, const std::string& where) {
 Trajectory::Trajectory(const std::string& path, unsigned fields) : path_(path), fields_(fields) {
   if (fields == 0) throw std::logic_error("Trajectory opened for no element");
   file_ = h5::open_file(path, h5::Mode::kReadOnly);
-  aggregates_ = h5::exists(file_.id(), "particles/all/id/value");
+  aggregates_ = layout::layout_of(file_.id()) == layout::Layout::kAggregation;
   if (aggregates_) fields_ |= kId | kMass;
   std::size_t frames = SIZE_MAX;
   for (const auto& e : kElements) {
     if (!(fields_ & e.field)) continue;
-    check_element(e.path, e.per_particle);
+    check_element(std::string(e.path), e.per_particle);
     h5::Handle value = h5::open_dataset(file_.id(), value_of(e));
-    h5::Handle time = h5::open_dataset(file_.id(), std::string(e.path) + "/time");
+    h5::Handle time = h5::open_dataset(file_.id(), layout::time_of(e.path));
     frames = std::min<std::size_t>({frames, h5::shape(value.id())[0], h5::shape(time.id())[0]});
     if (times_.empty()) {
       times_ = h5::read_all<double>(time.id());
-      h5::Handle step = h5::open_dataset(file_.id(), std::string(e.path) + "/step");
+      h5::Handle step = h5::open_dataset(file_.id(), layout::step_of(e.path));
       steps_ = h5::read_all<std::int64_t>(step.id());
       frames = std::min(frames, steps_.size());
     }
   }
   // A frame is complete once its /restart row exists (the writer adds it last);
-  // rows beyond it belong to a burst that a crash interrupted.
-  if (h5::exists(file_.id(), "restart/time")) {
-    h5::Handle rt = h5::open_dataset(file_.id(), "restart/time");
-    frames = std::min<std::size_t>(frames, h5::shape(rt.id())[0]);
-  }
+  // rows beyond it belong to a burst still being written or cut short by a crash.
+  if (h5::exists(file_.id(), std::string(layout::kRestartTime)))
+    frames = std::min<std::size_t>(frames, layout::complete_dumps(file_.id()));
   if (frames == 0) throw InputError(path_ + ": the trajectory holds no dumps");
   times_.resize(frames);
   steps_.resize(frames);
 }
 
 void Trajectory::missing(const std::string& what) const {
-  throw InputError(path_ + ": not a coolgas trajectory: missing /" + what);
+  throw InputError(path_ + ": not a coolgas trajectory: missing " + what);
 }
 
 // Checks that an element has value/time/step and that value is (F, N, 3), or
 // (F, N) for one number per particle, with the same N as the elements checked before.
 void Trajectory::check_element(const std::string& element, hsize_t per_particle) {
-  for (const char* d : {"/value", "/time", "/step"})
-    if (!h5::exists(file_.id(), element + d)) missing(element + d);
-  h5::Handle value = h5::open_dataset(file_.id(), element + "/value");
+  for (const std::string& d : {layout::value_of(element), layout::time_of(element), layout::step_of(element)})
+    if (!h5::exists(file_.id(), d)) missing(d);
+  h5::Handle value = h5::open_dataset(file_.id(), layout::value_of(element));
   const auto dims = h5::shape(value.id());
   const bool fits = per_particle == 1 ? dims.size() == 2 : (dims.size() == 3 && dims[2] == per_particle);
   if (!fits)
-    throw InputError(path_ + ": /" + element + "/value has the wrong shape (expected frames x particles" +
+    throw InputError(path_ + ": " + element + "/value has the wrong shape (expected frames x particles" +
                      (per_particle == 1 ? ")" : " x 3)"));
   const auto n = static_cast<std::int64_t>(dims[1]);
-  if (n < 1) throw InputError(path_ + ": /" + element + "/value holds no particles");
+  if (n < 1) throw InputError(path_ + ": " + element + "/value holds no particles");
   if (n_ != 0 && n != n_)
-    throw InputError(path_ + ": /" + element + "/value has " + std::to_string(n) + " particles, other elements " +
+    throw InputError(path_ + ": " + element + "/value has " + std::to_string(n) + " particles, other elements " +
                      std::to_string(n_));
   n_ = n;
 }
@@ -122,8 +122,9 @@ std::vector<std::size_t> Trajectory::dumps_nearest(const std::vector<double>& ti
 }
 
 double Trajectory::box_side(std::size_t dump) const {
-  if (h5::exists(file_.id(), "particles/all/box/edges/value")) {
-    h5::Handle edges = h5::open_dataset(file_.id(), "particles/all/box/edges/value");
+  const std::string edges_value = layout::value_of(layout::kBoxEdges);
+  if (h5::exists(file_.id(), edges_value)) {
+    h5::Handle edges = h5::open_dataset(file_.id(), edges_value);
     const auto dims = h5::shape(edges.id());
     if (dims.size() == 3 && dims[1] == 3 && dims[2] == 3 && dump < dims[0]) {
       const auto m = h5::read_row<double>(edges.id(), dump);
@@ -133,11 +134,12 @@ double Trajectory::box_side(std::size_t dump) const {
       return m[0];
     }
   }
-  if (h5::exists(file_.id(), "parameters")) {
-    h5::Handle par = h5::open_group(file_.id(), "parameters");
+  const std::string parameters(layout::kParameters);
+  if (h5::exists(file_.id(), parameters)) {
+    h5::Handle par = h5::open_group(file_.id(), parameters);
     if (h5::has_attr(par.id(), "L")) return h5::read_attr_double(par.id(), "L");
   }
-  missing("particles/all/box/edges");
+  missing(std::string(layout::kBoxEdges));
 }
 
 void Trajectory::read(std::size_t dump, Frame& frame) const {
@@ -149,7 +151,7 @@ void Trajectory::read(std::size_t dump, Frame& frame) const {
   frame.step = steps_[dump];
   frame.L = box_side(dump);
   const auto size = static_cast<std::size_t>(3 * n_);
-  const std::string where = path_ + ": dump " + std::to_string(dump) + " (t = " + format_number(frame.time) + "): /";
+  const std::string where = path_ + ": dump " + std::to_string(dump) + " (t = " + format_number(frame.time) + "): ";
   for (const auto& e : kElements) {
     if (!(fields_ & e.field)) continue;
     h5::Handle value = h5::open_dataset(file_.id(), value_of(e));
@@ -157,12 +159,12 @@ void Trajectory::read(std::size_t dump, Frame& frame) const {
       case kPosition:
         frame.position.resize(size);
         h5::read_rows(value.id(), h5::Type::kFloat64, dump, 1, frame.position.data());
-        check_finite(frame.position, where + e.path);
+        check_finite(frame.position, where + std::string(e.path));
         break;
       case kVelocity:
         frame.velocity.resize(size);
         h5::read_rows(value.id(), h5::Type::kFloat64, dump, 1, frame.velocity.data());
-        check_finite(frame.velocity, where + e.path);
+        check_finite(frame.velocity, where + std::string(e.path));
         break;
       case kImage:
         frame.image.resize(size);
@@ -175,7 +177,7 @@ void Trajectory::read(std::size_t dump, Frame& frame) const {
       case kMass:
         frame.mass.resize(std::size_t(n_));
         h5::read_rows(value.id(), h5::Type::kFloat64, dump, 1, frame.mass.data());
-        check_finite(frame.mass, where + e.path);
+        check_finite(frame.mass, where + std::string(e.path));
         break;
     }
   }
@@ -195,15 +197,15 @@ void Trajectory::keep_present(Frame& frame) const {
     throw InputError(path_ + ": dump " + std::to_string(frame.dump) + " holds no aggregate (every id is -1)");
 }
 
+// Tolerant of files without /parameters (the frames are all a tool needs);
+// a file that has them must have them right.
 Provenance Trajectory::provenance() const {
   Provenance p{{"input", path_}};
-  if (!h5::exists(file_.id(), "parameters")) return p;
-  h5::Handle par = h5::open_group(file_.id(), "parameters");
-  for (const char* key : {"N", "seed"})
-    if (h5::has_attr(par.id(), key)) p.emplace_back(key, std::to_string(h5::read_attr_int(par.id(), key)));
-  for (const char* key : {"L", "phi", "r0", "delta"})
-    if (h5::has_attr(par.id(), key)) p.emplace_back(key, format_number(h5::read_attr_double(par.id(), key)));
-  if (h5::has_attr(par.id(), "model")) p.emplace_back("model", h5::read_attr_string(par.id(), "model"));
+  const std::string parameters(layout::kParameters);
+  if (!h5::exists(file_.id(), parameters)) return p;
+  const RunParameters run = read_parameters(h5::open_group(file_.id(), parameters).id(), path_);
+  p.emplace_back("seed", std::to_string(run.seed));
+  for (auto& entry : physics_provenance(run)) p.push_back(std::move(entry));
   return p;
 }
 

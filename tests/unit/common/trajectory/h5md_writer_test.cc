@@ -1,7 +1,7 @@
 // The H5MD writer (data-schema/h5md-profile.md): what it writes reads back
 // exactly, a resumed file drops an interrupted burst, and real clients
 // (h5py, MDAnalysis 2.4) open it.
-#include "common/h5md_writer.h"
+#include "common/trajectory/h5md_writer.h"
 
 #include <gtest/gtest.h>
 

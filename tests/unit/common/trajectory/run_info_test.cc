@@ -1,7 +1,7 @@
-// Reading a trajectory's /parameters and observables back (analyze/trajectory/run_info.h): what
+// Reading a trajectory's /parameters and observables back (common/trajectory/run_info.h): what
 // the writer stored comes back exactly, and every defect is one InputError
 // naming the file and what is missing.
-#include "analyze/trajectory/run_info.h"
+#include "common/trajectory/run_info.h"
 
 #include <gtest/gtest.h>
 
@@ -10,6 +10,7 @@
 
 #include "common/error.h"
 #include "common/hdf5_file.h"
+#include "common/trajectory/layout.h"
 #include "tests/support/run_command.h"
 #include "tests/support/energy_test_runs.h"
 
@@ -37,7 +38,7 @@ TEST(RunInfo, ParametersAndObservablesReadBackExactly) {
   EXPECT_EQ(info.params.delta, 1e-4);
   EXPECT_EQ(info.params.seed, 7);
   EXPECT_EQ(info.params.scene_toml, test::paper_parameters(32, 7).scene_toml);
-  const ObservableSeries e = read_observable(path, "kinetic_energy");
+  const ObservableSeries e = read_observable(path, layout::kKineticEnergy);
   EXPECT_EQ(e.time, (std::vector<double>{0, 1, 2.5}));
   EXPECT_EQ(e.value, (std::vector<double>{1, 0.5, 1 / 3.5}));
 }
@@ -48,7 +49,7 @@ TEST(RunInfo, MissingObservableIsNamedWithTheFile) {
     h5::Handle f = h5::open_file(path, h5::Mode::kCreateTruncate);
     h5::create_group(f.id(), "observables");
   }
-  EXPECT_EQ(message_of([&] { read_observable(path, "kinetic_energy"); }),
+  EXPECT_EQ(message_of([&] { read_observable(path, layout::kKineticEnergy); }),
             path + ": not a coolgas trajectory: missing /observables/kinetic_energy");
   EXPECT_EQ(message_of([&] { read_run_info(path); }), path + ": not a coolgas trajectory: missing /parameters");
 }
@@ -62,7 +63,7 @@ TEST(RunInfo, FileThatIsNotHdf5IsAnInputError) {
 TEST(RunInfo, NonFiniteEnergyIsRejected) {
   const std::string path = test::scratch_dir("run_info_nan") + "/run.h5";
   test::write_energy_run(path, test::paper_parameters(32, 1), {0, 1}, [](double t) { return t > 0 ? std::numeric_limits<double>::quiet_NaN() : 1.0; });
-  EXPECT_NE(message_of([&] { read_observable(path, "kinetic_energy"); }).find("row 1 is not finite"), std::string::npos);
+  EXPECT_NE(message_of([&] { read_observable(path, layout::kKineticEnergy); }).find("row 1 is not finite"), std::string::npos);
 }
 
 TEST(RunInfo, PhysicsDifferenceIgnoresSeedAndSceneOnly) {

@@ -1,0 +1,161 @@
+#include "common/trajectory/h5md_profile.h"
+
+#include "common/trajectory/run_parameters.h"
+
+// The tables name only the fields a row needs; the others keep their member
+// defaults on purpose. GCC 12 warns about that even for designated initializers.
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+
+namespace coolgas::schema {
+namespace {
+
+using enum DataType;
+using enum RowCount;
+using enum ValueRule;
+using namespace layout;
+
+// Version 2 adds the effects (viscoelastic restitution, ballistic
+// aggregation): the viscoelastic model's constant (a /parameters row of
+// run_parameters.cc), and for the aggregation layout per-particle id (fill
+// value -1 marks an absent aggregate), mass and diameter, and the aggregate
+// observables. Version 3 writes the model-specific /parameters only for the
+// models that use them; the rows stay, as kPerModel.
+void append_aggregation_layout(Profile& p) {
+  p.version = 3;
+  const auto aggregation = [](ElementSpec e) {
+    e.presence = Presence::kPerModel;
+    e.since = 2;
+    e.only_in = layout::Layout::kAggregation;
+    return e;
+  };
+  p.elements.push_back(aggregation({.path = kId, .type = kInt32, .row = {kParticles},
+                                    .meaning = "aggregate id, -1 if absent", .fill = layout::kAbsentId}));
+  p.elements.push_back(aggregation({.path = kMass, .row = {kParticles}, .rule = kFinite,
+                                    .meaning = "aggregate mass"}));
+  p.elements.push_back(aggregation({.path = kDiameter, .row = {kParticles}, .rule = kFinite,
+                                    .meaning = "aggregate diameter"}));
+  p.elements.push_back(aggregation({.path = kAggregates, .type = kInt64, .rows = kObservableRows,
+                                    .meaning = "number of aggregates"}));
+  p.elements.push_back(aggregation({.path = kMeanMass, .rows = kObservableRows, .rule = kFinite,
+                                    .meaning = "mean aggregate mass"}));
+  p.elements.push_back(aggregation({.path = kLargestMass, .rows = kObservableRows, .rule = kFinite,
+                                    .meaning = "largest aggregate mass"}));
+}
+
+DataType type_of(const ParameterField::Member& m) {
+  if (std::holds_alternative<std::int64_t RunParameters::*>(m)) return kInt64;
+  if (std::holds_alternative<std::string RunParameters::*>(m)) return kVlenString;
+  return kFloat64;
+}
+
+// The /parameters attributes: one row per field of the run-parameter table.
+void append_parameters(Profile& p) {
+  for (const ParameterField& f : run_parameter_fields())
+    p.attributes.push_back({.group = kParameters,
+                            .name = f.name,
+                            .type = type_of(f.member),
+                            .at_least = f.at_least,
+                            .meaning = f.meaning,
+                            .presence = is_model_specific(f) ? Presence::kPerModel : Presence::kRequired,
+                            .since = f.since});
+}
+
+// Version 1, row for row as in data-schema/h5md-profile.md. Later versions append.
+Profile make_profile() {
+  Profile p;
+  p.version = 1;
+  p.groups = {
+      {.path = kH5md, .meaning = "H5MD metadata"},
+      {.path = kAuthor, .meaning = "who ran the simulation"},
+      {.path = kCreator, .meaning = "the program that wrote the file"},
+      {.path = kBox, .meaning = "the periodic cubic box"},
+      {.path = kParameters, .meaning = "the run's inputs, as attributes"},
+      {.path = kRestart, .meaning = "per-dump counters needed to resume"},
+  };
+  p.attributes = {
+      {.group = kH5md, .name = "version", .type = kInt32, .length = 2, .equals = "[1, 1]", .meaning = "H5MD version"},
+      {.group = kAuthor, .name = "name", .type = kVlenString, .meaning = "user running the simulation"},
+      {.group = kCreator, .name = "name", .type = kVlenString, .meaning = "creating program"},
+      {.group = kCreator, .name = "version", .type = kVlenString, .meaning = "its version"},
+      // The page says int32; coolgas 0.1 writes int64 and MDAnalysis reads either.
+      {.group = kBox, .name = "dimension", .type = kInteger, .equals = "3", .meaning = "dimension"},
+      {.group = kBox,
+       .name = "boundary",
+       .type = kVlenString,
+       .length = 3,
+       .equals = "[periodic, periodic, periodic]",
+       .meaning = "boundary conditions"},
+  };
+  p.elements = {
+      {.path = kBoxEdges, .row = {kThree, kThree}, .rule = kBoxMatrix, .meaning = "diag(L, L, L)"},
+      {.path = kPosition, .row = {kParticles, kThree}, .rule = kInsideBox, .meaning = "centres"},
+      {.path = kImage, .type = kInt32, .row = {kParticles, kThree}, .meaning = "image counts"},
+      {.path = kVelocity, .row = {kParticles, kThree}, .rule = kFinite, .meaning = "velocities"},
+      {.path = kKineticEnergy, .rows = kObservableRows, .rule = kFinite, .meaning = "E per particle"},
+      {.path = kCollisions, .type = kInt64, .rows = kObservableRows, .meaning = "collisions so far"},
+      {.path = kCollisionsPerParticle,
+       .rows = kObservableRows,
+       .rule = kFinite,
+       .meaning = "2 x collisions / N"},
+      {.path = kCollisionsBelowDelta,
+       .type = kInt64,
+       .rows = kObservableRows,
+       .meaning = "collisions below delta so far"},
+      {.path = kTotalMomentum,
+       .row = {kThree},
+       .rows = kObservableRows,
+       .rule = kFinite,
+       .meaning = "total momentum"},
+  };
+  p.datasets = {
+      {.path = kRestartTime, .type = kFloat64, .same_as = kPositionTime, .meaning = "dump time"},
+      {.path = kRestartCollisions, .meaning = "collisions at the dump"},
+      {.path = kRestartBelowDelta, .meaning = "collisions below delta at the dump"},
+  };
+  append_parameters(p);
+  append_aggregation_layout(p);
+  p.schema_version = {kParameters, "schema_version"};
+  p.particle_count = {kParameters, "N"};
+  p.box_side = {kParameters, "L"};
+  p.frames_from = kPosition;
+  p.observable_rows_from = kKineticEnergy;
+  return p;
+}
+
+}  // namespace
+
+std::string_view type_name(DataType t) {
+  switch (t) {
+    case kInt32:
+      return "int32";
+    case kInt64:
+      return "int64";
+    case kFloat64:
+      return "float64";
+    case kVlenString:
+      return "vlen str";
+    case kInteger:
+      return "integer";
+  }
+  return "?";
+}
+
+std::string_view row_count_symbol(RowCount r) { return r == kFrames ? "F" : "K"; }
+
+const Profile& h5md_profile() {
+  static const Profile profile = make_profile();
+  return profile;
+}
+
+std::string shape_rule(RowCount rows, const std::vector<Extent>& row) {
+  std::string s = "(";
+  s.append(row_count_symbol(rows));
+  for (const Extent& e : row) {
+    s.append(", ");
+    s.append(e.particles ? "N" : std::to_string(e.size));
+  }
+  s.append(row.empty() ? ",)" : ")");
+  return s;
+}
+
+}  // namespace coolgas::schema

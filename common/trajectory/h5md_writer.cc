@@ -1,0 +1,263 @@
+#include "common/trajectory/h5md_writer.h"
+
+#include <csignal>
+#include <cstdlib>
+#include <filesystem>
+#include <stdexcept>
+
+#include "common/error.h"
+#include "common/trajectory/collision_models.h"
+#include "common/trajectory/h5md_profile.h"
+#include "common/version.h"
+
+namespace coolgas {
+namespace {
+
+using namespace layout;
+
+constexpr hsize_t kFrameChunk = 1;  // one frame per chunk: frames are large
+constexpr hsize_t kObservableChunk = 256;
+
+// A file-size limit (ulimit -f) must make write() fail with EFBIG, which is
+// reported like a full disk, instead of killing the process with SIGXFSZ.
+void ignore_file_size_signal() { std::signal(SIGXFSZ, SIG_IGN); }
+
+h5::Type h5_type(schema::DataType t) {
+  switch (t) {
+    case schema::DataType::kInt32: return h5::Type::kInt32;
+    case schema::DataType::kInt64: return h5::Type::kInt64;
+    default: return h5::Type::kFloat64;
+  }
+}
+
+bool in_layout(const schema::ElementSpec& e, Layout l) { return !e.only_in || *e.only_in == l; }
+
+void create_element(hid_t file, const schema::ElementSpec& e, hsize_t n) {
+  std::vector<hsize_t> inner;
+  for (const schema::Extent& x : e.row) inner.push_back(x.particles ? n : x.size);
+  const hsize_t chunk = e.rows == schema::RowCount::kFrames ? kFrameChunk : kObservableChunk;
+  h5::Handle g = h5::create_group(file, std::string(e.path));
+  h5::create_series(g.id(), "step", h5::Type::kInt64, {}, chunk);
+  h5::create_series(g.id(), "time", h5::Type::kFloat64, {}, chunk);
+  h5::create_series(g.id(), "value", h5_type(e.type), inner, chunk, e.fill);
+}
+
+void write_metadata(hid_t file) {
+  h5::Handle h5md = h5::open_group(file, std::string(kH5md));
+  h5::write_attr(h5md.id(), "version", std::vector<std::int32_t>{1, 1});
+  h5::Handle author = h5::open_group(file, std::string(kAuthor));
+  const char* user = std::getenv("USER");
+  h5::write_attr(author.id(), "name", std::string(user ? user : "unknown"));
+  h5::Handle creator = h5::open_group(file, std::string(kCreator));
+  h5::write_attr(creator.id(), "name", std::string("coolgas-simulate"));
+  h5::write_attr(creator.id(), "version", program_version());
+  h5::Handle box = h5::open_group(file, std::string(kBox));
+  h5::write_attr(box.id(), "dimension", std::int64_t{3});
+  h5::write_attr(box.id(), "boundary", std::vector<std::string>{"periodic", "periodic", "periodic"});
+}
+
+void truncate_element(hid_t file, std::string_view element, hsize_t rows) {
+  for (const std::string& d : {step_of(element), time_of(element), value_of(element)}) {
+    h5::Handle ds = h5::open_dataset(file, d);
+    h5::resize_rows(ds.id(), rows);
+  }
+}
+
+}  // namespace
+
+template <class F>
+void H5mdWriter::writing(F&& body) {
+  try {
+    body();
+  } catch (const h5::Error& e) {
+    throw WriteError("cannot write '" + path_ + "': " + (e.cause.empty() ? std::string(e.what()) : e.cause));
+  }
+}
+
+H5mdWriter H5mdWriter::create(const std::string& path, const RunParameters& params, bool overwrite) {
+  if (!overwrite && std::filesystem::exists(path))
+    throw InputError("output '" + path + "' exists; pass --force to overwrite it");
+  const CollisionModelSpec* model = find_collision_model(params.model);
+  if (!model) throw std::logic_error("writing a run of unknown model '" + params.model + "'");
+  ignore_file_size_signal();
+  H5mdWriter w;
+  w.path_ = path;
+  w.file_ = h5::open_file(path, overwrite ? h5::Mode::kCreateTruncate : h5::Mode::kCreateExclusive);
+  w.lock_ = WriterLock::take(path);
+  w.n_ = params.N;
+  w.box_ = params.L;
+  w.layout_ = model->layout;
+  RunParameters p = params;
+  p.schema_version = model->schema_version;
+  p.program_version = program_version();
+  w.writing([&] { w.create_objects(p); });
+  return w;
+}
+
+// Every object the file will ever hold, from the profile's tables: SWMR
+// writing allows no new object later.
+void H5mdWriter::create_objects(const RunParameters& params) {
+  const hid_t f = file_.id();
+  const schema::Profile& profile = schema::h5md_profile();
+  for (const schema::GroupSpec& g : profile.groups) h5::create_group(f, std::string(g.path));
+  write_metadata(f);
+  h5::Handle par = h5::open_group(f, std::string(kParameters));
+  write_parameters(par.id(), params);
+  for (const schema::ElementSpec& e : profile.elements)
+    if (in_layout(e, layout_)) create_element(f, e, static_cast<hsize_t>(n_));
+  for (const schema::DatasetSpec& d : profile.datasets)
+    h5::create_series(f, std::string(d.path), h5_type(d.type), {}, kObservableChunk);
+  flush_file();
+}
+
+H5mdWriter H5mdWriter::reopen(const std::string& path) {
+  ignore_file_size_signal();
+  H5mdWriter w;
+  w.path_ = path;
+  w.lock_ = WriterLock::take(path);  // before the status flags are cleared
+  w.file_ = h5::open_file(path, h5::Mode::kReadWrite);
+  const hid_t f = w.file_.id();
+  if (!h5::exists(f, std::string(kRestartTime)))
+    throw InputError("'" + path + "' is not a coolgas trajectory (no /restart)");
+  const RunParameters p = read_parameters(h5::open_group(f, std::string(kParameters)).id(), path);
+  w.n_ = p.N;
+  w.box_ = p.L;
+  w.layout_ = layout_of(f);
+  w.writing([&] { w.drop_interrupted_burst(); });
+  return w;
+}
+
+// Drops anything an interrupted burst wrote after the last complete frame.
+void H5mdWriter::drop_interrupted_burst() {
+  const hid_t f = file_.id();
+  const auto times = h5::read_all<double>(h5::open_dataset(f, std::string(kRestartTime)).id());
+  if (times.empty()) throw InputError("'" + path_ + "' holds no complete dump to resume from");
+  const hsize_t frames = times.size();
+  for (const schema::ElementSpec& e : schema::h5md_profile().elements) {
+    if (!in_layout(e, layout_)) continue;
+    if (e.rows == schema::RowCount::kFrames) {
+      truncate_element(f, e.path, frames);
+      continue;
+    }
+    const auto t = h5::read_all<double>(h5::open_dataset(f, time_of(e.path)).id());
+    hsize_t keep = 0;
+    while (keep < t.size() && t[keep] <= times.back()) ++keep;
+    truncate_element(f, e.path, keep);
+  }
+  for (const schema::DatasetSpec& d : schema::h5md_profile().datasets)
+    h5::resize_rows(h5::open_dataset(f, std::string(d.path)).id(), frames);
+  flush_file();
+}
+
+// The last moment objects and attributes may change; from here on, rows only grow.
+void H5mdWriter::begin_appending() {
+  if (appending_) return;
+  h5::start_swmr_write(file_);
+  appending_ = true;
+}
+
+void H5mdWriter::append(std::string_view element, std::int64_t step, double time, h5::Type type, const void* value,
+                        int stride) {
+  const hid_t f = file_.id();
+  h5::Handle s = h5::open_dataset(f, step_of(element));
+  h5::Handle t = h5::open_dataset(f, time_of(element));
+  h5::Handle v = h5::open_dataset(f, value_of(element));
+  h5::append_row(s.id(), h5::Type::kInt64, &step);
+  h5::append_row(t.id(), h5::Type::kFloat64, &time);
+  h5::append_row(v.id(), type, value, hsize_t(stride));
+  s.close_checked();
+  t.close_checked();
+  v.close_checked();
+}
+
+void H5mdWriter::write_pending() {
+  for (const auto& r : pending_) {
+    const double per_particle = 2.0 * double(r.collisions) / double(n_);
+    append(kKineticEnergy, r.collisions, r.time, h5::Type::kFloat64, &r.kinetic_energy);
+    append(kCollisions, r.collisions, r.time, h5::Type::kInt64, &r.collisions);
+    append(kCollisionsPerParticle, r.collisions, r.time, h5::Type::kFloat64, &per_particle);
+    append(kCollisionsBelowDelta, r.collisions, r.time, h5::Type::kInt64, &r.below_delta);
+    append(kTotalMomentum, r.collisions, r.time, h5::Type::kFloat64, r.momentum.data());
+    if (layout_ != Layout::kAggregation) continue;
+    append(kAggregates, r.collisions, r.time, h5::Type::kInt64, &r.aggregates);
+    append(kMeanMass, r.collisions, r.time, h5::Type::kFloat64, &r.mean_mass);
+    append(kLargestMass, r.collisions, r.time, h5::Type::kFloat64, &r.largest_mass);
+  }
+  pending_.clear();
+}
+
+void H5mdWriter::write_frame(const FrameView& fr) {
+  const double edges[9] = {box_, 0, 0, 0, box_, 0, 0, 0, box_};
+  append(kBoxEdges, fr.collisions, fr.time, h5::Type::kFloat64, edges);
+  append(kPosition, fr.collisions, fr.time, h5::Type::kFloat64, fr.position, fr.position_stride);
+  append(kImage, fr.collisions, fr.time, h5::Type::kInt32, fr.image);
+  append(kVelocity, fr.collisions, fr.time, h5::Type::kFloat64, fr.velocity, fr.velocity_stride);
+  if (layout_ != Layout::kAggregation) return;
+  if (!fr.id || !fr.mass || !fr.diameter) throw std::logic_error("aggregation frame without id, mass or diameter");
+  append(kId, fr.collisions, fr.time, h5::Type::kInt32, fr.id);
+  append(kMass, fr.collisions, fr.time, h5::Type::kFloat64, fr.mass);
+  append(kDiameter, fr.collisions, fr.time, h5::Type::kFloat64, fr.diameter);
+}
+
+void H5mdWriter::write_restart_row(const FrameView& fr) {
+  const hid_t f = file_.id();
+  h5::Handle rc = h5::open_dataset(f, std::string(kRestartCollisions));
+  h5::Handle rb = h5::open_dataset(f, std::string(kRestartBelowDelta));
+  h5::Handle rt = h5::open_dataset(f, std::string(kRestartTime));
+  h5::append_row(rc.id(), h5::Type::kInt64, &fr.collisions);
+  h5::append_row(rb.id(), h5::Type::kInt64, &fr.below_delta);
+  h5::append_row(rt.id(), h5::Type::kFloat64, &fr.time);  // last: marks the frame complete
+  rc.close_checked();
+  rb.close_checked();
+  rt.close_checked();
+}
+
+// What a burst adds to the file: the frame, the pending observable rows,
+// and room for the chunks and index blocks HDF5 allocates with them.
+hsize_t H5mdWriter::burst_bytes(bool with_frame) const {
+  const auto n = static_cast<hsize_t>(n_);
+  hsize_t frame = n * (3 * 8 + 3 * 4 + 3 * 8) + 9 * 8 + 4 * 16;
+  if (layout_ == Layout::kAggregation) frame += n * (4 + 8 + 8) + 3 * 16;
+  const hsize_t rows = pending_.size() * 8 * 48;
+  return (with_frame ? frame + frame / 64 : 0) + rows + (hsize_t{1} << 20);
+}
+
+void H5mdWriter::add_frame(const FrameView& fr) {
+  writing([&] {
+    h5::reserve_space(file_, burst_bytes(true));
+    begin_appending();
+    write_pending();
+    write_frame(fr);
+    flush_file();  // the frame is on disk before the row that declares it complete
+    write_restart_row(fr);
+    flush_file();
+  });
+}
+
+void H5mdWriter::flush() {
+  writing([&] {
+    h5::reserve_space(file_, burst_bytes(false));
+    begin_appending();
+    write_pending();
+    flush_file();
+    h5::release_reserve(file_);
+  });
+}
+
+void H5mdWriter::rename(const std::string& to) {
+  std::filesystem::rename(path_, to);
+  path_ = to;
+}
+
+void H5mdWriter::flush_file() { h5::flush(file_); }
+
+void H5mdWriter::update_scene(const std::string& scene_toml) {
+  if (appending_) throw std::logic_error("update_scene after the first write: SWMR writing forbids it");
+  writing([&] {
+    h5::Handle par = h5::open_group(file_.id(), std::string(kParameters));
+    h5::write_attr(par.id(), "scene", scene_toml);
+    flush_file();
+  });
+}
+
+}  // namespace coolgas

@@ -1,0 +1,115 @@
+// Writes trajectory files in the coolgas H5MD profile (data-schema/h5md-profile.md).
+//
+// Crash safety. Every object is created up front (by walking the profile,
+// h5md_profile.h); then the file is switched to HDF5's single-writer /
+// multiple-reader mode (SWMR), in which the library orders its writes so
+// that the file on disk is consistent at every moment, and the analysis
+// tools may read it while it grows. Writes happen in bursts: add_frame()
+// writes the buffered observables and the frame, flushes, and only then
+// appends the frame's /restart row and flushes again. A /restart row thus
+// marks a frame complete; a process killed at any moment leaves every
+// earlier frame readable and the file resumable (reopen()).
+//
+// Write errors. Each burst first reserves the disk space it needs, so a
+// full disk, a quota or a file-size limit fails before HDF5 writes anything;
+// every HDF5 write, flush and close is checked too. A failure is a
+// WriteError naming the file and the system's reason; the frames before it
+// stay complete. SIGXFSZ
+// is ignored from create()/reopen() on, so a file-size limit makes the write
+// fail with EFBIG instead of killing the process.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "common/hdf5_file.h"
+#include "common/trajectory/layout.h"
+#include "common/trajectory/run_parameters.h"
+#include "common/trajectory/writer_lock.h"
+
+namespace coolgas {
+
+// One row of /observables.
+struct ObservableRow {
+  double time = 0;
+  std::int64_t collisions = 0;
+  std::int64_t below_delta = 0;
+  double kinetic_energy = 0;  // per particle (aggregation: per initial particle)
+  std::array<double, 3> momentum{};
+  // aggregation only
+  std::int64_t aggregates = 0;
+  double mean_mass = 0, largest_mass = 0;
+};
+
+// One dump: N particles in particle-id order. Particle i's position is
+// position[i * position_stride + 0..2] (likewise velocity), so the records of
+// an engine can be written where they are, without a copy.
+struct FrameView {
+  double time = 0;
+  std::int64_t collisions = 0;
+  std::int64_t below_delta = 0;
+  const double* position = nullptr;
+  const std::int32_t* image = nullptr;
+  const double* velocity = nullptr;
+  int position_stride = 3;
+  int velocity_stride = 3;
+  // aggregation only: per slot id (-1: absent), mass and diameter (0 when absent)
+  const std::int32_t* id = nullptr;
+  const double* mass = nullptr;
+  const double* diameter = nullptr;
+};
+
+class H5mdWriter {
+ public:
+  // Creates a new file (fails if it exists unless overwrite). The schema and
+  // program versions of `params` are set here.
+  static H5mdWriter create(const std::string& path, const RunParameters& params, bool overwrite);
+  // Opens an existing file to append after its last complete frame; rows
+  // written after that frame (an interrupted burst) are dropped. InputError
+  // if another process is writing it (writer_lock.h).
+  static H5mdWriter reopen(const std::string& path);
+
+  void add_observables(const ObservableRow& row) { pending_.push_back(row); }
+  // Writes the buffered observables, then the frame, flushes, then its restart row, and flushes.
+  void add_frame(const FrameView& frame);
+  // Writes buffered observables and flushes (end of run).
+  void flush();
+  // Replaces the stored scene text (a resumed run may extend run.t_end).
+  // Only before the first write after create() or reopen(): SWMR writing
+  // forbids changing attributes.
+  void update_scene(const std::string& scene_toml);
+
+  // Renames the file (the simulator writes its first dump under a temporary
+  // name); later errors name the new path.
+  void rename(const std::string& to);
+
+  std::int64_t particles() const { return n_; }
+
+ private:
+  H5mdWriter() = default;
+  void create_objects(const RunParameters& params);
+  void drop_interrupted_burst();
+  void begin_appending();
+  void write_pending();
+  void write_frame(const FrameView& frame);
+  void write_restart_row(const FrameView& frame);
+  void append(std::string_view element, std::int64_t step, double time, h5::Type type, const void* value,
+              int stride = 0);
+  void flush_file();
+  hsize_t burst_bytes(bool with_frame) const;
+  // Runs `body`, turning an HDF5 failure into a WriteError naming the file.
+  template <class F>
+  void writing(F&& body);
+
+  std::string path_;
+  WriterLock lock_;  // declared before file_: released after the file is closed
+  h5::Handle file_;
+  std::int64_t n_ = 0;
+  double box_ = 0;
+  layout::Layout layout_ = layout::Layout::kGas;
+  bool appending_ = false;  // SWMR writing started (or, for an old-format file, first row written)
+  std::vector<ObservableRow> pending_;
+};
+
+}  // namespace coolgas

@@ -1,0 +1,26 @@
+#include "common/trajectory/layout.h"
+
+#include "common/hdf5_file.h"
+
+namespace coolgas::layout {
+
+std::string step_of(std::string_view element) { return std::string(element) + "/step"; }
+std::string time_of(std::string_view element) { return std::string(element) + "/time"; }
+std::string value_of(std::string_view element) { return std::string(element) + "/value"; }
+
+hsize_t complete_dumps(hid_t file) {
+  if (!h5::exists(file, std::string(kRestartTime))) return 0;
+  h5::Handle t = h5::open_dataset(file, std::string(kRestartTime));
+  return h5::shape(t.id()).at(0);
+}
+
+std::optional<double> last_dump_time(hid_t file) {
+  const hsize_t n = complete_dumps(file);
+  if (n == 0) return std::nullopt;
+  h5::Handle t = h5::open_dataset(file, std::string(kRestartTime));
+  return h5::read_row<double>(t.id(), n - 1).at(0);
+}
+
+Layout layout_of(hid_t file) { return h5::exists(file, value_of(kId)) ? Layout::kAggregation : Layout::kGas; }
+
+}  // namespace coolgas::layout

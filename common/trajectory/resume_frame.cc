@@ -1,0 +1,84 @@
+#include "common/trajectory/resume_frame.h"
+
+#include "common/error.h"
+#include "common/hdf5_file.h"
+#include "common/trajectory/layout.h"
+
+namespace coolgas {
+namespace {
+
+using namespace layout;
+
+struct Reader {
+  hid_t file;
+  std::string path;
+
+  [[noreturn]] void fail(const std::string& what) const {
+    throw InputError("cannot resume from '" + path + "': " + what);
+  }
+
+  // Row `row` of an element's value, which must hold `per_row` numbers.
+  template <class T>
+  std::vector<T> row(std::string_view element, hsize_t row, std::size_t per_row) const {
+    const std::string value = value_of(element);
+    if (!h5::exists(file, value)) fail("missing " + value);
+    h5::Handle ds = h5::open_dataset(file, value);
+    const auto dims = h5::shape(ds.id());
+    if (dims.empty() || dims[0] <= row) fail(value + " has no row for the last complete dump");
+    std::vector<T> v = h5::read_row<T>(ds.id(), row);
+    if (v.size() != per_row)
+      fail(value + " holds " + std::to_string(v.size()) + " numbers per dump, expected " + std::to_string(per_row));
+    return v;
+  }
+
+  std::int64_t counter(std::string_view dataset, hsize_t row) const {
+    const std::string d(dataset);
+    if (!h5::exists(file, d)) fail("missing " + d);
+    h5::Handle ds = h5::open_dataset(file, d);
+    if (h5::shape(ds.id()).at(0) <= row) fail(d + " has no row for the last complete dump");
+    return h5::read_row<std::int64_t>(ds.id(), row).at(0);
+  }
+
+  // Slots hold either aggregate i (id i, mass and diameter at least 1) or nothing (id -1).
+  void check_aggregates(const ResumeFrame& r) const {
+    for (std::size_t i = 0; i < r.particles; ++i) {
+      const bool present = r.id[i] >= 0;
+      if ((present && (r.id[i] != std::int32_t(i) || !(r.mass[i] >= 1) || !(r.diameter[i] >= 1))) ||
+          (!present && r.id[i] != kAbsentId))
+        fail("slot " + std::to_string(i) + " of the last dump holds id " + std::to_string(r.id[i]) +
+             " with mass and diameter below 1 or in the wrong slot (ids are slot numbers, -1 when absent)");
+    }
+  }
+};
+
+}  // namespace
+
+ResumeFrame read_resume_frame(const std::string& path) {
+  h5::Handle f = h5::open_file(path, h5::Mode::kReadOnly);
+  const Reader in{f.id(), path};
+  if (!h5::exists(f.id(), std::string(kParameters))) in.fail("missing " + std::string(kParameters));
+  ResumeFrame r;
+  r.params = read_parameters(h5::open_group(f.id(), std::string(kParameters)).id(), path);
+  if (r.params.N < 1) in.fail("/parameters/N = " + std::to_string(r.params.N) + " is not positive");
+  const auto last_time = last_dump_time(f.id());
+  if (!last_time) in.fail("it holds no complete dump");
+  const hsize_t last = complete_dumps(f.id()) - 1;  // rows after it belong to an interrupted burst
+  r.time = *last_time;
+  r.collisions = in.counter(kRestartCollisions, last);
+  r.below_delta = in.counter(kRestartBelowDelta, last);
+  r.particles = static_cast<std::size_t>(r.params.N);
+  const std::size_t n = r.particles;
+  r.position = in.row<double>(kPosition, last, 3 * n);
+  r.velocity = in.row<double>(kVelocity, last, 3 * n);
+  r.image = in.row<std::int32_t>(kImage, last, 3 * n);
+  r.aggregates = layout_of(f.id()) == Layout::kAggregation;
+  if (r.aggregates) {
+    r.id = in.row<std::int32_t>(kId, last, n);
+    r.mass = in.row<double>(kMass, last, n);
+    r.diameter = in.row<double>(kDiameter, last, n);
+    in.check_aggregates(r);
+  }
+  return r;
+}
+
+}  // namespace coolgas

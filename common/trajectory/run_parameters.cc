@@ -1,0 +1,140 @@
+#include "common/trajectory/run_parameters.h"
+
+#include <stdexcept>
+
+#include "common/error.h"
+#include "common/hdf5_file.h"
+#include "common/trajectory/collision_models.h"
+
+// The table names only the fields a row needs; the others keep their member
+// defaults on purpose. GCC 12 warns about that even so.
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+
+namespace coolgas {
+namespace {
+
+using enum ParameterRole;
+
+template <class... F>
+struct Overloaded : F... {
+  using F::operator()...;
+};
+
+std::string text_of(std::int64_t v) { return std::to_string(v); }
+std::string text_of(double v) { return format_number(v); }
+std::string text_of(const std::string& v) { return v; }
+
+// Attributes of the class the member needs; anything else would fail deep in
+// HDF5's conversion with a message naming nothing.
+H5T_class_t class_of(const ParameterField::Member& m) {
+  return std::visit(Overloaded{[](std::int64_t RunParameters::*) { return H5T_INTEGER; },
+                               [](std::string RunParameters::*) { return H5T_STRING; },
+                               [](auto) { return H5T_FLOAT; }},
+                    m);
+}
+
+bool present_for(const RunParameters& p, const ParameterField& f) {
+  return !is_model_specific(f) || model_uses(p.model, f.name);
+}
+
+void read_field(hid_t g, const std::string& path, const ParameterField& f, RunParameters& p) {
+  const std::string name(f.name);
+  if (!h5::has_attr(g, name)) throw InputError(path + ": not a coolgas trajectory: missing /parameters attribute '" + name + "'");
+  if (h5::attr_class(g, name) != class_of(f.member))
+    throw InputError(path + ": /parameters attribute '" + name + "' has the wrong type (expected " +
+                     (class_of(f.member) == H5T_INTEGER ? "an integer" : class_of(f.member) == H5T_STRING ? "a string" : "a float") +
+                     ")");
+  std::visit(Overloaded{[&](std::int64_t RunParameters::*m) { p.*m = h5::read_attr_int(g, name); },
+                        [&](double RunParameters::*m) { p.*m = h5::read_attr_double(g, name); },
+                        [&](std::string RunParameters::*m) { p.*m = h5::read_attr_string(g, name); },
+                        [&](std::optional<double> RunParameters::*m) { p.*m = h5::read_attr_double(g, name); }},
+             f.member);
+}
+
+}  // namespace
+
+const std::vector<ParameterField>& run_parameter_fields() {
+  // In the order of data-schema/h5md-profile.md; the provenance of the
+  // tools' tables lists the kPhysics rows in this order too.
+  static const std::vector<ParameterField> fields = {
+      {"schema_version", &RunParameters::schema_version, "profile version", kRecord, 1, 1},
+      {"program_version", &RunParameters::program_version, "simulator version", kRecord},
+      {"scene", &RunParameters::scene_toml, "effective scene (TOML)", kRecord},
+      {"seed", &RunParameters::seed, "random seed", kSeed},
+      {"N", &RunParameters::N, "number of particles", kPhysics, 1, 1},
+      {"L", &RunParameters::L, "box side", kPhysics},
+      {"phi", &RunParameters::phi, "volume fraction", kPhysics},
+      {"T0", &RunParameters::T0, "initial temperature", kPhysics},
+      {"model", &RunParameters::model, "collision model", kPhysics},
+      {"r0", &RunParameters::r0, "coefficient of restitution", kPhysics},
+      {"delta", &RunParameters::delta, "elastic below this normal speed", kPhysics},
+      {"viscoelastic_b", &RunParameters::viscoelastic_b, "viscoelastic material constant b", kPhysics, 2},
+  };
+  return fields;
+}
+
+bool is_model_specific(const ParameterField& f) {
+  return std::holds_alternative<std::optional<double> RunParameters::*>(f.member);
+}
+
+std::optional<std::string> field_text(const RunParameters& p, const ParameterField& f) {
+  return std::visit(Overloaded{[&](std::optional<double> RunParameters::*m) -> std::optional<std::string> {
+                                 if (!(p.*m)) return std::nullopt;
+                                 return text_of(*(p.*m));
+                               },
+                               [&](auto m) -> std::optional<std::string> { return text_of(p.*m); }},
+                    f.member);
+}
+
+void write_parameters(hid_t g, const RunParameters& p) {
+  if (!find_collision_model(p.model)) throw std::logic_error("writing a run of unknown model '" + p.model + "'");
+  for (const ParameterField& f : run_parameter_fields()) {
+    const std::string name(f.name);
+    const bool want = present_for(p, f);
+    std::visit(Overloaded{[&](std::optional<double> RunParameters::*m) {
+                            if (want != (p.*m).has_value())
+                              throw std::logic_error("parameter " + name + (want ? " missing" : " set") +
+                                                     " for model " + p.model);
+                            if (want) h5::write_attr(g, name, *(p.*m));
+                          },
+                          [&](auto m) { h5::write_attr(g, name, p.*m); }},
+               f.member);
+  }
+}
+
+RunParameters read_parameters(hid_t g, const std::string& path) {
+  RunParameters p;
+  p.r0.reset();  // the defaults are elastic spheres'; a file says what it has
+  p.delta.reset();
+  for (const ParameterField& f : run_parameter_fields()) {
+    if (f.name == "model") {
+      read_field(g, path, f, p);
+      if (!find_collision_model(p.model))
+        throw InputError(path + ": /parameters/model '" + p.model + "' is not known (known: " +
+                         collision_model_names() + ")");
+      break;
+    }
+  }
+  for (const ParameterField& f : run_parameter_fields())
+    if (f.name != "model" && present_for(p, f)) read_field(g, path, f, p);
+  return p;
+}
+
+std::optional<std::string> physics_difference(const RunParameters& a, const RunParameters& b) {
+  for (const ParameterField& f : run_parameter_fields()) {
+    if (f.role != kPhysics) continue;
+    const auto x = field_text(a, f), y = field_text(b, f);
+    if (x != y) return std::string(f.name) + " = " + x.value_or("(absent)") + " vs " + y.value_or("(absent)");
+  }
+  return std::nullopt;
+}
+
+Provenance physics_provenance(const RunParameters& p) {
+  Provenance out;
+  for (const ParameterField& f : run_parameter_fields())
+    if (f.role == kPhysics)
+      if (auto t = field_text(p, f)) out.emplace_back(std::string(f.name), *t);
+  return out;
+}
+
+}  // namespace coolgas

@@ -1,0 +1,73 @@
+// The run's parameters as one table: every /parameters attribute of a
+// trajectory, with its type, meaning and role. The writer, the readers (run
+// info, resume), the ensemble check, the provenance of the tools' tables and
+// the validator's profile all walk run_parameter_fields(); a new parameter is
+// a member here and a row in run_parameters.cc.
+#pragma once
+#include <hdf5.h>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "common/tsv.h"
+
+namespace coolgas {
+
+struct RunParameters {
+  std::int64_t schema_version = 0;  // set by the writer from the model table
+  std::string program_version;      // set by the writer: the coolgas-simulate that wrote the file
+  std::string scene_toml;           // the complete effective scene
+  std::int64_t seed = 0;
+  std::int64_t N = 0;
+  double L = 0, phi = 0, T0 = 0;
+  std::string model = "elastic";
+  // Model-specific (collision_models.h): present exactly when the model uses
+  // them. The defaults are those of the default model, elastic spheres.
+  std::optional<double> r0 = 1.0, delta = 0.0, viscoelastic_b;
+};
+
+// kPhysics: defines "the same physics"; runs of one ensemble agree in it.
+// kSeed: what the runs of an ensemble differ in.
+// kRecord: how the file was made (scene text, versions); not compared.
+enum class ParameterRole { kPhysics, kSeed, kRecord };
+
+struct ParameterField {
+  using Member = std::variant<std::int64_t RunParameters::*, double RunParameters::*, std::string RunParameters::*,
+                              std::optional<double> RunParameters::*>;
+  std::string_view name;  // the /parameters attribute
+  Member member;          // an optional<double> member is model-specific
+  std::string_view meaning;
+  ParameterRole role = ParameterRole::kPhysics;
+  int since = 1;                         // schema version that added it
+  std::optional<std::int64_t> at_least;  // lower bound the validator checks (integers)
+};
+
+const std::vector<ParameterField>& run_parameter_fields();
+
+// Present for every model, or only for those that list it (collision_models.h).
+bool is_model_specific(const ParameterField& f);
+// The field's value as text ("32", "0.1", "inelastic"); nothing when absent.
+std::optional<std::string> field_text(const RunParameters& p, const ParameterField& f);
+
+// Writes every field as an attribute of the open /parameters group.
+// Throws std::logic_error if a model-specific field is present for a model
+// that does not use it, or missing for one that does.
+void write_parameters(hid_t group, const RunParameters& p);
+// Reads them back; InputError naming `path` and the attribute when one is
+// missing or of the wrong type, or the model is unknown. A model-specific
+// attribute of a model that does not use it (version 2 wrote r0 = 1 for
+// viscoelastic files) is ignored.
+RunParameters read_parameters(hid_t group, const std::string& path);
+
+// The first field of role kPhysics in which a and b differ, e.g.
+// "L = 32 vs 48" or "viscoelastic_b = 0.1 vs 0.9"; nothing if none does.
+std::optional<std::string> physics_difference(const RunParameters& a, const RunParameters& b);
+
+// The kPhysics fields present, in table order, for a table's provenance block.
+Provenance physics_provenance(const RunParameters& p);
+
+}  // namespace coolgas

@@ -1,0 +1,118 @@
+// The trajectory file survives what real runs meet (common/trajectory/
+// h5md_writer.h): SIGKILL at any moment leaves every earlier dump valid and
+// the file resumable; the analysis tools read a file that is still being
+// written; a write that fails (here: a file-size limit, as a full disk
+// would) is one line naming the file and the cause, exit code 5, the earlier
+// dumps intact, and --resume completes the run once the limit is lifted.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "common/error.h"
+#include "common/hdf5_file.h"
+#include "tests/support/run_command.h"
+
+namespace coolgas {
+namespace {
+
+using test::bin;
+using test::run_command;
+
+// 5968 particles (a frame is 358 kB), dumps 10 per decade from t = 0.01 to
+// 300: about 1.5 s, 17 MB.
+constexpr const char* kScene =
+    "[system]\nL = 25\nphi = 0.2\nseed = 3\nequilibrate = 0.5\n"
+    "[collision]\nmodel = \"inelastic\"\nr0 = 0.9\ndelta = 1e-4\n"
+    "[run]\nt_end = 300\n[output]\ndumps_per_decade = 10\n";
+
+std::string write_scene(const std::string& dir) {
+  const std::string path = dir + "/scene.toml";
+  run_command("printf '%s' '" + std::string(kScene) + "' > " + path);
+  return path;
+}
+
+std::vector<double> dump_times(const std::string& path) {
+  h5::Handle f = h5::open_file(path, h5::Mode::kReadOnly);
+  h5::Handle t = h5::open_dataset(f.id(), "restart/time");
+  return h5::read_all<double>(t.id());
+}
+
+std::string validate(const std::string& path) {
+  const auto v = run_command(bin("coolgas-validate") + " " + path);
+  return v.exit_code == 0 ? "" : v.out + v.err;
+}
+
+class TrajectorySafety : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir = test::scratch_dir("trajectory_safety");
+    scene = write_scene(dir);
+    const auto r = run_command(bin("coolgas-simulate") + " " + scene + " -q -o " + dir + "/whole.h5");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    whole = dump_times(dir + "/whole.h5");
+  }
+  std::string dir, scene;
+  std::vector<double> whole;  // the dump times of the uninterrupted run
+};
+
+// Kills spread over the run, from set-up to the last dumps: whatever was
+// being written at that moment, the dumps before it are complete and valid,
+// and --resume runs the rest (it has work to do: none of these kills comes
+// after the last dump).
+TEST_F(TrajectorySafety, SigkillAtAnyMomentLeavesEveryEarlierDumpValidAndResumable) {
+  int files = 0;
+  for (const char* delay : {"0.3", "0.5", "0.7", "0.9", "1.1"}) {
+    const std::string out = dir + "/killed_" + delay + ".h5";
+    const auto k = run_command("(" + bin("coolgas-simulate") + " " + scene + " -q -o " + out + " & p=$!; sleep " +
+                               delay + "; kill -KILL $p; wait $p)");
+    if (k.exit_code == 0) continue;  // the run finished first: nothing to test at this delay
+    if (run_command("test -e " + out).exit_code != 0) continue;  // killed before its first dump
+    ++files;
+    EXPECT_EQ(validate(out), "") << "killed after " << delay << " s";
+    const auto before = dump_times(out);
+    ASSERT_LT(before.size(), whole.size());
+    EXPECT_EQ(before, std::vector<double>(whole.begin(), whole.begin() + long(before.size())));
+    const auto r = run_command(bin("coolgas-simulate") + " -q --resume " + out);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(validate(out), "") << "resumed after a kill at " << delay << " s";
+    EXPECT_EQ(dump_times(out), whole);
+  }
+  EXPECT_GE(files, 3) << "too few kills landed during the run to test anything";
+}
+
+// A reader opens the file while coolgas-simulate writes it (HDF5 SWMR) and
+// sees the complete dumps so far; a second writer is refused.
+TEST_F(TrajectorySafety, ToolsReadAFileWhileItIsWrittenAndASecondWriterIsRefused) {
+  const std::string out = dir + "/live.h5";
+  const auto r = run_command(
+      "(" + bin("coolgas-simulate") + " " + scene + " -q -o " + out + " --set run.t_end=1e5 & p=$!; sleep 1; " +
+      bin("coolgas-validate") + " " + out + " && " + bin("coolgas-energy") + " " + out + " | tail -1 && " +
+      bin("coolgas-clusters") + " --series " + out + " | tail -1; " + bin("coolgas-simulate") + " -q --resume " + out +
+      "; echo resume=$?; kill -KILL $p; wait $p)");
+  EXPECT_NE(r.out.find(": valid ("), std::string::npos) << r.out << r.err;
+  EXPECT_NE(r.out.find("resume=2"), std::string::npos) << r.out << r.err;
+  EXPECT_NE(r.err.find("is being written by another coolgas-simulate"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+}
+
+// ulimit -f stands for a full disk or quota: SIGXFSZ is ignored, so the write
+// fails with EFBIG and the run stops with one line and exit code 5.
+TEST_F(TrajectorySafety, AFailedWriteIsOneLineExit5AndResumeCompletesTheRun) {
+  const std::string out = dir + "/limited.h5";
+  const auto r = run_command("ulimit -f 8000; " + bin("coolgas-simulate") + " " + scene + " -q -o " + out);
+  EXPECT_EQ(r.exit_code, kExitWrite) << r.err;
+  EXPECT_EQ(test::line_count(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("cannot write '" + out + "': File too large"), std::string::npos) << r.err;
+  EXPECT_EQ(validate(out), "");
+  const auto before = dump_times(out);
+  ASSERT_GT(before.size(), 2u);
+  ASSERT_LT(before.size(), whole.size());
+  const auto resumed = run_command(bin("coolgas-simulate") + " -q --resume " + out);
+  EXPECT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_EQ(validate(out), "");
+  EXPECT_EQ(dump_times(out), whole);
+}
+
+}  // namespace
+}  // namespace coolgas

@@ -1,0 +1,197 @@
+// The run-parameter and collision-model tables (common/trajectory/
+// run_parameters.h, collision_models.h): every field is either compared by
+// the ensemble check or listed here as not defining the physics; a file holds
+// exactly the table's attributes for its model; "not applicable" is absent.
+#include "common/trajectory/run_parameters.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+
+#include "common/error.h"
+#include "common/hdf5_file.h"
+#include "common/trajectory/collision_models.h"
+#include "common/trajectory/h5md_writer.h"
+#include "common/trajectory/layout.h"
+#include "common/trajectory/run_info.h"
+#include "tests/support/run_command.h"
+
+namespace coolgas {
+namespace {
+
+// The fields that may differ between the runs of one ensemble. Anything
+// else in the table must be compared: a new field is either physics or
+// added here on purpose.
+const std::set<std::string> kNotCompared = {"schema_version", "program_version", "scene", "seed"};
+
+RunParameters params_for(const std::string& model) {
+  RunParameters p;
+  p.scene_toml = "[system]\nN = 2\n";
+  p.seed = 3;
+  p.N = 2;
+  p.L = 5;
+  p.phi = 0.008;
+  p.T0 = 0.5;
+  p.model = model;
+  p.r0.reset();
+  p.delta.reset();
+  if (model_uses(model, "r0")) p.r0 = model == "elastic" ? 1.0 : 0.5;
+  if (model_uses(model, "delta")) p.delta = model == "elastic" ? 0.0 : 1e-4;
+  if (model_uses(model, "viscoelastic_b")) p.viscoelastic_b = 0.1;
+  return p;
+}
+
+// Changes one field of p, whatever its type.
+void perturb(RunParameters& p, const ParameterField& f) {
+  std::visit([&](auto m) {
+    using T = std::decay_t<decltype(p.*m)>;
+    if constexpr (std::is_same_v<T, std::string>) p.*m += "x";
+    else if constexpr (std::is_same_v<T, std::optional<double>>) p.*m = 2 * *(p.*m) + 1;
+    else p.*m = 2 * (p.*m) + 1;
+  }, f.member);
+}
+
+// A model in whose files the field is present.
+std::string model_having(const ParameterField& f) {
+  for (const auto& m : collision_models())
+    if (!is_model_specific(f) || model_uses(m.name, f.name)) return std::string(m.name);
+  return "";
+}
+
+TEST(RunParameters, EveryFieldIsComparedOrListedAsNotDefiningThePhysics) {
+  std::set<std::string> seen;
+  for (const ParameterField& f : run_parameter_fields()) {
+    const std::string name(f.name);
+    seen.insert(name);
+    const std::string model = model_having(f);
+    ASSERT_FALSE(model.empty()) << name << " is present in no model's files";
+    const RunParameters a = params_for(model);
+    RunParameters b = a;
+    if (name == "model") b = params_for(model == "elastic" ? "inelastic" : "elastic");
+    else perturb(b, f);
+    const auto d = physics_difference(a, b);
+    if (kNotCompared.count(name)) {
+      EXPECT_FALSE(d) << name << " is compared but listed as not defining the physics: " << *d;
+      EXPECT_NE(f.role, ParameterRole::kPhysics) << name;
+    } else {
+      ASSERT_TRUE(d) << name << " differs but the ensemble check does not see it";
+      EXPECT_EQ(d->substr(0, name.size() + 3), name + " = ") << *d;
+    }
+  }
+  for (const std::string& n : kNotCompared) EXPECT_TRUE(seen.count(n)) << n << " is listed but not a field";
+}
+
+TEST(RunParameters, ViscoelasticRunsWithDifferentBAreDifferentPhysics) {
+  RunParameters a = params_for("viscoelastic"), b = a;
+  a.viscoelastic_b = 0.1;
+  b.viscoelastic_b = 0.9;
+  EXPECT_EQ(physics_difference(a, b), "viscoelastic_b = 0.1 vs 0.9");
+  const Provenance p = physics_provenance(a);
+  EXPECT_NE(std::find(p.begin(), p.end(), std::pair<std::string, std::string>{"viscoelastic_b", "0.1"}), p.end());
+  for (const auto& [k, v] : p) EXPECT_NE(k, "r0") << "viscoelastic spheres have no constant r0";
+}
+
+// Which attributes a group holds, by name.
+std::set<std::string> attribute_names(hid_t group) {
+  H5O_info_t info{};
+  EXPECT_GE(H5Oget_info2(group, &info, H5O_INFO_NUM_ATTRS), 0);
+  std::set<std::string> names;
+  for (hsize_t i = 0; i < info.num_attrs; ++i) {
+    char name[256] = {};
+    H5Aget_name_by_idx(group, ".", H5_INDEX_CRT_ORDER, H5_ITER_NATIVE, i, name, sizeof name, H5P_DEFAULT);
+    names.insert(name);
+  }
+  return names;
+}
+
+TEST(RunParameters, EachModelsFileHoldsExactlyItsFieldsAndReadsThemBack) {
+  for (const CollisionModelSpec& m : collision_models()) {
+    const std::string model(m.name);
+    const std::string path = test::scratch_dir("run_parameters_" + model) + "/run.h5";
+    const RunParameters written = params_for(model);
+    { H5mdWriter::create(path, written, true); }
+    h5::Handle f = h5::open_file(path, h5::Mode::kReadOnly);
+    h5::Handle g = h5::open_group(f.id(), std::string(layout::kParameters));
+    std::set<std::string> expected;
+    for (const ParameterField& field : run_parameter_fields())
+      if (!is_model_specific(field) || model_uses(model, field.name)) expected.insert(std::string(field.name));
+    EXPECT_EQ(attribute_names(g.id()), expected) << model;
+    EXPECT_EQ(h5::read_attr_int(g.id(), "schema_version"), m.schema_version) << model;
+    const RunParameters read = read_parameters(g.id(), path);
+    for (const ParameterField& field : run_parameter_fields()) {
+      if (field.role == ParameterRole::kRecord) continue;
+      EXPECT_EQ(field_text(read, field), field_text(written, field)) << model << " " << field.name;
+    }
+    EXPECT_EQ(read.scene_toml, written.scene_toml);
+  }
+}
+
+TEST(RunParameters, NotApplicableIsAbsentNotASentinel) {
+  RunParameters p = params_for("viscoelastic");
+  p.r0 = 1.0;  // what version 2 wrote
+  const std::string path = test::scratch_dir("run_parameters_sentinel") + "/run.h5";
+  EXPECT_THROW(H5mdWriter::create(path, p, true), std::logic_error);
+  p.r0.reset();
+  p.delta.reset();
+  EXPECT_THROW(H5mdWriter::create(path, p, true), std::logic_error);  // viscoelastic files hold delta
+  // A version-2 viscoelastic file carries r0 = 1; it reads as absent.
+  {
+    H5mdWriter::create(path, params_for("viscoelastic"), true);
+    h5::Handle f = h5::open_file(path, h5::Mode::kReadWrite);
+    h5::Handle g = h5::open_group(f.id(), std::string(layout::kParameters));
+    h5::write_attr(g.id(), "r0", 1.0);
+    h5::write_attr(g.id(), "schema_version", std::int64_t{2});
+  }
+  EXPECT_FALSE(read_run_info(path).params.r0);
+  { H5mdWriter::create(path, params_for("aggregation"), true); }
+  const RunParameters agg = read_run_info(path).params;
+  EXPECT_FALSE(agg.r0);
+  EXPECT_FALSE(agg.delta);
+}
+
+TEST(RunParameters, WrongTypeOrUnknownModelIsAnInputErrorNamingTheAttribute) {
+  const std::string path = test::scratch_dir("run_parameters_wrong") + "/run.h5";
+  { H5mdWriter::create(path, params_for("inelastic"), true); }
+  {
+    h5::Handle f = h5::open_file(path, h5::Mode::kReadWrite);
+    h5::Handle g = h5::open_group(f.id(), std::string(layout::kParameters));
+    h5::write_attr(g.id(), "N", std::string("two"));
+  }
+  try {
+    read_run_info(path);
+    FAIL() << "a string N was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("attribute 'N' has the wrong type"), std::string::npos) << e.what();
+  }
+  {
+    h5::Handle f = h5::open_file(path, h5::Mode::kReadWrite);
+    h5::Handle g = h5::open_group(f.id(), std::string(layout::kParameters));
+    h5::write_attr(g.id(), "model", std::string("sticky"));
+  }
+  try {
+    read_run_info(path);
+    FAIL() << "an unknown model was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("'sticky' is not known"), std::string::npos) << e.what();
+  }
+}
+
+TEST(CollisionModels, ParametersAreModelSpecificFieldsAndVersionsAreInTheProfile) {
+  std::set<std::string_view> names;
+  for (const CollisionModelSpec& m : collision_models()) {
+    EXPECT_TRUE(names.insert(m.name).second) << m.name << " twice";
+    EXPECT_EQ(find_collision_model(m.name), &m);
+    EXPECT_GE(m.schema_version, 1);
+    for (std::string_view p : m.parameters) {
+      const auto& fields = run_parameter_fields();
+      const auto f = std::find_if(fields.begin(), fields.end(), [&](const ParameterField& x) { return x.name == p; });
+      ASSERT_NE(f, fields.end()) << m.name << " lists " << p << ", which is no field";
+      EXPECT_TRUE(is_model_specific(*f)) << p;
+    }
+  }
+  EXPECT_FALSE(find_collision_model("sticky"));
+}
+
+}  // namespace
+}  // namespace coolgas
