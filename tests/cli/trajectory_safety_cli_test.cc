@@ -6,6 +6,7 @@
 // dumps intact, and --resume completes the run once the limit is lifted.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -48,12 +49,15 @@ class TrajectorySafety : public ::testing::Test {
   void SetUp() override {
     dir = test::scratch_dir("trajectory_safety");
     scene = write_scene(dir);
+    const auto start = std::chrono::steady_clock::now();
     const auto r = run_command(bin("coolgas-simulate") + " " + scene + " -q -o " + dir + "/whole.h5");
+    wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     ASSERT_EQ(r.exit_code, 0) << r.err;
     whole = dump_times(dir + "/whole.h5");
   }
   std::string dir, scene;
   std::vector<double> whole;  // the dump times of the uninterrupted run
+  double wall = 0;            // its wall time [s]: kills are placed as fractions of it, so a slow machine tests the same
 };
 
 // Kills spread over the run, from set-up to the last dumps: whatever was
@@ -62,8 +66,9 @@ class TrajectorySafety : public ::testing::Test {
 // after the last dump).
 TEST_F(TrajectorySafety, SigkillAtAnyMomentLeavesEveryEarlierDumpValidAndResumable) {
   int files = 0;
-  for (const char* delay : {"0.3", "0.5", "0.7", "0.9", "1.1"}) {
-    const std::string out = dir + "/killed_" + delay + ".h5";
+  for (const double fraction : {0.2, 0.35, 0.5, 0.65, 0.8}) {
+    const std::string delay = std::to_string(fraction * wall);
+    const std::string out = dir + "/killed_" + std::to_string(fraction) + ".h5";
     const auto k = run_command("(" + bin("coolgas-simulate") + " " + scene + " -q -o " + out + " & p=$!; sleep " +
                                delay + "; kill -KILL $p; wait $p)");
     if (k.exit_code == 0) continue;  // the run finished first: nothing to test at this delay
@@ -82,11 +87,12 @@ TEST_F(TrajectorySafety, SigkillAtAnyMomentLeavesEveryEarlierDumpValidAndResumab
 }
 
 // A reader opens the file while coolgas-simulate writes it (HDF5 SWMR) and
-// sees the complete dumps so far; a second writer is refused.
+// sees the complete dumps so far; a second writer is refused. (t_end = 1e8
+// keeps the writer busy, however fast the machine, until it is killed.)
 TEST_F(TrajectorySafety, ToolsReadAFileWhileItIsWrittenAndASecondWriterIsRefused) {
   const std::string out = dir + "/live.h5";
   const auto r = run_command(
-      "(" + bin("coolgas-simulate") + " " + scene + " -q -o " + out + " --set run.t_end=1e5 & p=$!; sleep 1; " +
+      "(" + bin("coolgas-simulate") + " " + scene + " -q -o " + out + " --set run.t_end=1e8 & p=$!; sleep 1; " +
       bin("coolgas-validate") + " " + out + " && " + bin("coolgas-energy") + " " + out + " | tail -1 && " +
       bin("coolgas-clusters") + " --series " + out + " | tail -1; " + bin("coolgas-simulate") + " -q --resume " + out +
       "; echo resume=$?; kill -KILL $p; wait $p)");
