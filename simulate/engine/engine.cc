@@ -187,7 +187,7 @@ void Engine<Rule>::order_by_space() {
     const CellCoord c = grid_.coord(grid_.cell_of(m_[i].r.x, m_[i].r.y, m_[i].r.z));
     const std::uint64_t cell_key =
         morton_key(std::uint32_t(c.x) >> coarse, std::uint32_t(c.y) >> coarse, std::uint32_t(c.z) >> coarse);
-    keys[i] = cell_key << 32 | i;  // i is the id: called right after synchronize()
+    keys[i] = cell_key << 32 | i;  // i is the id: called right after move_all_to_now()
   }
   std::sort(keys.begin(), keys.end());
   std::vector<std::int32_t> order(m_.size());
