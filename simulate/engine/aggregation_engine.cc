@@ -85,10 +85,7 @@ void AggregationEngine::save(StateWriter& out) const {
 }
 
 Frame AggregationEngine::frame() const {
-  Frame f;
-  f.time = now_;
-  f.collisions = c_.collisions;
-  f.below_delta = c_.below_delta;
+  Frame f(now_, c_);
   const std::size_t n = m_.size();
   f.position.resize(n);
   f.velocity.resize(n);
@@ -103,17 +100,6 @@ Frame AggregationEngine::frame() const {
   f.mass = mass_;
   f.diameter = diam_;
   return f;
-}
-
-Particles AggregationEngine::snapshot() const {
-  Frame f = frame();
-  Particles p;
-  p.L = L_;
-  p.r = std::move(f.position);
-  p.v = std::move(f.velocity);
-  p.image = std::move(f.image);
-  p.t.assign(p.r.size(), now_);
-  return p;
 }
 
 void AggregationEngine::advance(int i) {
@@ -318,10 +304,7 @@ Observables AggregationEngine::observables() const {
     for (int d = 0; d < 3; ++d) p[d].add(mi * m_[i].v[d]);
   }
   a.mean_mass = a.aggregates ? total / double(a.aggregates) : 0;
-  Observables o;
-  o.time = now_;
-  o.collisions = c_.collisions;
-  o.below_delta = c_.below_delta;
+  Observables o(now_, c_);
   o.kinetic_energy = energy.value() / double(m_.size());
   o.momentum = {p[0].value(), p[1].value(), p[2].value()};
   o.aggregates = a;

@@ -70,8 +70,7 @@ class AggregationEngine final : public EngineBase {
   Frame frame() const override;
   void save(StateWriter& out) const override;
 
-  // For tests: the particles at now() (t = now()), and every merge logged.
-  Particles snapshot() const;
+  // For tests: every merge logged; for benchmarks: calendar years started.
   void record_collisions(std::vector<CollisionRecord>* log) { log_ = log; }
   std::int64_t calendar_years() const { return calendar_.years(); }
 

@@ -99,10 +99,7 @@ Observables Engine<Rule>::observables() const {
     energy.add(0.5 * dot(v, v));
     for (int d = 0; d < 3; ++d) p[d].add(v[d]);
   }
-  Observables o;
-  o.time = now_;
-  o.collisions = c_.collisions;
-  o.below_delta = c_.below_delta;
+  Observables o(now_, c_);
   o.kinetic_energy = energy.value() / double(m_.size());
   o.momentum = {p[0].value(), p[1].value(), p[2].value()};
   return o;
@@ -110,10 +107,7 @@ Observables Engine<Rule>::observables() const {
 
 template <class Rule>
 Frame Engine<Rule>::frame() const {
-  Frame f;
-  f.time = now_;
-  f.collisions = c_.collisions;
-  f.below_delta = c_.below_delta;
+  Frame f(now_, c_);
   const std::size_t n = m_.size();
   f.position.resize(n);
   f.velocity.resize(n);
@@ -126,18 +120,6 @@ Frame Engine<Rule>::frame() const {
     f.velocity[id] = m_[i].v;
   }
   return f;
-}
-
-template <class Rule>
-Particles Engine<Rule>::snapshot() const {
-  Frame f = frame();
-  Particles p;
-  p.L = L_;
-  p.r = std::move(f.position);
-  p.v = std::move(f.velocity);
-  p.image = std::move(f.image);
-  p.t.assign(p.r.size(), now_);
-  return p;
 }
 
 template <class Rule>

@@ -78,8 +78,6 @@ class Engine final : public EngineBase {
   Frame frame() const override;
   void save(StateWriter& out) const override;
 
-  // For tests and set-up: the particles at now() in id order (t = now()).
-  Particles snapshot() const;
   // For tests: when set, every collision is appended.
   void record_collisions(std::vector<CollisionRecord>* log) { log_ = log; }
   // For benchmarks: calendar years started.

@@ -64,6 +64,7 @@ struct AggregateStats {
 };
 
 struct Observables {
+  Observables(double t, const EngineCounters& c) : time(t), collisions(c.collisions), below_delta(c.below_delta) {}
   double time = 0;
   std::int64_t collisions = 0, below_delta = 0;
   double kinetic_energy = 0;  // Σ ½ m v² / N over the N initial particles, summed in id order with compensation
@@ -76,6 +77,7 @@ struct Observables {
 // id, mass and diameter are filled only by engines whose particles change
 // (aggregation: per slot; id -1 and mass 0 in an empty slot).
 struct Frame {
+  Frame(double t, const EngineCounters& c) : time(t), collisions(c.collisions), below_delta(c.below_delta) {}
   double time = 0;
   std::int64_t collisions = 0, below_delta = 0;
   std::vector<Vec3> position, velocity;

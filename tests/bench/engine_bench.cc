@@ -6,8 +6,11 @@
 // Rates are given per second of wall time and per second of this process's
 // CPU time: on an idle machine they agree; on a shared one the CPU figure is
 // the engine's own speed.
-// usage: engine_bench [W1|W2|all] [N] [collisions_per_particle] [repeats]
-// (repeats: runs of each workload, then a line with the best, median and worst)
+// usage: engine_bench [W1|W2|all] [N] [collisions_per_particle] [repeats] [checkpoint_seconds]
+// (repeats: runs of each workload, then a line with the best, median and worst;
+// checkpoint_seconds > 0: a checkpoint of the run (simulate/run/checkpoint.h)
+// is written that often, to a scratch file under /tmp, so that the cost of
+// the periodic checkpoint is measured as a ratio against 0)
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -21,6 +24,7 @@
 #include <vector>
 
 #include "simulate/engine/engine.h"
+#include "simulate/run/checkpoint.h"
 #include "simulate/start/initial_state.h"
 #include "tests/bench/process_stats.h"
 
@@ -38,6 +42,8 @@ std::unique_ptr<coolgas::Engine<Rule>> engine_for(const coolgas::Scene& s, const
 
 // One run from a fresh start; prints its line and returns collisions per
 // second of wall time.
+double g_checkpoint_seconds = 0;
+
 template <class Rule>
 double run(const char* name, const coolgas::Scene& s, const Rule& rule, double per_particle) {
   using clock = std::chrono::steady_clock;
@@ -50,16 +56,29 @@ double run(const char* name, const coolgas::Scene& s, const Rule& rule, double p
   const auto target = static_cast<std::int64_t>(per_particle * double(s.N) / 2.0);  // two particles per collision
   const auto t0 = clock::now();
   const double cpu0 = cpu_seconds();
-  while (e->counters().collisions < target) e->run_until(e->now() * 1.05 + 0.1, 1 << 20, nullptr);
+  const std::string scratch = "/tmp/engine_bench_" + std::to_string(getpid()) + ".h5";
+  auto last_checkpoint = clock::now();
+  int checkpoints = 0;
+  while (e->counters().collisions < target) {
+    e->run_until(e->now() * 1.05 + 0.1, 1 << 20, nullptr);
+    if (g_checkpoint_seconds > 0 &&
+        std::chrono::duration<double>(clock::now() - last_checkpoint).count() >= g_checkpoint_seconds) {
+      coolgas::write_checkpoint(scratch, s, *e, 0.0, {});
+      last_checkpoint = clock::now();
+      ++checkpoints;
+    }
+  }
+  if (checkpoints > 0) std::remove(coolgas::checkpoint_path(scratch).c_str());
   const double secs = std::chrono::duration<double>(clock::now() - t0).count();
   const double cpu = cpu_seconds() - cpu0;
   const auto& c = e->counters();
   std::printf("%s\tN=%lld\tphi=%.3f\tcollisions=%lld\tt=%.4g\twall=%.2fs\tcollisions/s=%.0f\tper_cpu_s=%.0f"
-              "\tevents/collision=%.2f\tstale/collision=%.2f\tpeak_bytes/particle=%.0fB\tsetup=%.2fs\tcalendar_years=%lld\n",
+              "\tevents/collision=%.2f\tstale/collision=%.2f\tpeak_bytes/particle=%.0fB\tsetup=%.2fs\tcalendar_years=%lld"
+              "\tcheckpoints=%d\n",
               name, (long long)s.N, s.phi, (long long)c.collisions, e->now(), secs, double(c.collisions) / secs,
               double(c.collisions) / cpu,
               double(c.events) / double(c.collisions), double(c.stale) / double(c.collisions),
-              (status_bytes("VmHWM:") - baseline) / double(s.N), setup, (long long)e->calendar_years());
+              (status_bytes("VmHWM:") - baseline) / double(s.N), setup, (long long)e->calendar_years(), checkpoints);
   std::fflush(stdout);
   return double(c.collisions) / secs;
 }
@@ -118,6 +137,7 @@ int main(int argc, char** argv) {
   const std::int64_t n = argc > 2 ? std::atoll(argv[2]) : 108000;
   const double per = argc > 3 ? std::atof(argv[3]) : 50;
   const int times = argc > 4 ? std::atoi(argv[4]) : 1;
+  g_checkpoint_seconds = argc > 5 ? std::atof(argv[5]) : 0;
   if (which == "W1" || which == "all") repeat("W1", workload(false, n), coolgas::ElasticRule{}, per, times);
   if (which == "W2" || which == "all")
     repeat("W2", workload(true, n), coolgas::ConstantRestitutionRule{0.1, 1e-3}, per, times);

@@ -23,7 +23,7 @@ using test::bin;
 using test::run_command;
 using test::simulate;
 
-// Clusters form within t ~ 50; about 2 s of dynamics on one core.
+// A cooling, clustering gas; under a second of dynamics on one core.
 const char* kScene = R"([system]
 N = 8000
 phi = 0.2
