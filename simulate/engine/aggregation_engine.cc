@@ -175,7 +175,7 @@ Event AggregationEngine::find_event(int i) const {
   double best = exit.time;
   int partner = -1;
   for_each_neighbour_cell(grid_->cells_per_side(), L_, grid_->coord(grid_->cell(i)),
-                          [&](int cell, const Vec3& shift) { scan_cell(i, cell, shift, best, partner); });
+                          [&](const NeighbourCell& nb) { scan_cell(i, nb.index, nb.shift, best, partner); });
   if (partner >= 0) return Event::collision(now_ + best, partner, m_[partner].count);
   return exit.face >= 0 ? Event::crossing(now_ + best, exit.face) : Event{};
 }
@@ -231,8 +231,8 @@ int AggregationEngine::merge(int a, int b) {
 // The smallest id overlapping aggregate k at now_ (periodic), or -1.
 int AggregationEngine::first_overlap(int k) const {
   int found = -1;
-  for_each_neighbour_cell(grid_->cells_per_side(), L_, grid_->coord(grid_->cell(k)), [&](int cell, const Vec3&) {
-    for (int j = grid_->first(cell); j >= 0; j = grid_->next(j)) {
+  for_each_neighbour_cell(grid_->cells_per_side(), L_, grid_->coord(grid_->cell(k)), [&](const NeighbourCell& nb) {
+    for (int j = grid_->first(nb.index); j >= 0; j = grid_->next(j)) {
       if (j == k || (found >= 0 && j > found)) continue;
       const Vec3 d = separation(k, j);  // the minimum image: no shift needed
       const double sigma = 0.5 * (diam_[k] + diam_[j]);

@@ -82,12 +82,20 @@ class CellGrid {
   std::int32_t& link(int p) { return next_[std::size_t(p) * stride_]; }
 };
 
-// The periodic walk over neighbouring cells, which every caller shares:
-// calls f(cell, shift) for the cells around c at offsets o[d] in
-// [lo[d], hi[d]] (each within -1..1; z slowest, x fastest) of a grid of n³
-// cells in a box of side L, where shift is what brings a particle of that
-// cell next to one of c (±L where the walk wraps, else 0). The engine's
-// partner search has a faster copy for interior cells, tested against this.
+// One cell of a neighbour walk.
+struct NeighbourCell {
+  int index;          // (z n + y) n + x
+  CellCoord cell;     // its coordinates, wrapped into 0..n-1
+  CellCoord offset;   // from the centre cell, each -1, 0 or 1
+  Vec3 shift;         // what brings its particles next to the centre cell's: ±L where the walk wraps, else 0
+};
+
+// The periodic walk over neighbouring cells, which every caller shares (the
+// engines, random sequential addition's centre grid and free voxels): calls
+// f(NeighbourCell) for the cells around c at offsets o[d] in [lo[d], hi[d]]
+// (each within -1..1; z slowest, x fastest) of a grid of n³ cells in a box
+// of side L (L only sets the shifts). The engine's partner search has a
+// faster copy for interior cells (neighbour_cells below), tested against it.
 template <class F>
 void for_each_neighbour_cell(int n, double L, const CellCoord& c, const int* lo, const int* hi, F&& f) {
   auto wrap = [n, L](int x, double& shift) {
@@ -97,9 +105,11 @@ void for_each_neighbour_cell(int n, double L, const CellCoord& c, const int* lo,
   for (int oz = lo[2]; oz <= hi[2]; ++oz)
     for (int oy = lo[1]; oy <= hi[1]; ++oy)
       for (int ox = lo[0]; ox <= hi[0]; ++ox) {
-        Vec3 s;
-        const int x = wrap(c.x + ox, s.x), y = wrap(c.y + oy, s.y), z = wrap(c.z + oz, s.z);
-        f((z * n + y) * n + x, s);
+        NeighbourCell nb;
+        nb.offset = {ox, oy, oz};
+        nb.cell = {wrap(c.x + ox, nb.shift.x), wrap(c.y + oy, nb.shift.y), wrap(c.z + oz, nb.shift.z)};
+        nb.index = (nb.cell.z * n + nb.cell.y) * n + nb.cell.x;
+        f(static_cast<const NeighbourCell&>(nb));
       }
 }
 
@@ -127,9 +137,9 @@ inline int neighbour_cells(const CellGrid& grid, double L, const CellCoord& c, c
         for (int ox = lo[0]; ox <= hi[0]; ++ox, ++k) cells[k] = home + (oz * n + oy) * n + ox;
     return k;
   }
-  for_each_neighbour_cell(n, L, c, lo, hi, [&](int cell, const Vec3& s) {
-    cells[k] = cell;
-    shifts[k][0] = s.x, shifts[k][1] = s.y, shifts[k][2] = s.z;
+  for_each_neighbour_cell(n, L, c, lo, hi, [&](const NeighbourCell& nb) {
+    cells[k] = nb.index;
+    shifts[k][0] = nb.shift.x, shifts[k][1] = nb.shift.y, shifts[k][2] = nb.shift.z;
     ++k;
   });
   return k;

@@ -30,7 +30,8 @@
 // Rebuilds (every particle moved to now, renumbered along the Morton curve,
 // grid, predictions and calendar made afresh) happen on the engine's own
 // schedule only: at construction, and every kCollisionsPerParticlePerRebuild
-// collisions per particle, so that locality does not decay in a long run.
+// (200, engine.cc) collisions per particle, so that locality does not decay
+// in a long run.
 // Nothing the runner does (observables, frames, checkpoints, how run_until is
 // sliced) moves a particle or changes a prediction.
 #pragma once

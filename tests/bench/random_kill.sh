@@ -6,7 +6,8 @@
 # resumes it with --resume to the end (a run killed before its first dump
 # left no file and is started again, as a user would) and compares the whole
 # file with the uninterrupted one (h5diff: every dataset and attribute).
-# Prints one line per run and a summary:
+# Prints one line per run (a failing file or message is kept in the scratch
+# folder as failed-*) and a summary:
 #   killed=K validated=V resumed=R identical=I of RUNS
 #
 # usage: tests/bench/random_kill.sh BUILD_DIR [RUNS] [SCRATCH_DIR]
@@ -60,8 +61,10 @@ while [ "$k" -lt "$runs" ]; do
     note="resumed"
   fi
   ok_valid=0 ok_resume=0 ok_same=0
-  $validate "$out" >/dev/null 2>&1 && ok_valid=1
+  $validate "$out" >"$dir/validate.out" 2>&1 && ok_valid=1
+  [ "$ok_valid" = 1 ] || cp "$out" "$dir/failed-validate-$k.h5"
   $sim --resume "$out" >/dev/null 2>"$dir/resume.err" && ok_resume=1
+  [ "$ok_resume" = 1 ] || cp "$dir/resume.err" "$dir/failed-resume-$k.err"
   h5diff -q "$dir/whole.h5" "$out" >/dev/null 2>&1 && ok_same=1
   validated=$((validated + ok_valid)) resumed=$((resumed + ok_resume)) identical=$((identical + ok_same))
   echo "run $k: kill after ${delay}s, $note: validates=$ok_valid resumes=$ok_resume identical=$ok_same"

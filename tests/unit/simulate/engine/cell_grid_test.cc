@@ -58,10 +58,11 @@ TEST(NeighbourCells, SpecialisedSearchMatchesThePeriodicWalker) {
         bool wraps = false;
         const int count = neighbour_cells(grid, L, c, lo, hi, cells, shifts, wraps);
         int k = 0;
-        for_each_neighbour_cell(n, L, c, lo, hi, [&](int expected, const Vec3& s) {
+        for_each_neighbour_cell(n, L, c, lo, hi, [&](const NeighbourCell& nb) {
           ASSERT_LT(k, count);
-          EXPECT_EQ(cells[k], expected) << "n " << n << " cell " << cell << " slab " << slab;
-          for (int d = 0; d < 3; ++d) EXPECT_EQ(wraps ? shifts[k][d] : 0.0, s[d]);
+          EXPECT_EQ(cells[k], nb.index) << "n " << n << " cell " << cell << " slab " << slab;
+          EXPECT_EQ(grid.index(nb.cell), nb.index);
+          for (int d = 0; d < 3; ++d) EXPECT_EQ(wraps ? shifts[k][d] : 0.0, nb.shift[d]);
           ++k;
         });
         EXPECT_EQ(k, count);

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "common/random.h"
+#include "simulate/engine/engine.h"
 #include "simulate/run/engine_factory.h"
 #include "simulate/start/initial_state.h"
 #include "tests/support/saved_state.h"
@@ -67,6 +68,29 @@ TEST_P(EngineContract, SlicingChangesNothingAndFramesAreWrapped) {
   const Observables a = sliced->observables(), b = whole->observables();
   EXPECT_EQ(a.kinetic_energy, b.kinetic_energy);
   EXPECT_EQ(a.aggregates.has_value(), GetParam() == CollisionModel::kAggregation);
+}
+
+// Long enough for the engine's own rebuilds (every 200 collisions per
+// particle): they fall on the same events however the run is sliced, and a
+// restored engine keeps their schedule.
+TEST(EngineContractRebuilds, ScheduledRebuildsDoNotDependOnSlicing) {
+  const Scene s = test::elastic_scene(300, 0.2, 12);
+  const Particles start = initial_state(s);
+  const std::int64_t target = 300 * 700 / 2;  // 700 collisions per particle: three rebuilds
+  Engine<ElasticRule> whole(start, ElasticRule{}, 0.0), sliced(start, ElasticRule{}, 0.0);
+  while (whole.counters().collisions < target) whole.run_until(whole.now() + 50, std::int64_t(1) << 40, nullptr);
+  std::unique_ptr<Engine<ElasticRule>> restored;
+  Random rng(3);
+  while (sliced.now() < whole.now()) {
+    sliced.run_until(std::min(whole.now(), sliced.now() + rng.uniform()), 1 + std::int64_t(rng.below(5000)), nullptr);
+    if (!restored && sliced.counters().collisions > target / 2)
+      restored = std::make_unique<Engine<ElasticRule>>(ElasticRule{}, test::saved_state(sliced));
+  }
+  ASSERT_TRUE(restored);
+  restored->run_until(whole.now(), std::int64_t(1) << 40, nullptr);
+  EXPECT_EQ(sliced.counters().events, whole.counters().events);
+  test::expect_same_frame(sliced.frame(), whole.frame());
+  test::expect_same_frame(restored->frame(), whole.frame());
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryModel, EngineContract,
