@@ -92,9 +92,11 @@ FrameView view_of(const Frame& f) {
 // Drives the engine from stop to stop, writing as it goes.
 class Driver {
  public:
-  Driver(const Scene& scene, EngineBase& engine, H5mdWriter& writer, std::string path, double e0, bool quiet)
-      : scene_(scene), engine_(engine), writer_(writer), path_(std::move(path)), e0_(e0), progress_(!quiet),
-        interval_(checkpoint_interval()), last_checkpoint_(clock::now()) {}
+  // `interval`: wall-clock seconds between periodic checkpoints.
+  Driver(const Scene& scene, EngineBase& engine, H5mdWriter& writer, std::string path, bool quiet, double interval)
+      : scene_(scene), engine_(engine), writer_(writer), path_(std::move(path)),
+        e0_(1.5 * initial_temperature(scene)), progress_(!quiet), interval_(interval),
+        last_checkpoint_(clock::now()) {}
 
   // A resumed run: the file holds every output up to `written` (its last
   // dump); `pending` are the observables after the checkpoint's own last
@@ -256,6 +258,7 @@ int drive(Driver& driver, const Scene& scene) {
 
 int start_new(const SimulationRequest& req) {
   const Scene scene = parse_scene(read_file(req.scene_path), req.scene_path, req.overrides);
+  const double interval = checkpoint_interval();
   const std::string out = req.output.empty() ? default_output(req.scene_path) : req.output;
   check_writable(out, req.force);
   std::unique_ptr<EngineBase> engine;
@@ -273,7 +276,7 @@ int start_new(const SimulationRequest& req) {
   // first, so it can never be taken for this run's.
   const std::string tmp = out + ".partial";
   H5mdWriter writer = H5mdWriter::create(tmp, parameters_of(scene), true);
-  Driver driver(scene, *engine, writer, out, 1.5 * initial_temperature(scene), req.quiet);
+  Driver driver(scene, *engine, writer, out, req.quiet, interval);
   try {
     driver.start();
     remove_checkpoint(out);
@@ -292,6 +295,7 @@ int resume(const SimulationRequest& req) {
     if (!key_changeable_on_resume(key))
       throw InputError("--set " + key + " cannot change on --resume: only run.* and output.* keys can");
   }
+  const double interval = checkpoint_interval();
   ResumePoint rp = read_resume_point(req.resume);
   const Scene scene = parse_scene(rp.scene_toml, req.resume + ":/parameters/scene", req.overrides);
   if (rp.time >= scene.t_end) {
@@ -315,7 +319,7 @@ int resume(const SimulationRequest& req) {
               << "'; continuing from the last dump (not bit-identical to an uninterrupted run)\n";
   H5mdWriter writer = H5mdWriter::reopen(req.resume);
   writer.update_scene(scene.to_toml());
-  Driver driver(scene, *engine, writer, req.resume, 1.5 * initial_temperature(scene), req.quiet);
+  Driver driver(scene, *engine, writer, req.resume, req.quiet, interval);
   driver.resume_after(rp.time, ck ? ck->pending : std::vector<ObservableRow>{});
   return drive(driver, scene);
 }
