@@ -19,10 +19,6 @@
 namespace coolgas {
 namespace {
 
-using test::bin;
-using test::run_command;
-using test::simulate;
-
 // A cooling, clustering gas; under a second of dynamics on one core.
 const char* kScene = R"([system]
 N = 8000
@@ -73,17 +69,17 @@ void expect_same_trajectory(const std::string& a, const std::string& b) {
 // checkpoint appears and returns its exit code.
 int run_and_signal(const std::string& scene, const std::string& out, const std::string& signal, double delay,
                    const std::string& env = "") {
-  const std::string cmd = env + " " + simulate(scene + " -o " + out) + " & pid=$!; n=0; while [ ! -f " + out +
+  const std::string cmd = env + " " + test::simulate(scene + " -o " + out) + " & pid=$!; n=0; while [ ! -f " + out +
                           ".checkpoint ] && [ $n -lt 600 ]; do sleep 0.05; n=$((n+1)); done; sleep " +
                           std::to_string(delay) + "; kill -" + signal + " $pid; wait $pid";
-  return run_command(cmd).exit_code;
+  return test::run_command(cmd).exit_code;
 }
 
 class ResumeCli : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     dir_ = new std::string(test::scratch_dir("resume_reference"));
-    const auto r = run_command(simulate(write_scene(*dir_) + " -o " + *dir_ + "/whole.h5"));
+    const auto r = test::run_command(test::simulate(write_scene(*dir_) + " -o " + *dir_ + "/whole.h5"));
     ASSERT_EQ(r.exit_code, 0) << r.err;
   }
   static void TearDownTestSuite() { delete dir_; }
@@ -102,9 +98,9 @@ class ResumeCli : public ::testing::Test {
       ASSERT_TRUE(code == expected_exit || code == 0) << signal << " after " << delay << " s: exit " << code;
       stopped += code == expected_exit;
       if (code != 0) {
-        const auto v = run_command(bin("coolgas-validate") + " " + out);
+        const auto v = test::run_command(test::bin("coolgas-validate") + " " + out);
         EXPECT_EQ(v.exit_code, 0) << v.out << v.err;
-        const auto r = run_command(simulate("--resume " + out));
+        const auto r = test::run_command(test::simulate("--resume " + out));
         ASSERT_EQ(r.exit_code, 0) << r.err;
       }
       expect_same_trajectory(whole(), out);
@@ -129,8 +125,8 @@ TEST_F(ResumeCli, AfterSigkillEveryLaterDumpIsBitIdentical) {
 TEST_F(ResumeCli, ExtendingAFinishedRunContinuesExactly) {
   const std::string dir = test::scratch_dir("resume_extend");
   const std::string out = dir + "/part.h5";
-  ASSERT_EQ(run_command(simulate(scene() + " -o " + out + " --set run.t_end=100")).exit_code, 0);
-  const auto r = run_command(simulate("--resume " + out + " --set run.t_end=2000"));
+  ASSERT_EQ(test::run_command(test::simulate(scene() + " -o " + out + " --set run.t_end=100")).exit_code, 0);
+  const auto r = test::run_command(test::simulate("--resume " + out + " --set run.t_end=2000"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   expect_same_trajectory(whole(), out);
 }
@@ -140,7 +136,7 @@ TEST_F(ResumeCli, ExtendingAFinishedRunContinuesExactly) {
 TEST_F(ResumeCli, TheDumpGridDoesNotChangeTheTrajectory) {
   const std::string dir = test::scratch_dir("resume_dump_grid");
   const std::string out = dir + "/sparse.h5";
-  ASSERT_EQ(run_command(simulate(scene() + " -o " + out + " --set output.dumps_per_decade=3")).exit_code, 0);
+  ASSERT_EQ(test::run_command(test::simulate(scene() + " -o " + out + " --set output.dumps_per_decade=3")).exit_code, 0);
   h5::Handle fa = h5::open_file(whole(), h5::Mode::kReadOnly), fb = h5::open_file(out, h5::Mode::kReadOnly);
   h5::Handle ta = h5::open_dataset(fa.id(), "particles/all/position/time");
   h5::Handle tb = h5::open_dataset(fb.id(), "particles/all/position/time");
@@ -166,11 +162,11 @@ TEST(ResumeCliSetUp, SignalsStopALongEquilibrationAtOnce) {
   const std::string scene = write_scene(dir);
   for (const char* signal : {"INT", "TERM"}) {
     const std::string out = dir + "/melt.h5";
-    const std::string cmd = "start=$(date +%s.%N); " + simulate(scene + " -o " + out + " --set system.equilibrate=1e6") +
+    const std::string cmd = "start=$(date +%s.%N); " + test::simulate(scene + " -o " + out + " --set system.equilibrate=1e6") +
                             " & pid=$!; sleep 1; kill -" + signal +
                             " $pid; t0=$(date +%s.%N); wait $pid; code=$?; "
                             "echo \"$code $(echo \"$(date +%s.%N) - $t0\" | bc)\"";
-    const auto r = run_command(cmd);
+    const auto r = test::run_command(cmd);
     double seconds = 99;
     int code = -1;
     ASSERT_EQ(std::sscanf(r.out.c_str(), "%d %lf", &code, &seconds), 2) << r.out << r.err;
@@ -186,12 +182,12 @@ TEST(ResumeCliSetUp, SignalsStopALongEquilibrationAtOnce) {
 TEST(ResumeCliDamage, ADamagedCheckpointIsRefusedWithOneLine) {
   const std::string dir = test::scratch_dir("resume_damaged");
   const std::string out = dir + "/run.h5";
-  ASSERT_EQ(run_command(simulate(write_scene(dir) + " -o " + out + " --set run.t_end=10")).exit_code, 0);
+  ASSERT_EQ(test::run_command(test::simulate(write_scene(dir) + " -o " + out + " --set run.t_end=10")).exit_code, 0);
   const auto size = std::filesystem::file_size(out + ".checkpoint");
   std::filesystem::resize_file(out + ".checkpoint", size / 2);
-  test::expect_refused_with_one_line(run_command(simulate("--resume " + out + " --set run.t_end=20")),
+  test::expect_refused_with_one_line(test::run_command(test::simulate("--resume " + out + " --set run.t_end=20")),
                                      "ends early");
-  EXPECT_EQ(run_command(bin("coolgas-validate") + " " + out).exit_code, 0);
+  EXPECT_EQ(test::run_command(test::bin("coolgas-validate") + " " + out).exit_code, 0);
 }
 
 }  // namespace
