@@ -43,46 +43,69 @@ AggregationEngine::AggregationEngine(Particles particles, AggregateState a, doub
     ++alive_;
     dmax_ = std::max(dmax_, diam_[i]);
   }
-  event_time_.assign(n, kNever);
-  partner_.assign(n, -1);
-  partner_count_.assign(n, 0);
-  synchronize();
+  // The state alone decides the grid, so a run resumed from a dump builds
+  // the same grid as one started from the same state.
+  if (rebuild_grid()) predict_all();
 }
 
-Particles AggregationEngine::snapshot() const {
-  Particles p;
-  p.L = L_;
-  p.resize(m_.size());
-  for (std::size_t i = 0; i < m_.size(); ++i) {
-    p.r[i] = m_[i].r;
-    p.v[i] = m_[i].v;
-    p.t[i] = m_[i].t;
+AggregationEngine::AggregationEngine(const StateReader& in) {
+  const auto s = in.get_value<AggregationScalars>("aggregation/scalars");
+  L_ = s.L;
+  now_ = s.now;
+  dmax_ = s.dmax;
+  grid_request_ = s.grid_request;
+  alive_ = std::size_t(s.alive);
+  too_large_ = s.too_large != 0;
+  c_ = s.counters;
+  m_ = in.get<Motion>("aggregation/motion");
+  image_ = in.get<Image>("aggregation/image");
+  mass_ = in.get<double>("aggregation/mass");
+  diam_ = in.get<double>("aggregation/diameter");
+  id_ = in.get<std::int32_t>("aggregation/id");
+  const std::size_t n = m_.size();
+  if (image_.size() != n || mass_.size() != n || diam_.size() != n || id_.size() != n)
+    in.fail("the aggregation engine's arrays differ in length");
+  if (s.has_grid) {
+    grid_ = std::make_unique<CellGrid>(L_, grid_request_, n);
+    grid_->load(in, "aggregation/grid/");
   }
-  p.image = image_;
-  return p;
+  calendar_.load(in, "aggregation/calendar/");
+}
+
+void AggregationEngine::save(StateWriter& out) const {
+  out.put_value("aggregation/scalars", AggregationScalars{L_, now_, dmax_, grid_request_, std::int64_t(alive_),
+                                                          too_large_, grid_ != nullptr, c_});
+  out.put("aggregation/motion", m_);
+  out.put("aggregation/image", image_);
+  out.put("aggregation/mass", mass_);
+  out.put("aggregation/diameter", diam_);
+  out.put("aggregation/id", id_);
+  if (grid_) grid_->save(out, "aggregation/grid/");
+  calendar_.save(out, "aggregation/calendar/");
+}
+
+Frame AggregationEngine::frame() const {
+  Frame f(now_, c_);
+  const std::size_t n = m_.size();
+  f.position.resize(n);
+  f.velocity.resize(n);
+  f.image = image_;
+  for (std::size_t i = 0; i < n; ++i) {
+    f.velocity[i] = m_[i].v;
+    if (!present(int(i))) continue;  // an empty slot: all zero
+    f.position[i] = position_at(m_[i], now_);
+    wrap_into_box(f.position[i], f.image[i], L_);
+  }
+  f.id = id_;
+  f.mass = mass_;
+  f.diameter = diam_;
+  return f;
 }
 
 void AggregationEngine::advance(int i) {
   Motion& m = m_[i];
-  const double dt = now_ - m.t;
-  for (int d = 0; d < 3; ++d) m.r[d] += m.v[d] * dt;
+  m.r = position_at(m, now_);
   m.t = now_;
-}
-
-void AggregationEngine::wrap(int i) {
-  for (int d = 0; d < 3; ++d) {
-    double& x = m_[i].r[d];
-    while (x >= L_) x -= L_, ++image_[i][d];
-    while (x < 0) x += L_, --image_[i][d];
-    if (x >= L_) x = 0;  // x was -tiny and x + L rounded up to L
-  }
-}
-
-// The state alone decides the grid, so a run resumed from a dump (taken
-// right after synchronize()) rebuilds the same grid as the uninterrupted run.
-void AggregationEngine::synchronize() {
-  for (std::size_t i = 0; i < m_.size(); ++i) m_[i].count = 0;
-  if (rebuild_grid()) predict_all();
 }
 
 bool AggregationEngine::grid_outdated() const {
@@ -98,13 +121,14 @@ bool AggregationEngine::rebuild_grid() {
   for (std::size_t i = 0; i < m_.size(); ++i) {
     if (!present(int(i))) continue;
     advance(int(i));
-    wrap(int(i));
+    wrap_into_box(m_[i].r, image_[i], L_);
   }
   const double spacing = std::cbrt(L_ * L_ * L_ / double(std::max<std::size_t>(alive_, 1)));
   const double widest = L_ / 3.0 / (1.0 + 1e-6);  // three cells per side, with CellGrid's own margin
   const double width = std::min(std::max(dmax_ * kWidthHeadroom, spacing), widest);
   too_large_ = width < dmax_;
   if (too_large_) return false;
+  grid_request_ = width;
   grid_ = std::make_unique<CellGrid>(L_, width, m_.size());
   for (std::size_t i = 0; i < m_.size(); ++i)
     if (present(int(i))) grid_->insert(int(i), grid_->cell_of(m_[i].r.x, m_[i].r.y, m_[i].r.z));
@@ -116,21 +140,18 @@ void AggregationEngine::throw_too_large() const {
   s << "aggregation at t = " << now_ << ": the largest aggregate (diameter " << dmax_
     << ") is wider than a third of the box (L = " << L_ << "), too large for the cell grid, with " << alive_
     << " aggregates left; use a larger system (more particles) to go on";
-  throw AggregateTooLargeError(s.str(), now_);
+  throw RunStopped(StopReason::kAggregateTooLarge, s.str(), now_);
 }
 
 void AggregationEngine::predict_all() {
-  for (std::size_t i = 0; i < m_.size(); ++i) {
-    if (present(int(i))) find_event(int(i));
-    else event_time_[i] = kNever;
-  }
-  calendar_.resize(event_time_.size());
-  for (std::size_t k = 0; k < event_time_.size(); ++k) calendar_.assign(int(k), {event_time_[k]});
+  calendar_.resize(m_.size());
+  for (std::size_t i = 0; i < m_.size(); ++i)
+    if (present(int(i))) calendar_.assign(int(i), find_event(int(i)));
   calendar_.reset(now_);
 }
 
 // Earliest contact of aggregate i with those of one cell, whose images are shifted by `shift`.
-void AggregationEngine::scan_cell(int i, int cell, const Vec3& shift, double& best, int& code) const {
+void AggregationEngine::scan_cell(int i, int cell, const Vec3& shift, double& best, int& partner) const {
   const Motion& mi = m_[i];
   for (int j = grid_->first(cell); j >= 0; j = grid_->next(j)) {
     if (j == i) continue;
@@ -143,38 +164,25 @@ void AggregationEngine::scan_cell(int i, int cell, const Vec3& shift, double& be
     }
     const double sigma = 0.5 * (diam_[i] + diam_[j]);
     const double t = time_to_contact_before(dr, dv, best, sigma * sigma);
-    if (t < best) best = t, code = j;
+    if (t < best) best = t, partner = j;
   }
 }
 
 // Aggregate i is at now_; its event is the first face of its cell it will
 // cross, or an earlier contact with an aggregate in the 27 cells around.
-void AggregationEngine::find_event(int i) {
-  const Vec3 ri = m_[i].r, vi = m_[i].v;
-  const CellCoord c = grid_->coord(grid_->cell(i));
-  const CellExit exit = first_cell_exit(*grid_, grid_->cell(i), ri, vi);
+Event AggregationEngine::find_event(int i) const {
+  const CellExit exit = first_cell_exit(*grid_, grid_->cell(i), m_[i].r, m_[i].v);
   double best = exit.time;
-  int code = exit.face >= 0 ? -1 - exit.face : -1;
-  const int n = grid_->cells_per_side();
-  auto wrapped = [n, this](int x, double& shift) {
-    shift = x < 0 ? -L_ : (x >= n ? L_ : 0.0);
-    return x < 0 ? x + n : (x >= n ? x - n : x);
-  };
-  for (int oz = -1; oz <= 1; ++oz)
-    for (int oy = -1; oy <= 1; ++oy)
-      for (int ox = -1; ox <= 1; ++ox) {
-        Vec3 s;
-        const int x = wrapped(c.x + ox, s.x), y = wrapped(c.y + oy, s.y), z = wrapped(c.z + oz, s.z);
-        scan_cell(i, grid_->index({x, y, z}), s, best, code);
-      }
-  event_time_[i] = now_ + best;
-  partner_[i] = code;
-  if (code >= 0) partner_count_[i] = m_[code].count;
+  int partner = -1;
+  for_each_neighbour_cell(grid_->cells_per_side(), L_, grid_->coord(grid_->cell(i)),
+                          [&](const NeighbourCell& nb) { scan_cell(i, nb.index, nb.shift, best, partner); });
+  if (partner >= 0) return Event::collision(now_ + best, partner, m_[partner].count);
+  return exit.face >= 0 ? Event::crossing(now_ + best, exit.face) : Event{};
 }
 
-void AggregationEngine::cross(int i, int code) {
+void AggregationEngine::cross(int i, int face) {
   advance(i);
-  grid_->move(i, cell_across_face(*grid_, grid_->cell(i), -1 - code, L_, m_[i].r, image_[i]));
+  grid_->move(i, cell_across_face(*grid_, grid_->cell(i), face, L_, m_[i].r, image_[i]));
 }
 
 Vec3 AggregationEngine::separation(int a, int b) const {
@@ -205,14 +213,13 @@ int AggregationEngine::merge(int a, int b) {
   image_[gone] = {0, 0, 0};
   mass_[gone] = diam_[gone] = 0;
   id_[gone] = -1;
-  event_time_[gone] = kNever;
-  calendar_.schedule(gone, {event_time_[gone]});
+  calendar_.schedule(gone, Event{});
   merged.count = m_[keep].count + 1;
   m_[keep] = merged;
   image_[keep] = frame;
   mass_[keep] = M;
   diam_[keep] = std::cbrt(da * da * da + db * db * db);
-  wrap(keep);
+  wrap_into_box(m_[keep].r, image_[keep], L_);
   grid_->move(keep, grid_->cell_of(m_[keep].r.x, m_[keep].r.y, m_[keep].r.z));
   --alive_;
   dmax_ = std::max(dmax_, diam_[keep]);
@@ -222,21 +229,16 @@ int AggregationEngine::merge(int a, int b) {
 }
 
 // The smallest id overlapping aggregate k at now_ (periodic), or -1.
-int AggregationEngine::first_overlap(int k) {
-  const CellCoord c = grid_->coord(grid_->cell(k));
-  const int n = grid_->cells_per_side();
+int AggregationEngine::first_overlap(int k) const {
   int found = -1;
-  for (int oz = -1; oz <= 1; ++oz)
-    for (int oy = -1; oy <= 1; ++oy)
-      for (int ox = -1; ox <= 1; ++ox) {
-        const CellCoord nb{(c.x + ox + n) % n, (c.y + oy + n) % n, (c.z + oz + n) % n};
-        for (int j = grid_->first(grid_->index(nb)); j >= 0; j = grid_->next(j)) {
-          if (j == k || (found >= 0 && j > found)) continue;
-          const Vec3 d = separation(k, j);
-          const double sigma = 0.5 * (diam_[k] + diam_[j]);
-          if (dot(d, d) < sigma * sigma) found = j;
-        }
-      }
+  for_each_neighbour_cell(grid_->cells_per_side(), L_, grid_->coord(grid_->cell(k)), [&](const NeighbourCell& nb) {
+    for (int j = grid_->first(nb.index); j >= 0; j = grid_->next(j)) {
+      if (j == k || (found >= 0 && j > found)) continue;
+      const Vec3 d = separation(k, j);  // the minimum image: no shift needed
+      const double sigma = 0.5 * (diam_[k] + diam_[j]);
+      if (dot(d, d) < sigma * sigma) found = j;
+    }
+  });
   return found;
 }
 
@@ -257,8 +259,7 @@ void AggregationEngine::merge_chain(int i, int j) {
   if (rebuilt) {
     predict_all();
   } else {
-    find_event(k);
-    calendar_.schedule(k, {event_time_[k]});
+    calendar_.schedule(k, find_event(k));
   }
 }
 
@@ -269,46 +270,45 @@ RunStatus AggregationEngine::run_until(double t_stop, std::int64_t max_events,
   while (true) {
     if (RunStatus paused; pause_due(c_.events, last_event, interrupt, paused)) return paused;
     const int i = calendar_.top();
-    if (i < 0 || event_time_[i] > t_stop) break;
-    now_ = event_time_[i];
+    if (i < 0) break;
+    const Event ev = calendar_.event(i);
+    if (ev.time > t_stop || ev.kind() == EventKind::kNone) break;
+    now_ = ev.time;
     ++c_.events;
-    const int code = partner_[i];
-    if (code >= 0 && (!present(code) || m_[code].count != partner_count_[i])) {  // partner changed since: stale
+    if (ev.kind() == EventKind::kCrossing) {
+      cross(i, ev.face());
+      calendar_.schedule(i, find_event(i));
+    } else if (!present(ev.partner()) || m_[ev.partner()].count != ev.partner_count) {  // partner changed since: stale
       ++c_.stale;
       advance(i);
-      find_event(i);
-      calendar_.schedule(i, {event_time_[i]});
-    } else if (code >= 0) {
-      merge_chain(i, code);
+      calendar_.schedule(i, find_event(i));
     } else {
-      cross(i, code);
-      find_event(i);
-      calendar_.schedule(i, {event_time_[i]});
+      merge_chain(i, ev.partner());
     }
   }
   now_ = std::max(now_, t_stop);
   return RunStatus::kReached;
 }
 
-AggregateSummary summarize_aggregates(const EngineBase& e) {
-  const Motion* m = e.motion();
-  const double* mass = e.masses();
+Observables AggregationEngine::observables() const {
   CompensatedSum energy, p[3];
-  AggregateSummary s;
+  AggregateStats a;
   double total = 0;
-  for (std::size_t i = 0; i < e.size(); ++i) {
-    const double mi = mass ? mass[i] : 1.0;
+  for (std::size_t i = 0; i < m_.size(); ++i) {
+    const double mi = mass_[i];
     if (mi == 0) continue;
-    ++s.aggregates;
+    ++a.aggregates;
     total += mi;
-    s.largest_mass = std::max(s.largest_mass, mi);
-    energy.add(0.5 * mi * dot(m[i].v, m[i].v));
-    for (int d = 0; d < 3; ++d) p[d].add(mi * m[i].v[d]);
+    a.largest_mass = std::max(a.largest_mass, mi);
+    energy.add(0.5 * mi * dot(m_[i].v, m_[i].v));
+    for (int d = 0; d < 3; ++d) p[d].add(mi * m_[i].v[d]);
   }
-  s.mean_mass = s.aggregates ? total / double(s.aggregates) : 0;
-  s.kinetic_energy = energy.value() / double(e.size());
-  s.momentum = {p[0].value(), p[1].value(), p[2].value()};
-  return s;
+  a.mean_mass = a.aggregates ? total / double(a.aggregates) : 0;
+  Observables o(now_, c_);
+  o.kinetic_energy = energy.value() / double(m_.size());
+  o.momentum = {p[0].value(), p[1].value(), p[2].value()};
+  o.aggregates = a;
+  return o;
 }
 
 }  // namespace coolgas

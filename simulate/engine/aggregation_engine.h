@@ -20,10 +20,14 @@
 // and velocity 0), which is how dumps mark absent aggregates.
 #pragma once
 #include <memory>
-#include <optional>
 #include <vector>
 
+#include "simulate/engine/cell_grid.h"
 #include "simulate/engine/engine.h"
+#include "simulate/engine/engine_base.h"
+#include "simulate/engine/event_calendar.h"
+#include "simulate/engine/motion.h"
+#include "simulate/engine/state_archive.h"
 
 namespace coolgas {
 
@@ -36,32 +40,39 @@ struct AggregateState {
   static AggregateState unit_spheres(std::size_t n);  // n particles of mass 1, diameter 1
 };
 
-// The aggregates no longer fit a cell grid of three cells per side (the
-// largest diameter exceeds L/3): the system is too small for what follows.
-struct AggregateTooLargeError : CollapseError {
-  using CollapseError::CollapseError;
+// The scalars of the aggregation engine's exact state, as one checkpoint record.
+struct AggregationScalars {
+  double L, now, dmax, grid_request;
+  std::int64_t alive;
+  std::int32_t too_large, has_grid;
+  EngineCounters counters;
 };
 
 class AggregationEngine final : public EngineBase {
  public:
   // Aggregates as they are at time `now` (positions valid at now).
   AggregationEngine(Particles particles, AggregateState aggregates, double now, const EngineCounters& counters = {});
+  // The engine whose exact state save() wrote.
+  explicit AggregationEngine(const StateReader& state);
 
   // Counters: `collisions` counts merges (each merge of a chain is one).
+  // Throws RunStopped (kAggregateTooLarge) once the largest aggregate is
+  // wider than a third of the box.
   RunStatus run_until(double t_stop, std::int64_t max_events, const volatile std::sig_atomic_t* interrupt) override;
-  void synchronize() override;
   double now() const override { return now_; }
   std::size_t size() const override { return m_.size(); }
   double box() const override { return L_; }
-  const Motion* motion() const override { return m_.data(); }
-  const Image* images() const override { return image_.data(); }
-  Particles snapshot() const override;
   const EngineCounters& counters() const override { return c_; }
-  void record_collisions(std::vector<CollisionRecord>* log) override { log_ = log; }
-  std::int64_t calendar_years() const override { return calendar_.years(); }
-  const double* masses() const override { return mass_.data(); }
-  const double* diameters() const override { return diam_.data(); }
-  const std::int32_t* ids() const override { return id_.data(); }
+  // Kinetic energy per initial particle (Σ ½ m v² / N) and momentum Σ m v,
+  // with the number of aggregates and their mean and largest mass.
+  Observables observables() const override;
+  // Per slot (id order), with id, mass and diameter.
+  Frame frame() const override;
+  void save(StateWriter& out) const override;
+
+  // For tests: every merge logged; for benchmarks: calendar years started.
+  void record_collisions(std::vector<CollisionRecord>* log) { log_ = log; }
+  std::int64_t calendar_years() const { return calendar_.years(); }
 
   std::size_t aggregates() const { return alive_; }
   double largest_diameter() const { return dmax_; }
@@ -70,17 +81,16 @@ class AggregationEngine final : public EngineBase {
  private:
   bool present(int i) const { return id_[i] >= 0; }
   void advance(int i);
-  void wrap(int i);
   bool rebuild_grid();
   [[noreturn]] void throw_too_large() const;
   bool grid_outdated() const;
   void predict_all();
-  void find_event(int i);
-  void scan_cell(int i, int cell, const Vec3& shift, double& best, int& code) const;
-  void cross(int i, int code);
+  Event find_event(int i) const;
+  void scan_cell(int i, int cell, const Vec3& shift, double& best, int& partner) const;
+  void cross(int i, int face);
   void merge_chain(int i, int j);
   int merge(int a, int b);
-  int first_overlap(int k);
+  int first_overlap(int k) const;
   Vec3 separation(int a, int b) const;  // r_b - r_a at now_, minimum image
 
   double L_;
@@ -91,25 +101,12 @@ class AggregationEngine final : public EngineBase {
   std::size_t alive_ = 0;
   double dmax_ = 0;
   bool too_large_ = false;  // the largest aggregate no longer fits the grid: run_until() throws
+  double grid_request_ = 0;  // the minimum cell width the grid was built for
   std::unique_ptr<CellGrid> grid_;
-  EventCalendar calendar_;
-  std::vector<double> event_time_;
-  std::vector<std::int32_t> partner_;         // >= 0: partner slot; < 0: cell face to cross (-1 - face)
-  std::vector<std::uint32_t> partner_count_;  // partner's count when the event was predicted
+  EventCalendar calendar_;  // each aggregate's event (a merge with partner() or a cell crossing)
   double now_;
   EngineCounters c_;
   std::vector<CollisionRecord>* log_ = nullptr;
 };
-
-// What the aggregation observables report: number of aggregates, mean and
-// largest mass, kinetic energy per initial particle (Σ ½ m v² / N) and total
-// momentum, summed in id order with compensation.
-struct AggregateSummary {
-  std::int64_t aggregates = 0;
-  double mean_mass = 0, largest_mass = 0;
-  double kinetic_energy = 0;
-  Vec3 momentum;
-};
-AggregateSummary summarize_aggregates(const EngineBase& e);
 
 }  // namespace coolgas

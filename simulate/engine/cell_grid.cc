@@ -97,4 +97,30 @@ void CellGrid::clear() {
   std::fill(cell_.begin(), cell_.end(), -1);
 }
 
+void CellGrid::save(StateWriter& out, const std::string& prefix) const {
+  out.put(prefix + "heads", head_);
+  out.put(prefix + "prev", prev_);
+  out.put(prefix + "cell", cell_);
+  out.put(prefix + "own_next", own_next_);
+}
+
+void CellGrid::load(const StateReader& in, const std::string& prefix) {
+  auto same_size = [&](const std::vector<std::int32_t>& loaded, const std::vector<std::int32_t>& now, const char* what) {
+    if (loaded.size() != now.size()) in.fail(prefix + what + " does not match the grid");
+  };
+  auto heads = in.get<std::int32_t>(prefix + "heads");
+  auto prev = in.get<std::int32_t>(prefix + "prev");
+  auto cell = in.get<std::int32_t>(prefix + "cell");
+  auto own = in.get<std::int32_t>(prefix + "own_next");
+  same_size(heads, head_, "heads");
+  same_size(prev, prev_, "prev");
+  same_size(cell, cell_, "cell");
+  same_size(own, own_next_, "own_next");
+  head_ = std::move(heads);
+  prev_ = std::move(prev);
+  cell_ = std::move(cell);
+  own_next_ = std::move(own);
+  if (!own_next_.empty()) next_ = own_next_.data();
+}
+
 }  // namespace coolgas

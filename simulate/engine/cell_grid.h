@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "simulate/engine/particles.h"
+#include "simulate/engine/state_archive.h"
 
 namespace coolgas {
 
@@ -63,6 +64,12 @@ class CellGrid {
   }
   void clear();
 
+  // The lists (heads, links, each particle's cell) under names starting with
+  // `prefix`; load() expects a grid constructed with the same geometry (and
+  // links bound the same way; bound links are the caller's to save).
+  void save(StateWriter& out, const std::string& prefix) const;
+  void load(const StateReader& in, const std::string& prefix);
+
  private:
   int n_ = 0;
   double w_ = 0;
@@ -74,6 +81,69 @@ class CellGrid {
   std::size_t stride_ = 1;
   std::int32_t& link(int p) { return next_[std::size_t(p) * stride_]; }
 };
+
+// One cell of a neighbour walk.
+struct NeighbourCell {
+  int index;          // (z n + y) n + x
+  CellCoord cell;     // its coordinates, wrapped into 0..n-1
+  CellCoord offset;   // from the centre cell, each -1, 0 or 1
+  Vec3 shift;         // what brings its particles next to the centre cell's: ±L where the walk wraps, else 0
+};
+
+// The periodic walk over neighbouring cells, which every caller shares (the
+// engines, random sequential addition's centre grid and free voxels): calls
+// f(NeighbourCell) for the cells around c at offsets o[d] in [lo[d], hi[d]]
+// (each within -1..1; z slowest, x fastest) of a grid of n³ cells in a box
+// of side L (L only sets the shifts). The engine's partner search has a
+// faster copy for interior cells (neighbour_cells below), tested against it.
+template <class F>
+void for_each_neighbour_cell(int n, double L, const CellCoord& c, const int* lo, const int* hi, F&& f) {
+  auto wrap = [n, L](int x, double& shift) {
+    shift = x < 0 ? -L : (x >= n ? L : 0.0);
+    return x < 0 ? x + n : (x >= n ? x - n : x);
+  };
+  for (int oz = lo[2]; oz <= hi[2]; ++oz)
+    for (int oy = lo[1]; oy <= hi[1]; ++oy)
+      for (int ox = lo[0]; ox <= hi[0]; ++ox) {
+        NeighbourCell nb;
+        nb.offset = {ox, oy, oz};
+        nb.cell = {wrap(c.x + ox, nb.shift.x), wrap(c.y + oy, nb.shift.y), wrap(c.z + oz, nb.shift.z)};
+        nb.index = (nb.cell.z * n + nb.cell.y) * n + nb.cell.x;
+        f(static_cast<const NeighbourCell&>(nb));
+      }
+}
+
+// All 27 cells around c.
+template <class F>
+void for_each_neighbour_cell(int n, double L, const CellCoord& c, F&& f) {
+  static constexpr int kLo[3] = {-1, -1, -1}, kHi[3] = {1, 1, 1};
+  for_each_neighbour_cell(n, L, c, kLo, kHi, f);
+}
+
+// The same walk, specialised for the engine's partner search: writes the
+// cell indices to `cells` and returns how many. An interior cell (~90 % of
+// them) needs no shifts: its rows are runs of consecutive indices, and
+// `shifts` is left untouched (wraps = false); otherwise shifts[k] holds the
+// shift of cells[k] (wraps = true).
+inline int neighbour_cells(const CellGrid& grid, double L, const CellCoord& c, const int* lo, const int* hi,
+                           int* cells, double (*shifts)[3], bool& wraps) {
+  const int n = grid.cells_per_side();
+  int k = 0;
+  wraps = !(c.x > 0 && c.y > 0 && c.z > 0 && c.x < n - 1 && c.y < n - 1 && c.z < n - 1);
+  if (!wraps) {
+    const int home = grid.index(c);
+    for (int oz = lo[2]; oz <= hi[2]; ++oz)
+      for (int oy = lo[1]; oy <= hi[1]; ++oy)
+        for (int ox = lo[0]; ox <= hi[0]; ++ox, ++k) cells[k] = home + (oz * n + oy) * n + ox;
+    return k;
+  }
+  for_each_neighbour_cell(n, L, c, lo, hi, [&](const NeighbourCell& nb) {
+    cells[k] = nb.index;
+    shifts[k][0] = nb.shift.x, shifts[k][1] = nb.shift.y, shifts[k][2] = nb.shift.z;
+    ++k;
+  });
+  return k;
+}
 
 // When a particle at r (at the current time) moving with v first leaves its
 // cell, and through which face: 2 d + 1 for the upper face along axis d, 2 d

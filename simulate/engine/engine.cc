@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "common/compensated_sum.h"
@@ -18,6 +19,20 @@ constexpr int kAroundLo[3] = {-1, -1, -1}, kAroundHi[3] = {1, 1, 1};
 // each less than kStallGap (relative to 1 + t) after the particle's previous
 // event.
 constexpr double kStallGap = 1e-11;
+// Rebuilds are due every this many collisions per particle (see engine.h):
+// they renew the Morton order, whose locality decays as particles wander,
+// and cost about one partner search per particle. Measured on W1 (N =
+// 108000, 60 collisions per particle, per-CPU rate, 5 interleaved pairs):
+// every 20 costs 3 % there, where locality has not yet decayed much; every
+// 200 keeps long runs sorted for a tenth of that.
+constexpr std::int64_t kCollisionsPerParticlePerRebuild = 200;
+
+std::int64_t collisions_between_rebuilds(std::size_t n) {
+  const auto half = std::int64_t(std::max<std::size_t>(n, 2) / 2);  // two particles per collision
+  return kCollisionsPerParticlePerRebuild > std::numeric_limits<std::int64_t>::max() / half
+             ? std::numeric_limits<std::int64_t>::max() / 2
+             : kCollisionsPerParticlePerRebuild * half;
+}
 }  // namespace
 
 template <class Rule>
@@ -34,54 +49,105 @@ Engine<Rule>::Engine(Particles particles, const Rule& rule, double now, const En
   calendar_.resize(n);
   later_.resize(n);
   if constexpr (Rule::kDissipative) stall_.assign(n, 0);
-  synchronize();
+  move_all_to_now();
+  rebuild();
 }
 
 template <class Rule>
-Particles Engine<Rule>::snapshot() const {
-  Particles p;
-  p.L = L_;
-  p.resize(m_.size());
-  for (std::size_t i = 0; i < m_.size(); ++i) {
-    const auto id = static_cast<std::size_t>(id_[i]);
-    p.r[id] = m_[i].r;
-    p.v[id] = m_[i].v;
-    p.t[id] = m_[i].t;
-    p.image[id] = image_[i];
+Engine<Rule>::Engine(const Rule& rule, const StateReader& in) : rule_(rule) {
+  const auto s = in.get_value<EngineScalars>("engine/scalars");
+  L_ = s.L;
+  now_ = s.now;
+  next_rebuild_ = s.next_rebuild;
+  c_ = s.counters;
+  m_ = in.get<Motion>("engine/motion");
+  image_ = in.get<Image>("engine/image");
+  id_ = in.get<std::int32_t>("engine/id");
+  later_ = in.get<Event>("engine/later");
+  stall_ = in.get<std::uint32_t>("engine/stall");
+  const std::size_t n = m_.size();
+  if (n == 0 || image_.size() != n || id_.size() != n || later_.size() != n ||
+      stall_.size() != (Rule::kDissipative ? n : 0))
+    in.fail("the engine's arrays differ in length");
+  grid_ = CellGrid(L_, 1.0, n);
+  grid_.bind_next_links(&m_[0].next, sizeof(Motion) / sizeof(std::int32_t));
+  grid_.load(in, "engine/grid/");
+  calendar_.load(in, "engine/calendar/");
+}
+
+template <class Rule>
+void Engine<Rule>::save(StateWriter& out) const {
+  out.put_value("engine/scalars", EngineScalars{L_, now_, next_rebuild_, c_});
+  out.put("engine/motion", m_);
+  out.put("engine/image", image_);
+  out.put("engine/id", id_);
+  out.put("engine/later", later_);
+  out.put("engine/stall", stall_);
+  grid_.save(out, "engine/grid/");
+  calendar_.save(out, "engine/calendar/");
+}
+
+// slot_of_id()[id] = the internal index of particle id.
+template <class Rule>
+std::vector<std::int32_t> Engine<Rule>::slot_of_id() const {
+  std::vector<std::int32_t> slot(m_.size());
+  for (std::size_t i = 0; i < m_.size(); ++i) slot[static_cast<std::size_t>(id_[i])] = std::int32_t(i);
+  return slot;
+}
+
+template <class Rule>
+Observables Engine<Rule>::observables() const {
+  CompensatedSum energy, p[3];
+  for (const std::int32_t i : slot_of_id()) {
+    const Vec3& v = m_[std::size_t(i)].v;
+    energy.add(0.5 * dot(v, v));
+    for (int d = 0; d < 3; ++d) p[d].add(v[d]);
   }
-  return p;
+  Observables o(now_, c_);
+  o.kinetic_energy = energy.value() / double(m_.size());
+  o.momentum = {p[0].value(), p[1].value(), p[2].value()};
+  return o;
+}
+
+template <class Rule>
+Frame Engine<Rule>::frame() const {
+  Frame f(now_, c_);
+  const std::size_t n = m_.size();
+  f.position.resize(n);
+  f.velocity.resize(n);
+  f.image.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto id = static_cast<std::size_t>(id_[i]);
+    f.position[id] = position_at(m_[i], now_);
+    f.image[id] = image_[i];
+    wrap_into_box(f.position[id], f.image[id], L_);
+    f.velocity[id] = m_[i].v;
+  }
+  return f;
 }
 
 template <class Rule>
 void Engine<Rule>::advance(int i) {
   Motion& m = m_[i];
-  const double dt = now_ - m.t;
-  m.r.x += m.v.x * dt;
-  m.r.y += m.v.y * dt;
-  m.r.z += m.v.z * dt;
+  m.r = position_at(m, now_);
   m.t = now_;
 }
 
+// Every particle to now_, wrapped, counts reset, in id order: the state a
+// rebuild starts from.
 template <class Rule>
-void Engine<Rule>::synchronize() {
-  const double L = L_;
+void Engine<Rule>::move_all_to_now() {
   for (std::size_t i = 0; i < m_.size(); ++i) {
     advance(int(i));
-    for (int d = 0; d < 3; ++d) {
-      double& x = m_[i].r[d];
-      while (x >= L) x -= L, ++image_[i][d];
-      while (x < 0) x += L, --image_[i][d];
-      if (x >= L) x = 0;  // x was -tiny and x + L rounded up to L
-    }
+    wrap_into_box(m_[i].r, image_[i], L_);
     m_[i].count = 0;
   }
   order_by_id();
-  built_ = false;
 }
 
 template <class Rule>
 std::vector<Vec3> Engine<Rule>::release_positions() {
-  synchronize();
+  move_all_to_now();
   calendar_ = EventCalendar();
   grid_ = CellGrid();
   image_ = {};
@@ -107,7 +173,7 @@ void Engine<Rule>::order_by_space() {
     const CellCoord c = grid_.coord(grid_.cell_of(m_[i].r.x, m_[i].r.y, m_[i].r.z));
     const std::uint64_t cell_key =
         morton_key(std::uint32_t(c.x) >> coarse, std::uint32_t(c.y) >> coarse, std::uint32_t(c.z) >> coarse);
-    keys[i] = cell_key << 32 | i;  // i is the id: called right after synchronize()
+    keys[i] = cell_key << 32 | i;  // i is the id: called right after move_all_to_now()
   }
   std::sort(keys.begin(), keys.end());
   std::vector<std::int32_t> order(m_.size());
@@ -133,10 +199,10 @@ void Engine<Rule>::rebuild() {
   order_by_space();
   grid_.clear();
   for (std::size_t i = 0; i < m_.size(); ++i) grid_.insert(int(i), grid_.cell_of(m_[i].r.x, m_[i].r.y, m_[i].r.z));
-  std::fill(stall_.begin(), stall_.end(), std::uint16_t{0});
+  std::fill(stall_.begin(), stall_.end(), 0u);
   for (std::size_t i = 0; i < m_.size(); ++i) calendar_.assign(int(i), find_event(int(i)));
   calendar_.reset(now_);
-  built_ = true;
+  next_rebuild_ = c_.collisions + collisions_between_rebuilds(m_.size());
 }
 
 // The periodic shift that brings a particle of cell `to` next to one in cell
@@ -147,35 +213,6 @@ Vec3 Engine<Rule>::image_shift(int from, int to) const {
   const CellCoord a = grid_.coord(from), b = grid_.coord(to);
   auto shift = [&](int ca, int cb) { return cb - ca > 1 ? -L_ : (ca - cb > 1 ? L_ : 0.0); };
   return {shift(a.x, b.x), shift(a.y, b.y), shift(a.z, b.z)};
-}
-
-template <class Rule>
-int Engine<Rule>::neighbour_cells(const CellCoord& c, const int* lo, const int* hi, int* cells,
-                                  double (*shifts)[3], bool& wraps) const {
-  const int n = grid_.cells_per_side();
-  int k = 0;
-  wraps = !(c.x > 0 && c.y > 0 && c.z > 0 && c.x < n - 1 && c.y < n - 1 && c.z < n - 1);
-  if (!wraps) {
-    // Interior cell (~90 % of them): no shifts; runs of consecutive indices per row.
-    const int home = grid_.index(c);
-    for (int oz = lo[2]; oz <= hi[2]; ++oz)
-      for (int oy = lo[1]; oy <= hi[1]; ++oy)
-        for (int ox = lo[0]; ox <= hi[0]; ++ox, ++k) cells[k] = home + (oz * n + oy) * n + ox;
-    return k;
-  }
-  const double L = L_;
-  auto wrap = [n, L](int x, double& shift) {
-    shift = x < 0 ? -L : (x >= n ? L : 0.0);
-    return x < 0 ? x + n : (x >= n ? x - n : x);
-  };
-  for (int oz = lo[2]; oz <= hi[2]; ++oz)
-    for (int oy = lo[1]; oy <= hi[1]; ++oy)
-      for (int ox = lo[0]; ox <= hi[0]; ++ox, ++k) {
-        double* s = shifts[k];
-        const int x = wrap(c.x + ox, s[0]), y = wrap(c.y + oy, s[1]), z = wrap(c.z + oz, s[2]);
-        cells[k] = grid_.index({x, y, z});
-      }
-  return k;
 }
 
 template <class Rule>
@@ -206,7 +243,7 @@ void Engine<Rule>::scan_list(const Vec3& ri, const Vec3& vi, int first, const do
 template <class Rule>
 void Engine<Rule>::start_search(int home, const int* lo, const int* hi, Search& s) const {
   int cells[27];
-  const int count = neighbour_cells(grid_.coord(home), lo, hi, cells, s.shifts, s.wraps);
+  const int count = neighbour_cells(grid_, L_, grid_.coord(home), lo, hi, cells, s.shifts, s.wraps);
   s.n = 0;
   for (int k = 0; k < count; ++k) {
     s.heads[s.n] = grid_.first(cells[k]);
@@ -233,7 +270,7 @@ Event Engine<Rule>::earliest(int i, const Vec3& ri, const Vec3& vi, const Event&
   const CellExit exit = first_cell_exit(grid_, grid_.cell(i), ri, vi);
   if (collision.time < now_ + exit.time) return collision;
   later_[i] = collision;
-  return {now_ + exit.time, exit.face >= 0 ? -1 - exit.face : -1, 0u};
+  return exit.face >= 0 ? Event::crossing(now_ + exit.time, exit.face) : Event{};
 }
 
 // Particle i is at now_; finds its earliest event: the first face of its cell
@@ -253,7 +290,7 @@ Event Engine<Rule>::finish_event(int i, const Search& s) {
   int partner = -1;
   finish_search(ri, vi, s, best, partner);
   if (partner < 0) return earliest(i, ri, vi, Event{});
-  return earliest(i, ri, vi, {now_ + best, partner, m_[partner].count});
+  return earliest(i, ri, vi, Event::collision(now_ + best, partner, m_[partner].count));
 }
 
 // Particle i crosses `face` of its cell into the next one, its velocity
@@ -266,7 +303,7 @@ Event Engine<Rule>::finish_event(int i, const Search& s) {
 template <class Rule>
 Event Engine<Rule>::cross(int i, int face) {
   const Event kept = later_[i];
-  if (kept.partner >= 0) __builtin_prefetch(&m_[kept.partner]);
+  if (kept.is_collision()) __builtin_prefetch(&m_[kept.partner()]);
   advance(i);
   const int to = cell_across_face(grid_, grid_.cell(i), face, L_, m_[i].r, image_[i]);
   const int d = face / 2, side = face % 2 == 1 ? 1 : -1;
@@ -275,13 +312,13 @@ Event Engine<Rule>::cross(int i, int face) {
   Search s;
   start_search(to, lo, hi, s);
   grid_.move(i, to);
-  if (kept.partner >= 0 && m_[kept.partner].count != kept.partner_count) return find_event(i);
+  if (kept.is_collision() && m_[kept.partner()].count != kept.partner_count) return find_event(i);
   const Vec3 ri = m_[i].r, vi = m_[i].v;
   double best = kept.time - now_;
   int partner = -1;
   finish_search(ri, vi, s, best, partner);
   if (partner < 0) return earliest(i, ri, vi, kept);
-  return earliest(i, ri, vi, {now_ + best, partner, m_[partner].count});
+  return earliest(i, ri, vi, Event::collision(now_ + best, partner, m_[partner].count));
 }
 
 template <class Rule>
@@ -295,7 +332,7 @@ void Engine<Rule>::note_collision_gap(int i, double gap, int partner) {
     std::ostringstream s;
     s << "inelastic collapse at t = " << now_ << ": particle " << id_[i] << " collided " << rule_.collapse_limit()
       << " times in a row (last with particle " << id_[partner] << ") without simulated time advancing";
-    throw CollapseError(s.str(), now_);
+    throw RunStopped(StopReason::kInelasticCollapse, s.str(), now_);
   }
 }
 
@@ -328,7 +365,6 @@ void Engine<Rule>::collide(int i, int j) {
 
 template <class Rule>
 RunStatus Engine<Rule>::run_until(double t_stop, std::int64_t max_events, const volatile std::sig_atomic_t* interrupt) {
-  if (!built_) rebuild();
   const std::int64_t last_event = c_.events + max_events;
   while (true) {
     if (RunStatus paused; pause_due(c_.events, last_event, interrupt, paused)) return paused;
@@ -340,8 +376,9 @@ RunStatus Engine<Rule>::run_until(double t_stop, std::int64_t max_events, const 
         // sorted); what the event will read next is not.
         __builtin_prefetch(&m_[next]);
         grid_.prefetch_cell(next);
-        const int partner = calendar_.event(next).partner;
-        if (partner >= 0) {  // its record and its own calendar entry (to be rescheduled)
+        const Event& upcoming = calendar_.event(next);
+        if (upcoming.is_collision()) {  // its partner's record and calendar entry (to be rescheduled)
+          const int partner = upcoming.partner();
           __builtin_prefetch(&m_[partner]);
           grid_.prefetch_cell(partner);
           calendar_.prefetch_event(partner);
@@ -351,8 +388,8 @@ RunStatus Engine<Rule>::run_until(double t_stop, std::int64_t max_events, const 
     if (ev.time > t_stop) break;
     now_ = ev.time;
     ++c_.events;
-    const int code = ev.partner;
-    if (code >= 0) {
+    if (ev.is_collision()) {
+      const int code = ev.partner();
       if (m_[code].count != ev.partner_count) {  // partner collided since: stale
         ++c_.stale;
         advance(i);
@@ -368,27 +405,18 @@ RunStatus Engine<Rule>::run_until(double t_stop, std::int64_t max_events, const 
       collide(i, code);
       calendar_.schedule(i, finish_event(i, si));
       calendar_.schedule(code, finish_event(code, sj));
+      if (c_.collisions >= next_rebuild_) {  // the engine's own schedule, never the caller's
+        move_all_to_now();
+        rebuild();
+      }
+    } else if (ev.kind() == EventKind::kCrossing) {
+      calendar_.schedule(i, cross(i, ev.face()));
     } else {
-      calendar_.schedule(i, cross(i, -1 - code));
+      break;  // nothing left to happen (only with t_stop = +inf)
     }
   }
   now_ = std::max(now_, t_stop);
   return RunStatus::kReached;
-}
-
-double kinetic_energy_per_particle(const EngineBase& e) {
-  CompensatedSum s;
-  const Motion* m = e.motion();
-  for (std::size_t i = 0; i < e.size(); ++i) s.add(0.5 * dot(m[i].v, m[i].v));
-  return s.value() / double(e.size());
-}
-
-Vec3 total_momentum(const EngineBase& e) {
-  CompensatedSum s[3];
-  const Motion* m = e.motion();
-  for (std::size_t i = 0; i < e.size(); ++i)
-    for (int d = 0; d < 3; ++d) s[d].add(m[i].v[d]);
-  return {s[0].value(), s[1].value(), s[2].value()};
 }
 
 template class Engine<ElasticRule>;

@@ -191,4 +191,35 @@ void EventCalendar::sift_down(int pos) {
   entry_[p].where = -2 - pos;
 }
 
+namespace {
+// The calendar's scalars as one record.
+struct CalendarScalars {
+  double base, width, inv_width;
+  std::int64_t years;
+  std::int32_t nb, current, ahead, spare;
+};
+}  // namespace
+
+void EventCalendar::save(StateWriter& out, const std::string& prefix) const {
+  out.put(prefix + "entries", entry_);
+  out.put(prefix + "heads", heads_);
+  out.put(prefix + "heap", heap_);
+  out.put_value(prefix + "scalars", CalendarScalars{base_, width_, inv_width_, years_, nb_, current_, ahead_, 0});
+}
+
+void EventCalendar::load(const StateReader& in, const std::string& prefix) {
+  entry_ = in.get<Entry>(prefix + "entries");
+  heads_ = in.get<std::int32_t>(prefix + "heads");
+  heap_ = in.get<std::int32_t>(prefix + "heap");
+  const auto s = in.get_value<CalendarScalars>(prefix + "scalars");
+  base_ = s.base;
+  width_ = s.width;
+  inv_width_ = s.inv_width;
+  years_ = s.years;
+  nb_ = s.nb;
+  current_ = s.current;
+  ahead_ = s.ahead;
+  if (heads_.size() != std::size_t(nb_) + 1) in.fail(prefix + "heads does not match the calendar's bucket count");
+}
+
 }  // namespace coolgas

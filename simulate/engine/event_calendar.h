@@ -23,15 +23,46 @@
 #pragma once
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <vector>
+
+#include "simulate/engine/state_archive.h"
 
 namespace coolgas {
 
-struct Event {
-  double time = std::numeric_limits<double>::infinity();
-  std::int32_t partner = -1;       // >= 0: collision partner; < 0: meaning set by the engine
-  std::uint32_t partner_count = 0;  // the partner's collision count when predicted
+enum class EventKind {
+  kNone,       // nothing scheduled (time +inf)
+  kCollision,  // with partner()
+  kCrossing,   // of face() of the particle's cell (cell_grid.h numbers the faces)
 };
+
+// One particle's next event. Kind, partner and face share one 32-bit code so
+// that an event stays 16 bytes (two calendar entries per cache line): the
+// code is the partner (>= 0), kNoCode, or kFirstFaceCode - face.
+class Event {
+ public:
+  Event() = default;
+  // A time alone (engines that keep what happens beside the calendar).
+  explicit Event(double t) : time(t) {}
+  static Event collision(double t, int partner, std::uint32_t partner_count) { return {t, partner, partner_count}; }
+  static Event crossing(double t, int face) { return {t, kFirstFaceCode - face, 0}; }
+
+  EventKind kind() const {
+    return code_ >= 0 ? EventKind::kCollision : (code_ == kNoCode ? EventKind::kNone : EventKind::kCrossing);
+  }
+  bool is_collision() const { return code_ >= 0; }
+  int partner() const { return code_; }  // kind() == kCollision only
+  int face() const { return kFirstFaceCode - code_; }  // kind() == kCrossing only
+
+  double time = std::numeric_limits<double>::infinity();
+  std::uint32_t partner_count = 0;  // the partner's collision count when predicted
+
+ private:
+  static constexpr std::int32_t kNoCode = -1, kFirstFaceCode = -2;
+  Event(double t, std::int32_t code, std::uint32_t count) : time(t), partner_count(count), code_(code) {}
+  std::int32_t code_ = kNoCode;
+};
+static_assert(sizeof(Event) == 16, "two calendar entries per cache line");
 
 class EventCalendar {
  public:
@@ -49,6 +80,11 @@ class EventCalendar {
   int runner_up(int k) const { return k + 1 < int(heap_.size()) ? heap_[std::size_t(k) + 1] : -1; }
   void prefetch_event(int particle) const { __builtin_prefetch(&entry_[std::size_t(particle)]); }
 
+  // Every internal field, under names starting with `prefix` (checkpoints:
+  // the restored calendar returns the same events in the same order).
+  void save(StateWriter& out, const std::string& prefix) const;
+  void load(const StateReader& in, const std::string& prefix);
+
   // Statistics for benchmarks: how many years were started.
   std::int64_t years() const { return years_; }
   double bucket_width() const { return width_; }
@@ -61,6 +97,7 @@ class EventCalendar {
     // bucket index (0..nb-1), nb for overflow, kNone if absent,
     // or -2 - heap position when in the current bucket's heap.
     std::int32_t where = kNone;
+    std::int32_t spare = 0;  // explicit, so an entry has no padding bytes (checkpoints are written byte for byte)
   };
   static_assert(sizeof(Entry) == 32, "two events per cache line");
 

@@ -70,5 +70,70 @@ template std::vector<CollisionRecord> reference_collisions(Particles, const Elas
                                                            std::int64_t);
 template std::vector<CollisionRecord> reference_collisions(Particles, const ConstantRestitutionRule&, double,
                                                            double, std::int64_t);
+template std::vector<CollisionRecord> reference_collisions(Particles, const ViscoelasticRule&, double, double,
+                                                           std::int64_t);
+
+namespace {
+
+// Merges b into a (a < b) at the common present time: a moves to the centre of mass.
+void merge_into(Particles& p, AggregateState& a, int i, int j) {
+  const Vec3 d = minimum_image(p, i, j);
+  const double mi = a.mass[i], mj = a.mass[j], M = mi + mj;
+  for (int k = 0; k < 3; ++k) {
+    p.r[i][k] += (mj / M) * d[k];
+    p.r[i][k] -= p.L * std::floor(p.r[i][k] / p.L);
+    p.v[i][k] = (mi * p.v[i][k] + mj * p.v[j][k]) / M;
+  }
+  a.mass[i] = M;
+  a.diameter[i] = std::cbrt(std::pow(a.diameter[i], 3) + std::pow(a.diameter[j], 3));
+  a.mass[j] = a.diameter[j] = 0;
+  a.id[j] = -1;
+  p.r[j] = p.v[j] = Vec3{};
+}
+
+// The smallest id overlapping aggregate k, or -1.
+int smallest_overlap(const Particles& p, const AggregateState& a, int k) {
+  for (int j = 0; j < int(p.size()); ++j) {
+    if (j == k || a.id[j] < 0) continue;
+    const Vec3 d = minimum_image(p, k, j);
+    const double sigma = 0.5 * (a.diameter[k] + a.diameter[j]);
+    if (dot(d, d) < sigma * sigma) return j;
+  }
+  return -1;
+}
+
+}  // namespace
+
+std::vector<CollisionRecord> reference_merges(Particles p, AggregateState a, double now, double t_end,
+                                              std::int64_t max_merges) {
+  const int n = int(p.size());
+  std::vector<CollisionRecord> out;
+  while (std::int64_t(out.size()) < max_merges) {
+    double best = kNever;
+    int bi = -1, bj = -1;
+    for (int i = 0; i < n; ++i) {
+      if (a.id[i] < 0) continue;
+      for (int j = i + 1; j < n; ++j) {
+        if (a.id[j] < 0) continue;
+        const Vec3 dv{p.v[j].x - p.v[i].x, p.v[j].y - p.v[i].y, p.v[j].z - p.v[i].z};
+        const double sigma = 0.5 * (a.diameter[i] + a.diameter[j]);
+        const double t = time_to_contact(minimum_image(p, i, j), dv, sigma * sigma);
+        if (t < best) best = t, bi = i, bj = j;
+      }
+    }
+    if (bi < 0 || now + best > t_end) break;
+    now += best;
+    for (int k = 0; k < n; ++k)
+      for (int d = 0; d < 3; ++d) p.r[k][d] += p.v[k][d] * best;
+    int k = bi;
+    for (int other = bj; other >= 0; other = smallest_overlap(p, a, k)) {
+      const int keep = std::min(k, other), gone = std::max(k, other);
+      merge_into(p, a, keep, gone);
+      out.push_back({keep, gone, now});
+      k = keep;
+    }
+  }
+  return out;
+}
 
 }  // namespace coolgas

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "simulate/engine/aggregation_engine.h"
 #include "simulate/engine/engine.h"
 
 namespace coolgas {
@@ -17,5 +18,14 @@ namespace coolgas {
 template <class Rule>
 std::vector<CollisionRecord> reference_collisions(Particles p, const Rule& rule, double now, double t_end,
                                                   std::int64_t max_collisions);
+
+// Ballistic aggregation the slow way: at each step every pair of present
+// aggregates is predicted (minimum image, σ = (d_i + d_j)/2), all move to the
+// earliest contact, that pair merges (centre of mass, summed mass and volume,
+// momentum kept; the smaller id survives), and then, as long as the new
+// aggregate overlaps any other, it merges with the smallest such id. Returns
+// every merge as (kept, absorbed, time), up to t_end or max_merges.
+std::vector<CollisionRecord> reference_merges(Particles p, AggregateState a, double now, double t_end,
+                                              std::int64_t max_merges);
 
 }  // namespace coolgas

@@ -5,6 +5,7 @@
 
 #include "simulate/engine/aggregation_engine.h"
 #include "simulate/engine/engine.h"
+#include "simulate/engine/state_archive.h"
 #include "simulate/run/scene.h"
 
 namespace coolgas {
@@ -14,5 +15,8 @@ namespace coolgas {
 std::unique_ptr<EngineBase> make_engine(const Scene& scene, Particles particles, double now,
                                         const EngineCounters& counters = {},
                                         const AggregateState* aggregates = nullptr);
+
+// The engine of the scene's model with the exact state `state` holds (a checkpoint).
+std::unique_ptr<EngineBase> restore_engine(const Scene& scene, const StateReader& state);
 
 }  // namespace coolgas

@@ -2,8 +2,12 @@
 
 #include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <csignal>
+#include <cstdlib>
+#include <memory>
+#include <optional>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -15,6 +19,7 @@
 #include "common/trajectory/h5md_writer.h"
 #include "common/progress.h"
 #include "common/tsv.h"
+#include "simulate/run/checkpoint.h"
 #include "simulate/run/engine_factory.h"
 #include "simulate/start/initial_state.h"
 #include "simulate/run/resume_point.h"
@@ -35,9 +40,26 @@ void install_signal_handlers() {
   sigaction(SIGTERM, &sa, nullptr);
 }
 
-// Events between progress checks: small enough for a lively display, large
-// enough that the check costs nothing.
+// Events between progress and checkpoint checks: small enough for a lively
+// display, large enough that the check costs nothing.
 constexpr std::int64_t kEventsPerSlice = 1 << 20;
+
+// Wall-clock seconds between periodic checkpoints (what a SIGKILL can cost
+// at most); COOLGAS_CHECKPOINT_INTERVAL overrides it. A checkpoint of
+// 10^5 particles is ~15 MB: at this interval it costs far below 1 %
+// (README, "Restarts").
+constexpr double kCheckpointInterval = 300;
+
+double checkpoint_interval() {
+  const char* s = std::getenv("COOLGAS_CHECKPOINT_INTERVAL");
+  if (!s || !*s) return kCheckpointInterval;
+  char* end = nullptr;
+  const double v = std::strtod(s, &end);
+  if (*end != '\0' || !(v >= 0))
+    throw InputError(std::string("COOLGAS_CHECKPOINT_INTERVAL = '") + s +
+                     "' is not a number of seconds >= 0 (unset it for the default of 300)");
+  return v;
+}
 
 std::string read_file(const std::string& path) {
   std::ifstream f(path);
@@ -47,81 +69,114 @@ std::string read_file(const std::string& path) {
   return ss.str();
 }
 
-ObservableRow observe(const EngineBase& e) {
-  if (e.masses()) {  // aggregation: masses differ, and the aggregate observables are asked for
-    const AggregateSummary a = summarize_aggregates(e);
-    ObservableRow row{e.now(), e.counters().collisions, e.counters().below_delta, a.kinetic_energy,
-                      {a.momentum.x, a.momentum.y, a.momentum.z}};
-    row.aggregates = a.aggregates;
-    row.mean_mass = a.mean_mass;
-    row.largest_mass = a.largest_mass;
-    return row;
+ObservableRow row_of(const Observables& o) {
+  ObservableRow row{o.time, o.collisions, o.below_delta, o.kinetic_energy, {o.momentum.x, o.momentum.y, o.momentum.z}};
+  if (o.aggregates) {
+    row.aggregates = o.aggregates->aggregates;
+    row.mean_mass = o.aggregates->mean_mass;
+    row.largest_mass = o.aggregates->largest_mass;
   }
-  const Vec3 p = total_momentum(e);
-  return {e.now(), e.counters().collisions, e.counters().below_delta, kinetic_energy_per_particle(e), {p.x, p.y, p.z}};
+  return row;
 }
 
-FrameView frame(const EngineBase& e) {
-  const Motion* m = e.motion();
-  FrameView f{e.now(),    e.counters().collisions, e.counters().below_delta, &m[0].r.x, e.images()[0].data(),
-              &m[0].v.x, kMotionStride,           kMotionStride};
-  f.id = e.ids();  // all three nullptr unless the model is aggregation
-  f.mass = e.masses();
-  f.diameter = e.diameters();
-  return f;
+// The writer's view of a frame (which must outlive it).
+FrameView view_of(const Frame& f) {
+  FrameView v{f.time, f.collisions, f.below_delta, &f.position[0].x, f.image[0].data(), &f.velocity[0].x, 3, 3};
+  if (!f.id.empty()) {
+    v.id = f.id.data();
+    v.mass = f.mass.data();
+    v.diameter = f.diameter.data();
+  }
+  return v;
 }
 
 // Drives the engine from stop to stop, writing as it goes.
 class Driver {
  public:
-  Driver(const Scene& scene, EngineBase& engine, H5mdWriter& writer, double e0, bool quiet)
-      : scene_(scene), engine_(engine), writer_(writer), e0_(e0), progress_(!quiet) {}
+  // `interval`: wall-clock seconds between periodic checkpoints.
+  Driver(const Scene& scene, EngineBase& engine, H5mdWriter& writer, std::string path, bool quiet, double interval)
+      : scene_(scene), engine_(engine), writer_(writer), path_(std::move(path)),
+        e0_(1.5 * initial_temperature(scene)), progress_(!quiet), interval_(interval),
+        last_checkpoint_(clock::now()) {}
+
+  // A resumed run: the file holds every output up to `written` (its last
+  // dump); `pending` are the observables after the checkpoint's own last
+  // dump, up to the engine's time.
+  void resume_after(double written, const std::vector<ObservableRow>& pending) {
+    written_ = last_dump_ = written;
+    for (const ObservableRow& row : pending) record(row);
+  }
 
   int run() {
     const double t0 = engine_.now();
     const std::int64_t c0 = engine_.counters().collisions;
     for (const StopTime& stop : stop_times(scene_)) {
-      if (stop.t <= t0) continue;
+      if (stop.t < t0) continue;  // (a stop at t0 itself may be due: a checkpoint is taken before its stop)
       if (!advance_to(stop.t)) return finish_interrupted();
-      if (stop.observe) writer_.add_observables(observe(engine_));
-      if (stop.dump) {
-        engine_.synchronize();
-        writer_.add_frame(frame(engine_));
-      }
+      if (stop.observe) record(row_of(engine_.observables()));
+      if (stop.dump) dump();
     }
     writer_.flush();
+    checkpoint();  // so that extending run.t_end continues exactly
     report_rate(c0);
     return kExitOk;
   }
 
-  // Called after a CollapseError (or an aggregate too large for the box):
-  // the state is made consistent and dumped.
-  int finish_collapsed(const std::string& message) {
-    engine_.synchronize();
-    writer_.add_observables(observe(engine_));
-    writer_.add_frame(frame(engine_));
+  // The first dump of a new run, and its checkpoint.
+  void start() {
+    record(row_of(engine_.observables()));
+    dump();
+  }
+  void checkpoint() {
+    write_checkpoint(path_, scene_, engine_, last_dump_, pending_);
+    last_checkpoint_ = clock::now();
+  }
+
+  // Called when the engine cannot go on: its state is written as the last dump.
+  int finish_stopped(const std::string& message) {
+    record(row_of(engine_.observables()));
+    dump();
     std::cerr << "coolgas-simulate: error: " << message << " (the state at t = " << engine_.now()
               << " is written as the last dump)\n";
     return kExitCollapse;
   }
 
  private:
+  using clock = std::chrono::steady_clock;
+
+  // One row of observables, unless the file holds it already.
+  void record(const ObservableRow& row) {
+    if (row.time <= written_) return;
+    writer_.add_observables(row);
+    pending_.push_back(row);
+  }
+
+  // A frame at the engine's time (the engine itself is not touched).
+  void dump() {
+    const double t = engine_.now();
+    if (t > written_) {
+      const Frame f = engine_.frame();
+      writer_.add_frame(view_of(f));
+    }
+    last_dump_ = t;
+    pending_.clear();
+  }
+
   bool advance_to(double t) {
     while (true) {
-      switch (engine_.run_until(t, kEventsPerSlice, &g_interrupt)) {
-        case RunStatus::kReached: show_progress(); return true;
-        case RunStatus::kInterrupted: return false;
-        case RunStatus::kEventBudget: show_progress(); break;
-      }
+      const RunStatus status = engine_.run_until(t, kEventsPerSlice, &g_interrupt);
+      if (status == RunStatus::kInterrupted) return false;
+      if (std::chrono::duration<double>(clock::now() - last_checkpoint_).count() >= interval_) checkpoint();
+      show_progress();
+      if (status == RunStatus::kReached) return true;
     }
   }
 
   int finish_interrupted() {
-    engine_.synchronize();
-    writer_.add_observables(observe(engine_));
-    writer_.add_frame(frame(engine_));
+    writer_.flush();
+    checkpoint();
     std::cerr << "\ncoolgas-simulate: interrupted by signal " << int(g_interrupt) << " at t = " << engine_.now()
-              << "; final dump written, continue with --resume\n";
+              << "; checkpoint written, continue with --resume\n";
     return kExitInterrupted;
   }
 
@@ -135,7 +190,7 @@ class Driver {
     std::ostringstream s;
     s.precision(3);
     s << "t = " << t << " / " << scene_.t_end << "  collisions " << coll << " (" << coll / std::max(secs, 1e-9)
-      << "/s)  E/E0 = " << observe(engine_).kinetic_energy / e0_ << "  ETA ~"
+      << "/s)  E/E0 = " << engine_.observables().kinetic_energy / e0_ << "  ETA ~"
       << Progress::format_duration(eta);
     progress_.show(s.str());
   }
@@ -152,8 +207,14 @@ class Driver {
   const Scene& scene_;
   EngineBase& engine_;
   H5mdWriter& writer_;
+  std::string path_;
   double e0_;
   Progress progress_;
+  double interval_;
+  clock::time_point last_checkpoint_;
+  double written_ = -1;    // the file holds every output up to this time
+  double last_dump_ = -1;  // the time of the file's last complete dump
+  std::vector<ObservableRow> pending_;  // observables written after that dump
 };
 
 RunParameters parameters_of(const Scene& s) {
@@ -189,41 +250,48 @@ void check_writable(const std::string& out, bool force) {
   if (access(d.c_str(), W_OK) != 0) throw InputError("cannot write '" + out + "': directory '" + d + "' is not writable");
 }
 
-int drive(const Scene& scene, EngineBase& engine, H5mdWriter& writer, bool quiet) {
-  Driver driver(scene, engine, writer, 1.5 * initial_temperature(scene), quiet);
+int drive(Driver& driver, const Scene& scene) {
   try {
     return driver.run();
-  } catch (const CollapseError& e) {
-    const std::string hint = scene.model == CollisionModel::kAggregation ? ""
+  } catch (const RunStopped& e) {
+    const std::string hint = e.reason == StopReason::kAggregateTooLarge ? ""
                              : scene.delta > 0 ? "; increase collision.delta (now " + format_number(scene.delta) + ")"
                                                : "; set collision.delta > 0 (the paper uses 1e-4)";
-    return driver.finish_collapsed(e.what() + hint);
+    return driver.finish_stopped(e.what() + hint);
   }
 }
 
 int start_new(const SimulationRequest& req) {
   const Scene scene = parse_scene(read_file(req.scene_path), req.scene_path, req.overrides);
+  const double interval = checkpoint_interval();
   const std::string out = req.output.empty() ? default_output(req.scene_path) : req.output;
   check_writable(out, req.force);
-  auto engine = make_engine(scene, initial_state(scene), 0.0);
+  std::unique_ptr<EngineBase> engine;
+  try {
+    engine = make_engine(scene, initial_state(scene, &g_interrupt), 0.0);
+  } catch (const SetupInterrupted&) {
+  }
   if (g_interrupt) {
     std::cerr << "coolgas-simulate: interrupted by signal " << int(g_interrupt) << " during set-up; nothing written\n";
     return kExitInterrupted;
   }
   // Write the first dump to a temporary name and move it into place only
   // then: a run that fails to start leaves no file, and --force replaces an
-  // old file only with a readable new one.
+  // old file only with a readable new one. An old run's checkpoint goes
+  // first, so it can never be taken for this run's.
   const std::string tmp = out + ".partial";
   H5mdWriter writer = H5mdWriter::create(tmp, parameters_of(scene), true);
+  Driver driver(scene, *engine, writer, out, req.quiet, interval);
   try {
-    writer.add_observables(observe(*engine));
-    writer.add_frame(frame(*engine));
-    writer.rename(out);
+    driver.start();
+    remove_checkpoint(out);
+    writer.rename(out);  // errors from here on name the real output
   } catch (...) {
     std::filesystem::remove(tmp);
     throw;
   }
-  return drive(scene, *engine, writer, req.quiet);
+  driver.checkpoint();  // from here on, resume is exact from any stop
+  return drive(driver, scene);
 }
 
 int resume(const SimulationRequest& req) {
@@ -232,6 +300,7 @@ int resume(const SimulationRequest& req) {
     if (!key_changeable_on_resume(key))
       throw InputError("--set " + key + " cannot change on --resume: only run.* and output.* keys can");
   }
+  const double interval = checkpoint_interval();
   ResumePoint rp = read_resume_point(req.resume);
   const Scene scene = parse_scene(rp.scene_toml, req.resume + ":/parameters/scene", req.overrides);
   if (rp.time >= scene.t_end) {
@@ -239,11 +308,25 @@ int resume(const SimulationRequest& req) {
               << "; nothing to do (extend it with --set run.t_end=...)\n";
     return kExitOk;
   }
-  auto engine = make_engine(scene, std::move(rp.particles), rp.time, rp.counters,
-                            rp.aggregates ? &*rp.aggregates : nullptr);
+  // The checkpoint when there is one (exact), else the last dump (the same
+  // physics, but not the same trajectory bit for bit).
+  std::optional<RunCheckpoint> ck = read_checkpoint(req.resume, scene);
+  if (ck && ck->last_dump > rp.time)
+    throw InputError("cannot resume '" + req.resume + "': its checkpoint follows a dump at t = " +
+                     format_number(ck->last_dump) + " that the file does not hold (last dump t = " +
+                     format_number(rp.time) + "); remove '" + checkpoint_path(req.resume) +
+                     "' to resume from the last dump");
+  std::unique_ptr<EngineBase> engine =
+      ck ? std::move(ck->engine)
+         : make_engine(scene, std::move(rp.particles), rp.time, rp.counters, rp.aggregates ? &*rp.aggregates : nullptr);
+  if (!ck && !req.quiet)
+    std::cerr << "coolgas-simulate: no checkpoint '" << checkpoint_path(req.resume)
+              << "'; continuing from the last dump (not bit-identical to an uninterrupted run)\n";
   H5mdWriter writer = H5mdWriter::reopen(req.resume);
   writer.update_scene(scene.to_toml());
-  return drive(scene, *engine, writer, req.quiet);
+  Driver driver(scene, *engine, writer, req.resume, req.quiet, interval);
+  driver.resume_after(rp.time, ck ? ck->pending : std::vector<ObservableRow>{});
+  return drive(driver, scene);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
-// One run of coolgas-simulate: scene -> initial state (or resume point) ->
-// engine -> observables and dumps in an H5MD file, with progress, signals
-// and collapse handled. The main() only parses the command line.
+// One run of coolgas-simulate: scene -> initial state (or checkpoint, or
+// resume point) -> engine -> observables and dumps in an H5MD file, with
+// checkpoints beside it (checkpoint.h), progress, signals and collapse
+// handled. The main() only parses the command line.
 #pragma once
 #include <string>
 #include <vector>
@@ -16,8 +17,9 @@ struct SimulationRequest {
   bool quiet = false;                  // no progress line
 };
 
-// Returns the process exit code: 0 done, 3 interrupted by a signal (a final
-// dump was written), 4 inelastic collapse (a final dump was written).
+// Returns the process exit code: 0 done, 3 interrupted by a signal (a
+// checkpoint was written: --resume continues exactly), 4 inelastic collapse
+// or an aggregate too large (the state was written as the last dump).
 // Throws InputError for bad input, before anything is written, and
 // WriteError (exit code 5) when writing the trajectory fails.
 int run_simulation(const SimulationRequest& request);

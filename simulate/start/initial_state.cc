@@ -64,14 +64,14 @@ double initial_temperature(const Scene& s) {
   return unit_time_temperature(double(s.N) / (s.L * s.L * s.L), s.phi);
 }
 
-Particles initial_state(const Scene& s) {
+Particles initial_state(const Scene& s, InterruptFlag interrupt) {
   Particles p;
   p.L = s.L;
   // Positions first, the other arrays only after the placement: its search
   // structures and the positions are the set-up's memory peak.
   p.r.resize(std::size_t(s.N));
   Random rng(std::uint64_t(s.seed));
-  if (s.init == InitialPositions::kRandom) place_random_sequential(p, s.N, rng);
+  if (s.init == InitialPositions::kRandom) place_random_sequential(p, s.N, rng, interrupt);
   else place_fcc(p, s.N, rng);
   p.resize(std::size_t(s.N));
   const double T0 = initial_temperature(s);
@@ -82,7 +82,9 @@ Particles initial_state(const Scene& s) {
     std::vector<Vec3> relaxed;
     {
       Engine<ElasticRule> melt(std::move(p), ElasticRule{}, 0.0);
-      melt.run_until(s.equilibrate, std::numeric_limits<std::int64_t>::max(), nullptr);
+      if (melt.run_until(s.equilibrate, std::numeric_limits<std::int64_t>::max(), interrupt) ==
+          RunStatus::kInterrupted)
+        throw SetupInterrupted();
       relaxed = melt.release_positions();
     }
     p = Particles();

@@ -6,12 +6,14 @@
 #pragma once
 #include "simulate/engine/particles.h"
 #include "simulate/run/scene.h"
+#include "simulate/start/setup_interrupt.h"
 
 namespace coolgas {
 
 // Throws InputError if the positions cannot be placed (random sequential
-// addition saturating, a lattice too dense for the box).
-Particles initial_state(const Scene& scene);
+// addition saturating, a lattice too dense for the box), and
+// SetupInterrupted within a fraction of a second of *interrupt being set.
+Particles initial_state(const Scene& scene, InterruptFlag interrupt = nullptr);
 
 // The temperature of the initial state (per velocity component).
 double initial_temperature(const Scene& scene);

@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "simulate/engine/cell_grid.h"
 #include "simulate/engine/particles.h"
 
 namespace coolgas {
@@ -187,16 +188,12 @@ void CentreGrid::for_each_near(std::size_t cell, F&& f) const {
   std::size_t cells[27];
   std::uint8_t offset[27];
   int k = 0;
-  for (int oz = 0; oz < 3; ++oz)
-    for (int oy = 0; oy < 3; ++oy) {
-      const int row = index(0, wrap(cy + oy - 1), wrap(cz + oz - 1));
-      for (int ox = 0; ox < 3; ++ox) {
-        const std::size_t c = std::size_t(row + wrap(cx + ox - 1));
-        cells[k] = c;
-        offset[k] = std::uint8_t((oz * 3 + oy) * 3 + ox);
-        k += bit(occupied_, c);
-      }
-    }
+  for_each_neighbour_cell(n_, 0.0, {cx, cy, cz}, [&](const NeighbourCell& nb) {
+    const auto c = std::size_t(nb.index);
+    cells[k] = c;
+    offset[k] = std::uint8_t(((nb.offset.z + 1) * 3 + nb.offset.y + 1) * 3 + nb.offset.x + 1);
+    k += bit(occupied_, c);
+  });
   Slot slots[27];
   for (int j = 0; j < k; ++j) slots[j] = first_[cells[j]];
   for (int j = 0; j < k; ++j) {

@@ -71,11 +71,6 @@ FreeVoxels::FreeVoxels(int cells_per_side, double cell_width)
   for (int level = 0; level < int(std::size(sides_)); ++level) sides_[level] = std::ldexp(w_, -level);
 }
 
-std::size_t FreeVoxels::cell_index(int x, int y, int z) const {
-  const auto wrap = [&](int k) { return k < 0 ? k + n_ : (k >= n_ ? k - n_ : k); };
-  return (std::size_t(wrap(z)) * std::size_t(n_) + std::size_t(wrap(y))) * std::size_t(n_) + std::size_t(wrap(x));
-}
-
 FreeVoxels::Views FreeVoxels::views_of(const Vec3& offset, bool voxels) const {
   Views v;
   for (int d = 0; d < 3; ++d)
@@ -108,13 +103,12 @@ void FreeVoxels::drop_coarse(Cell& cell, std::uint64_t emptied) {
 
 void FreeVoxels::mark_covered_coarse(int cx, int cy, int cz, const Vec3& offset) {
   const Views v = views_of(offset, false);
-  for (int k = 0; k < 27; ++k) {
-    const int ox = k % 3, oy = k / 3 % 3, oz = k / 9;
-    const SphereOverCell s(v.axis[0][ox], v.axis[1][oy], v.axis[2][oz]);
-    if (!s.may_cover_coarse()) continue;
+  for_each_neighbour_cell(n_, 0.0, {cx, cy, cz}, [&](const NeighbourCell& nb) {
+    const SphereOverCell s = sphere_over(v, nb.offset);
+    if (!s.may_cover_coarse()) return;
     const std::uint64_t covered = s.covered_coarse();
-    if (covered != 0) cells_[cell_index(cx + ox - 1, cy + oy - 1, cz + oz - 1)].listed |= covered;
-  }
+    if (covered != 0) cells_[std::size_t(nb.index)].listed |= covered;
+  });
 }
 
 // After pass 1: the open coarse cubes are the others; each cell's index
@@ -147,22 +141,18 @@ std::uint64_t* FreeVoxels::slab_masks(int slab) {
 
 void FreeVoxels::mark_covered_voxels(int cx, int cy, int cz, const Vec3& offset) {
   const Views v = views_of(offset, true);
-  for (int oz = 0; oz < 3; ++oz) {
-    const int slab = (cz + oz - 1 + n_) % n_;
-    std::uint64_t* const masks = slab_masks(slab);
-    for (int oy = 0; oy < 3; ++oy)
-      for (int ox = 0; ox < 3; ++ox) {
-        const SphereOverCell s(v.axis[0][ox], v.axis[1][oy], v.axis[2][oz]);
-        if (!s.may_cover_voxel()) continue;
-        const std::uint64_t covering = s.covering_coarse();
-        if (covering == 0) continue;
-        const Cell& c = cells_[cell_index(cx + ox - 1, cy + oy - 1, cz + oz - 1)];
-        for (std::uint64_t m = covering & c.listed; m != 0; m &= m - 1) {
-          const int b = std::countr_zero(m);
-          masks[c.first + std::uint32_t(rank_of(c.listed, b))] &= ~s.covered_voxels(b);
-        }
-      }
-  }
+  for_each_neighbour_cell(n_, 0.0, {cx, cy, cz}, [&](const NeighbourCell& nb) {
+    std::uint64_t* const masks = slab_masks(nb.cell.z);  // asked for even if untouched: the slab is set up
+    const SphereOverCell s = sphere_over(v, nb.offset);
+    if (!s.may_cover_voxel()) return;
+    const std::uint64_t covering = s.covering_coarse();
+    if (covering == 0) return;
+    const Cell& c = cells_[std::size_t(nb.index)];
+    for (std::uint64_t m = covering & c.listed; m != 0; m &= m - 1) {
+      const int b = std::countr_zero(m);
+      masks[c.first + std::uint32_t(rank_of(c.listed, b))] &= ~s.covered_voxels(b);
+    }
+  });
 }
 
 // The centres of slabs [0, done) are done: slab s of cells, reached by the
@@ -278,30 +268,30 @@ void FreeVoxels::cover(int cx, int cy, int cz, const Vec3& offset) {
   // of the 27 the sphere covers a voxel of (or which hold bricks), then
   // their records and masks all asked for at once, then the work.
   const Views v = views_of(offset, true);
-  int active[27];
+  CellCoord active[27];
   std::size_t cells[27];
   std::uint64_t covering[27];
   int n = 0;
-  for (int k = 0; k < 27; ++k) {
-    const SphereOverCell s(v.axis[0][k % 3], v.axis[1][k / 3 % 3], v.axis[2][k / 9]);
-    const std::size_t c = cell_index(cx + k % 3 - 1, cy + k / 3 % 3 - 1, cz + k / 9 - 1);
+  for_each_neighbour_cell(n_, 0.0, {cx, cy, cz}, [&](const NeighbourCell& nb) {
+    const SphereOverCell s = sphere_over(v, nb.offset);
+    const auto c = std::size_t(nb.index);
     const std::uint64_t cubes = s.may_cover_voxel() ? s.covering_coarse() : 0;
-    if (cubes == 0 && !(brick_cells_[c >> 6] >> (c & 63) & 1)) continue;
-    active[n] = k;
+    if (cubes == 0 && !(brick_cells_[c >> 6] >> (c & 63) & 1)) return;
+    active[n] = nb.offset;
     cells[n] = c;
     covering[n++] = cubes;
     __builtin_prefetch(&cells_[c]);
-  }
+  });
   for (int j = 0; j < n; ++j) {
     const std::uint64_t* m = masks_.data() + cells_[cells[j]].first;
     __builtin_prefetch(m);
     __builtin_prefetch(m + 8);
   }
   for (int j = 0; j < n; ++j) {
-    const int k = active[j];
-    const SphereOverCell s(v.axis[0][k % 3], v.axis[1][k / 3 % 3], v.axis[2][k / 9]);
+    const CellCoord o = active[j];
+    const SphereOverCell s = sphere_over(v, o);
     Cell& cell = cells_[cells[j]];
-    const Vec3 r{offset.x - (k % 3 - 1) * w_, offset.y - (k / 3 % 3 - 1) * w_, offset.z - (k / 9 - 1) * w_};
+    const Vec3 r{offset.x - o.x * w_, offset.y - o.y * w_, offset.z - o.z * w_};
     const std::int64_t delta = cover_cell(cells[j], cell, s, covering[j] & cell.listed, r);
     if (delta != 0) add_weight(cells[j], delta);
   }

@@ -22,6 +22,7 @@
 #include <span>
 #include <vector>
 
+#include "simulate/engine/cell_grid.h"
 #include "simulate/engine/particles.h"
 #include "common/random.h"
 #include "simulate/start/rsa_sub_cubes.h"
@@ -107,7 +108,10 @@ class FreeVoxels {
     AxisView axis[3][3];
   };
   Views views_of(const Vec3& offset, bool voxels) const;
-  std::size_t cell_index(int x, int y, int z) const;
+  // The sphere as the neighbour cell at offset o (each -1..1) sees it.
+  static SphereOverCell sphere_over(const Views& v, const CellCoord& o) {
+    return {v.axis[0][o.x + 1], v.axis[1][o.y + 1], v.axis[2][o.z + 1]};
+  }
   void mark_covered_coarse(int cx, int cy, int cz, const Vec3& offset);
   void open_slabs();
   std::uint64_t* slab_masks(int slab);

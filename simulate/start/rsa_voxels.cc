@@ -40,8 +40,9 @@ double checked_side(double L) {
 
 class Placer {
  public:
-  explicit Placer(Particles& p)
-      : p_(p), grid_(checked_side(p.L)), L_(p.L), half_(p.L / 2), top_(std::nextafter(p.L, 0.0)) {}
+  Placer(Particles& p, InterruptFlag interrupt)
+      : p_(p), grid_(checked_side(p.L)), L_(p.L), half_(p.L / 2), top_(std::nextafter(p.L, 0.0)),
+        interrupt_(interrupt) {}
 
   // Places spheres 0, 1, ... up to N; returns how many fit (N unless no room
   // is left before, or the trial budget runs out).
@@ -80,6 +81,8 @@ class Placer {
   Particles& p_;
   CentreGrid grid_;
   double L_, half_, top_;
+  InterruptFlag interrupt_;
+  std::int64_t since_check_ = 0;  // voxel trials since the interrupt flag was last looked at
   double trials_ = 0;
   std::vector<Vec3> near_;  // scratch: the centres around one cell, relative to its corner,
   std::vector<std::int32_t> near_ids_;  // and their ids
@@ -109,6 +112,7 @@ std::int64_t Placer::plain_phase(std::int64_t N, Random& rng) {
       ++window_hits;
     }
     if (++window == kWindow) {
+      throw_if_interrupted(interrupt_);
       if (double(window_hits) < kSwitchAcceptance * double(kWindow)) break;
       window = window_hits = 0;
     }
@@ -126,6 +130,10 @@ std::int64_t Placer::voxel_phase(std::int64_t i, std::int64_t N, Random& rng) {
   voxels.build([&](auto&& f) { grid_.for_each_centre(f); });
   while (i < N) {
     if (trials_ > budget || voxels.empty()) break;
+    if (++since_check_ == kWindow) {
+      since_check_ = 0;
+      throw_if_interrupted(interrupt_);
+    }
     const FreeVoxels::Voxel v = voxels.draw(rng);
     const Vec3 corner = grid_.corner(v.cell);
     const Vec3 x = uniform_in({corner.x + v.lo.x, corner.y + v.lo.y, corner.z + v.lo.z}, v.side, rng);
@@ -192,8 +200,8 @@ void Placer::cover_around(FreeVoxels& voxels, const Vec3& x) const {
 
 }  // namespace
 
-void place_random_sequential(Particles& p, std::int64_t N, Random& rng) {
-  Placer placer(p);
+void place_random_sequential(Particles& p, std::int64_t N, Random& rng, InterruptFlag interrupt) {
+  Placer placer(p, interrupt);
   const std::int64_t placed = placer.fill(N, rng);
   if (placed < N) saturated(p.L, placed, N);
 }
@@ -203,7 +211,7 @@ std::int64_t saturate_random_sequential(double L, Random& rng) {
   p.L = L;
   // More than fit: unit spheres pack at most sqrt(2) per unit volume.
   p.r.resize(std::size_t(std::sqrt(2.0) * L * L * L) + 1);
-  Placer placer(p);
+  Placer placer(p, nullptr);
   return placer.fill(std::int64_t(p.r.size()), rng);
 }
 

@@ -15,14 +15,16 @@
 #pragma once
 #include <cstdint>
 
-#include "simulate/engine/particles.h"
 #include "common/random.h"
+#include "simulate/engine/particles.h"
+#include "simulate/start/setup_interrupt.h"
 
 namespace coolgas {
 
 // Places p.r[0..N) (p.L set, p sized to N). Deterministic for a given rng
-// state. Throws InputError if the packing saturates before N spheres.
-void place_random_sequential(Particles& p, std::int64_t N, Random& rng);
+// state. Throws InputError if the packing saturates before N spheres, and
+// SetupInterrupted once *interrupt is set (looked at every 4096 trials).
+void place_random_sequential(Particles& p, std::int64_t N, Random& rng, InterruptFlag interrupt = nullptr);
 
 // Random sequential addition in a periodic box of side L until no room is
 // left for another sphere; returns how many were placed (for tests of the

@@ -40,5 +40,36 @@ TEST(CellGrid, CoordInvertsIndexAcrossTheLargestGrid) {
   }
 }
 
+// The partner search's specialised walk (interior cells without shifts)
+// visits exactly the cells of the one periodic walker, in the same order and
+// with the same shifts, for every cell and every slab a crossing searches.
+TEST(NeighbourCells, SpecialisedSearchMatchesThePeriodicWalker) {
+  for (const int n : {3, 4, 5, 7}) {
+    const double L = 1.1 * n;
+    const CellGrid grid(L, 1.0, 1);
+    ASSERT_EQ(grid.cells_per_side(), n);
+    for (int slab = -1; slab < 6; ++slab) {  // -1: all 27; else the 9 beyond face `slab`
+      int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
+      if (slab >= 0) lo[slab / 2] = hi[slab / 2] = slab % 2 ? 1 : -1;
+      for (int cell = 0; cell < n * n * n; ++cell) {
+        const CellCoord c = grid.coord(cell);
+        int cells[27];
+        double shifts[27][3];
+        bool wraps = false;
+        const int count = neighbour_cells(grid, L, c, lo, hi, cells, shifts, wraps);
+        int k = 0;
+        for_each_neighbour_cell(n, L, c, lo, hi, [&](const NeighbourCell& nb) {
+          ASSERT_LT(k, count);
+          EXPECT_EQ(cells[k], nb.index) << "n " << n << " cell " << cell << " slab " << slab;
+          EXPECT_EQ(grid.index(nb.cell), nb.index);
+          for (int d = 0; d < 3; ++d) EXPECT_EQ(wraps ? shifts[k][d] : 0.0, nb.shift[d]);
+          ++k;
+        });
+        EXPECT_EQ(k, count);
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace coolgas

@@ -1,43 +1,107 @@
-// The fast engine (cells, calendar, lazy positions) reproduces the collision
-// sequence of the slow reference engine (all pairs, priority queue) on small
-// systems. Chaos amplifies round-off differences, so only the first few
-// collisions per particle are compared.
+// Every engine against a slow, plainly correct reference, in one typed test
+// body: the three rules of Engine<Rule> (cells, calendar, lazy positions)
+// against the all-pairs reference engine, and the aggregation engine (chains,
+// a grid that is rebuilt as aggregates grow) against the all-pairs
+// aggregation reference. Chaos amplifies round-off differences, so only the
+// first few events per particle are compared.
 #include <gtest/gtest.h>
 
-#include "simulate/run/engine_factory.h"
-#include "simulate/start/initial_state.h"
+#include <memory>
+
+#include "simulate/engine/aggregation_engine.h"
+#include "simulate/engine/engine.h"
 #include "simulate/engine/reference_engine.h"
+#include "simulate/start/initial_state.h"
 #include "tests/support/scenes.h"
 
 namespace coolgas {
 namespace {
 
+// A case: a start, the fast engine on it, the reference's sequence, and how
+// many events to compare.
 template <class Rule>
-void expect_same_sequence(const Scene& scene, const Rule& rule, int collisions) {
-  const Particles start = initial_state(scene);
-  const auto ref = reference_collisions(start, rule, 0.0, 1e9, collisions);
-  ASSERT_EQ(int(ref.size()), collisions);
-  Engine<Rule> fast(start, rule, 0.0);
+struct RuleCase {
+  using EngineType = Engine<Rule>;
+  static std::unique_ptr<EngineType> engine(const Particles& p, const Rule& rule) {
+    return std::make_unique<EngineType>(p, rule, 0.0);
+  }
+  static std::vector<CollisionRecord> reference(const Particles& p, const Rule& rule, int n) {
+    return reference_collisions(p, rule, 0.0, 1e9, n);
+  }
+};
+
+struct Elastic : RuleCase<ElasticRule> {
+  static Scene scene() { return test::elastic_scene(120, 0.15, 3); }
+  static ElasticRule rule() { return {}; }
+  static constexpr int kEvents = 300;
+};
+struct DenseElastic : RuleCase<ElasticRule> {
+  static Scene scene() { return test::elastic_scene(200, 0.35, 5); }
+  static ElasticRule rule() { return {}; }
+  static constexpr int kEvents = 400;
+};
+struct Inelastic : RuleCase<ConstantRestitutionRule> {
+  static Scene scene() { return test::inelastic_scene(120, 0.15, 0.5, 1e-3, 4); }
+  static ConstantRestitutionRule rule() { return {0.5, 1e-3}; }
+  static constexpr int kEvents = 300;
+};
+struct Viscoelastic : RuleCase<ViscoelasticRule> {
+  static Scene scene() { return test::elastic_scene(120, 0.15, 6); }
+  static ViscoelasticRule rule() { return {0.3, 0.0}; }
+  static constexpr int kEvents = 300;
+};
+// 400 unit spheres at phi = 0.05 until 300 merges: the largest aggregate
+// outgrows the cells (the grid is rebuilt) and merges chain.
+struct Aggregation {
+  using EngineType = AggregationEngine;
+  struct NoRule {};
+  static Scene scene() {
+    Scene s = test::elastic_scene(400, 0.05, 7);
+    s.equilibrate = 0;
+    return s;
+  }
+  static NoRule rule() { return {}; }
+  static constexpr int kEvents = 300;
+  static std::unique_ptr<EngineType> engine(const Particles& p, NoRule) {
+    return std::make_unique<EngineType>(p, AggregateState::unit_spheres(p.size()), 0.0);
+  }
+  static std::vector<CollisionRecord> reference(const Particles& p, NoRule, int n) {
+    return reference_merges(p, AggregateState::unit_spheres(p.size()), 0.0, 1e9, n);
+  }
+};
+
+template <class Case>
+class EngineVsReference : public ::testing::Test {};
+using Cases = ::testing::Types<Elastic, DenseElastic, Inelastic, Viscoelastic, Aggregation>;
+TYPED_TEST_SUITE(EngineVsReference, Cases);
+
+TYPED_TEST(EngineVsReference, SameEventSequence) {
+  const Particles start = initial_state(TypeParam::scene());
+  const int n = TypeParam::kEvents;
+  const auto ref = TypeParam::reference(start, TypeParam::rule(), n);
+  ASSERT_EQ(int(ref.size()), n);
+  auto fast = TypeParam::engine(start, TypeParam::rule());
   std::vector<CollisionRecord> log;
-  fast.record_collisions(&log);
-  while (int(log.size()) < collisions) fast.run_until(fast.now() + 0.1, 1 << 30, nullptr);
-  for (int k = 0; k < collisions; ++k) {
-    ASSERT_EQ(log[k].i, ref[k].i) << "collision " << k;
-    ASSERT_EQ(log[k].j, ref[k].j) << "collision " << k;
-    ASSERT_NEAR(log[k].t, ref[k].t, 1e-9 * (1 + ref[k].t)) << "collision " << k;
+  fast->record_collisions(&log);
+  while (int(log.size()) < n) fast->run_until(fast->now() + 0.1, 1 << 30, nullptr);
+  for (int k = 0; k < n; ++k) {
+    ASSERT_EQ(log[k].i, ref[k].i) << "event " << k;
+    ASSERT_EQ(log[k].j, ref[k].j) << "event " << k;
+    ASSERT_NEAR(log[k].t, ref[k].t, 1e-9 * (1 + ref[k].t)) << "event " << k;
   }
 }
 
-TEST(EngineVsReference, ElasticSequenceMatches) {
-  expect_same_sequence(test::elastic_scene(120, 0.15, 3), ElasticRule{}, 300);
-}
-
-TEST(EngineVsReference, InelasticSequenceMatches) {
-  expect_same_sequence(test::inelastic_scene(120, 0.15, 0.5, 1e-3, 4), ConstantRestitutionRule{0.5, 1e-3}, 300);
-}
-
-TEST(EngineVsReference, DenseSequenceMatches) {
-  expect_same_sequence(test::elastic_scene(200, 0.35, 5), ElasticRule{}, 400);
+// The aggregation case really goes through chains and grid rebuilds.
+TEST(EngineVsReferenceAggregation, TheCaseHasChainsAndRebuilds) {
+  const Particles start = initial_state(Aggregation::scene());
+  const auto ref = Aggregation::reference(start, {}, Aggregation::kEvents);
+  int chained = 0;
+  for (std::size_t k = 1; k < ref.size(); ++k) chained += ref[k].t == ref[k - 1].t;
+  EXPECT_GT(chained, 0);
+  auto fast = Aggregation::engine(start, {});
+  const double width = fast->cell_width();
+  while (fast->counters().collisions < Aggregation::kEvents) fast->run_until(fast->now() + 0.1, 1 << 30, nullptr);
+  EXPECT_NE(fast->cell_width(), width);
 }
 
 }  // namespace

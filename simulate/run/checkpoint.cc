@@ -1,0 +1,109 @@
+#include "simulate/run/checkpoint.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+
+#include "common/error.h"
+#include "simulate/engine/state_archive.h"
+#include "simulate/run/engine_factory.h"
+
+namespace coolgas {
+
+namespace {
+
+// The physics a checkpoint belongs to: the scene's [system] and [collision]
+// tables (run.* and output.* may change on resume).
+std::string physics_of(const Scene& s) {
+  Scene p;
+  p.N = s.N;
+  p.L = s.L;
+  p.phi = s.phi;
+  p.seed = s.seed;
+  p.init = s.init;
+  p.equilibrate = s.equilibrate;
+  p.model = s.model;
+  p.r0 = s.r0;
+  p.delta = s.delta;
+  p.viscoelastic_b = s.viscoelastic_b;
+  return p.to_toml();
+}
+
+std::vector<char> bytes_of(const std::string& s) { return {s.begin(), s.end()}; }
+
+[[noreturn]] void fail_io(const std::string& what, const std::string& path) {
+  throw std::runtime_error("cannot write checkpoint '" + path + "': " + what + " (" + std::strerror(errno) + ")");
+}
+
+// Makes a rename inside `dir` durable.
+void sync_directory(const std::string& dir) {
+  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY);
+  if (fd < 0) return;  // best effort: the data itself is already on disk
+  ::fsync(fd);
+  ::close(fd);
+}
+
+}  // namespace
+
+std::string checkpoint_path(const std::string& trajectory) { return trajectory + ".checkpoint"; }
+
+void write_checkpoint(const std::string& trajectory, const Scene& scene, const EngineBase& engine, double last_dump,
+                      const std::vector<ObservableRow>& pending) {
+  const std::string path = checkpoint_path(trajectory), tmp = path + ".partial";
+  std::FILE* f = std::fopen(tmp.c_str(), "wb");
+  if (!f) fail_io("cannot create '" + tmp + "'", path);
+  try {
+    StateWriter out(f);
+    out.put("run/physics", bytes_of(physics_of(scene)));
+    out.put("run/model", bytes_of(scene.model_name()));
+    out.put_value("run/last_dump", last_dump);
+    out.put("run/pending_observables", pending);
+    engine.save(out);
+    out.finish();
+  } catch (const std::exception&) {
+    std::fclose(f);
+    std::remove(tmp.c_str());
+    fail_io("a write failed", path);
+  }
+  const bool synced = ::fsync(fileno(f)) == 0;
+  if (std::fclose(f) != 0 || !synced) {
+    std::remove(tmp.c_str());
+    fail_io("flushing to disk failed", path);
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    std::remove(tmp.c_str());
+    fail_io("renaming into place failed", path);
+  }
+  const auto dir = std::filesystem::path(path).parent_path();
+  sync_directory(dir.empty() ? "." : dir.string());
+}
+
+std::optional<RunCheckpoint> read_checkpoint(const std::string& trajectory, const Scene& scene) {
+  const std::string path = checkpoint_path(trajectory);
+  std::ifstream f(path, std::ios::binary);
+  if (!f) return std::nullopt;
+  std::vector<char> bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  const StateReader in(std::move(bytes), path);
+  const auto physics = in.get<char>("run/physics");
+  if (std::string(physics.begin(), physics.end()) != physics_of(scene))
+    in.fail("it belongs to a run of other physics than '" + trajectory + "' (remove it to resume from the last dump)");
+  RunCheckpoint c;
+  c.last_dump = in.get_value<double>("run/last_dump");
+  c.pending = in.get<ObservableRow>("run/pending_observables");
+  c.engine = restore_engine(scene, in);
+  return c;
+}
+
+void remove_checkpoint(const std::string& trajectory) {
+  std::error_code ignored;
+  std::filesystem::remove(checkpoint_path(trajectory), ignored);
+}
+
+}  // namespace coolgas

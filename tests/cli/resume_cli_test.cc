@@ -1,0 +1,194 @@
+// Exact resume from any stop, driven as a user would: a run stopped by
+// SIGINT, SIGTERM or SIGKILL at several moments and resumed to the end holds
+// every dump and observable bit for bit as the uninterrupted run; the dump
+// grid does not change the trajectory; set-up stops at once on a signal; a
+// damaged checkpoint is refused with one line.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "common/hdf5_file.h"
+#include "tests/support/cli_checks.h"
+#include "tests/support/run_command.h"
+#include "tests/support/simulate_cli.h"
+
+namespace coolgas {
+namespace {
+
+// A cooling, clustering gas; under a second of dynamics on one core.
+const char* kScene = R"([system]
+N = 8000
+phi = 0.2
+seed = 3
+equilibrate = 1
+[collision]
+model = "inelastic"
+r0 = 0.5
+delta = 1e-3
+[run]
+t_end = 2000
+[output]
+dumps_per_decade = 10
+)";
+
+std::string write_scene(const std::string& dir) { return test::write_file(dir, "gas.toml", kScene); }
+
+const char* const kDatasets[] = {
+    "particles/all/position/value", "particles/all/position/time", "particles/all/velocity/value",
+    "particles/all/image/value",    "observables/kinetic_energy/value", "observables/kinetic_energy/time",
+    "observables/collisions/value", "observables/total_momentum/value", "restart/time"};
+
+// The bytes of a whole dataset (any element type).
+std::vector<char> dataset_bytes(hid_t file, const std::string& path) {
+  h5::Handle d = h5::open_dataset(file, path);
+  const hid_t type = H5Dget_type(d.id());
+  const std::size_t size = H5Tget_size(type);
+  hsize_t n = 1;
+  for (hsize_t x : h5::shape(d.id())) n *= x;
+  std::vector<char> bytes(n * size);
+  if (n > 0) H5Dread(d.id(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, bytes.data());
+  H5Tclose(type);
+  return bytes;
+}
+
+// Every dump and observable of `b` equals that of `a`, bit for bit.
+void expect_same_trajectory(const std::string& a, const std::string& b) {
+  h5::Handle fa = h5::open_file(a, h5::Mode::kReadOnly), fb = h5::open_file(b, h5::Mode::kReadOnly);
+  for (const char* ds : kDatasets) {
+    const auto x = dataset_bytes(fa.id(), ds), y = dataset_bytes(fb.id(), ds);
+    ASSERT_EQ(x.size(), y.size()) << ds << " of " << b;
+    EXPECT_TRUE(x == y) << ds << " of " << b << " differs from the uninterrupted run";
+  }
+}
+
+// Starts the run to `out`, sends `signal` `delay` seconds after its t = 0
+// checkpoint appears and returns its exit code.
+int run_and_signal(const std::string& scene, const std::string& out, const std::string& signal, double delay,
+                   const std::string& env = "") {
+  const std::string cmd = env + " " + test::simulate(scene + " -o " + out) + " & pid=$!; n=0; while [ ! -f " + out +
+                          ".checkpoint ] && [ $n -lt 600 ]; do sleep 0.05; n=$((n+1)); done; sleep " +
+                          std::to_string(delay) + "; kill -" + signal + " $pid; wait $pid";
+  return test::run_command(cmd).exit_code;
+}
+
+class ResumeCli : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new std::string(test::scratch_dir("resume_reference"));
+    const auto r = test::run_command(test::simulate(write_scene(*dir_) + " -o " + *dir_ + "/whole.h5"));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  static void TearDownTestSuite() { delete dir_; }
+  static std::string whole() { return *dir_ + "/whole.h5"; }
+  static std::string scene() { return *dir_ + "/gas.toml"; }
+
+  // Stops a run with `signal` at each delay, resumes it to the end, and
+  // compares it with the uninterrupted run.
+  static void stop_resume_compare(const std::string& name, const std::string& signal, int expected_exit,
+                                  const std::string& env) {
+    const std::string dir = test::scratch_dir(name);
+    int stopped = 0;
+    for (const double delay : {0.05, 0.4, 1.0}) {
+      const std::string out = dir + "/run" + std::to_string(int(delay * 100)) + ".h5";
+      const int code = run_and_signal(scene(), out, signal, delay, env);
+      ASSERT_TRUE(code == expected_exit || code == 0) << signal << " after " << delay << " s: exit " << code;
+      stopped += code == expected_exit;
+      if (code != 0) {
+        const auto v = test::run_command(test::bin("coolgas-validate") + " " + out);
+        EXPECT_EQ(v.exit_code, 0) << v.out << v.err;
+        const auto r = test::run_command(test::simulate("--resume " + out));
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+      }
+      expect_same_trajectory(whole(), out);
+    }
+    EXPECT_GE(stopped, 2) << "the run ended before the signals: make the scene longer";
+  }
+
+  static std::string* dir_;
+};
+std::string* ResumeCli::dir_ = nullptr;
+
+TEST_F(ResumeCli, AfterSigintEveryLaterDumpIsBitIdentical) { stop_resume_compare("resume_sigint", "INT", 3, ""); }
+
+TEST_F(ResumeCli, AfterSigtermEveryLaterDumpIsBitIdentical) { stop_resume_compare("resume_sigterm", "TERM", 3, ""); }
+
+// With checkpoints every 0.2 s, a SIGKILL resumes from a mid-run checkpoint
+// (and replays the dumps written after it without writing them twice).
+TEST_F(ResumeCli, AfterSigkillEveryLaterDumpIsBitIdentical) {
+  stop_resume_compare("resume_sigkill", "KILL", 128 + 9, "COOLGAS_CHECKPOINT_INTERVAL=0.2");
+}
+
+TEST_F(ResumeCli, ExtendingAFinishedRunContinuesExactly) {
+  const std::string dir = test::scratch_dir("resume_extend");
+  const std::string out = dir + "/part.h5";
+  ASSERT_EQ(test::run_command(test::simulate(scene() + " -o " + out + " --set run.t_end=100")).exit_code, 0);
+  const auto r = test::run_command(test::simulate("--resume " + out + " --set run.t_end=2000"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  expect_same_trajectory(whole(), out);
+}
+
+// Observation never perturbs the trajectory: another dump grid gives the
+// same positions and velocities at the dumps both grids have.
+TEST_F(ResumeCli, TheDumpGridDoesNotChangeTheTrajectory) {
+  const std::string dir = test::scratch_dir("resume_dump_grid");
+  const std::string out = dir + "/sparse.h5";
+  ASSERT_EQ(test::run_command(test::simulate(scene() + " -o " + out + " --set output.dumps_per_decade=3")).exit_code, 0);
+  h5::Handle fa = h5::open_file(whole(), h5::Mode::kReadOnly), fb = h5::open_file(out, h5::Mode::kReadOnly);
+  h5::Handle ta = h5::open_dataset(fa.id(), "particles/all/position/time");
+  h5::Handle tb = h5::open_dataset(fb.id(), "particles/all/position/time");
+  const auto times_a = h5::read_all<double>(ta.id()), times_b = h5::read_all<double>(tb.id());
+  int common = 0;
+  for (std::size_t j = 0; j < times_b.size(); ++j)
+    for (std::size_t i = 0; i < times_a.size(); ++i) {
+      if (times_a[i] != times_b[j]) continue;
+      ++common;
+      for (const char* el : {"particles/all/position/value", "particles/all/velocity/value"}) {
+        h5::Handle da = h5::open_dataset(fa.id(), el), db = h5::open_dataset(fb.id(), el);
+        const auto x = h5::read_row<double>(da.id(), i), y = h5::read_row<double>(db.id(), j);
+        ASSERT_EQ(x.size(), y.size());
+        EXPECT_EQ(std::memcmp(x.data(), y.data(), x.size() * sizeof(double)), 0) << el << " at t = " << times_a[i];
+      }
+    }
+  EXPECT_GE(common, 4);  // t = 0, 1, 10, 100, 1000, 2000
+}
+
+// A long equilibration stops within a second of SIGINT or SIGTERM, leaving nothing.
+TEST(ResumeCliSetUp, SignalsStopALongEquilibrationAtOnce) {
+  const std::string dir = test::scratch_dir("resume_setup_signal");
+  const std::string scene = write_scene(dir);
+  for (const char* signal : {"INT", "TERM"}) {
+    const std::string out = dir + "/melt.h5";
+    const std::string cmd = "start=$(date +%s.%N); " + test::simulate(scene + " -o " + out + " --set system.equilibrate=1e6") +
+                            " & pid=$!; sleep 1; kill -" + signal +
+                            " $pid; t0=$(date +%s.%N); wait $pid; code=$?; "
+                            "echo \"$code $(echo \"$(date +%s.%N) - $t0\" | bc)\"";
+    const auto r = test::run_command(cmd);
+    double seconds = 99;
+    int code = -1;
+    ASSERT_EQ(std::sscanf(r.out.c_str(), "%d %lf", &code, &seconds), 2) << r.out << r.err;
+    EXPECT_EQ(code, 3) << signal << ": " << r.err;
+    EXPECT_LT(seconds, 1.0) << signal;
+    EXPECT_FALSE(std::filesystem::exists(out)) << signal;
+    EXPECT_FALSE(std::filesystem::exists(out + ".checkpoint")) << signal;
+  }
+}
+
+// A checkpoint that does not read back whole is refused with one line; the
+// trajectory itself is untouched.
+TEST(ResumeCliDamage, ADamagedCheckpointIsRefusedWithOneLine) {
+  const std::string dir = test::scratch_dir("resume_damaged");
+  const std::string out = dir + "/run.h5";
+  ASSERT_EQ(test::run_command(test::simulate(write_scene(dir) + " -o " + out + " --set run.t_end=10")).exit_code, 0);
+  const auto size = std::filesystem::file_size(out + ".checkpoint");
+  std::filesystem::resize_file(out + ".checkpoint", size / 2);
+  test::expect_refused_with_one_line(test::run_command(test::simulate("--resume " + out + " --set run.t_end=20")),
+                                     "ends early");
+  EXPECT_EQ(test::run_command(test::bin("coolgas-validate") + " " + out).exit_code, 0);
+}
+
+}  // namespace
+}  // namespace coolgas

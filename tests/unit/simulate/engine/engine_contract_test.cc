@@ -1,0 +1,101 @@
+// The contract every engine keeps with the runner (engine_base.h), checked
+// over every model through make_engine: how run_until is sliced (by time or by
+// event budget, with observables and frames read in between) changes
+// nothing; the budget is honoured exactly; frames are wrapped into the box;
+// momentum is kept; an engine restored from its saved state replays the
+// same events.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "common/random.h"
+#include "simulate/engine/engine.h"
+#include "simulate/run/engine_factory.h"
+#include "simulate/start/initial_state.h"
+#include "tests/support/saved_state.h"
+#include "tests/support/scenes.h"
+
+namespace coolgas {
+namespace {
+
+Scene scene_of(CollisionModel model) {
+  Scene s = test::inelastic_scene(1500, 0.2, 0.5, 1e-3, 9);
+  s.model = model;
+  s.viscoelastic_b = 0.3;
+  s.equilibrate = 0;
+  return s;
+}
+
+class EngineContract : public ::testing::TestWithParam<CollisionModel> {};
+
+// Aggregates outgrow this small box (L/3) by t ~ 25: stop before.
+double end_of(CollisionModel m) { return m == CollisionModel::kAggregation ? 8 : 40; }
+
+TEST_P(EngineContract, SlicingChangesNothingAndFramesAreWrapped) {
+  const Scene s = scene_of(GetParam());
+  const double kEnd = end_of(GetParam());
+  const Particles start = initial_state(s);
+  auto whole = make_engine(s, start, 0.0);
+  ASSERT_EQ(whole->run_until(kEnd, std::int64_t(1) << 40, nullptr), RunStatus::kReached);
+
+  auto sliced = make_engine(s, start, 0.0);
+  const Vec3 p0 = sliced->observables().momentum;
+  double speeds = 0;
+  for (const Vec3& v : sliced->frame().velocity) speeds += std::sqrt(dot(v, v));
+  Random rng(5);
+  std::unique_ptr<EngineBase> restored;
+  while (sliced->now() < kEnd) {
+    const double t = std::min(kEnd, sliced->now() + 2 * rng.uniform());
+    const std::int64_t budget = 1 + std::int64_t(rng.below(3000));
+    const std::int64_t events = sliced->counters().events;
+    const RunStatus status = sliced->run_until(t, budget, nullptr);
+    if (status == RunStatus::kEventBudget) EXPECT_EQ(sliced->counters().events - events, budget);
+    else EXPECT_LE(sliced->counters().events - events, budget);
+    const Frame f = sliced->frame();
+    for (const Vec3& r : f.position)
+      for (int d = 0; d < 3; ++d) ASSERT_TRUE(r[d] >= 0 && r[d] < s.L) << r[d];
+    const Vec3 p = sliced->observables().momentum;
+    for (int d = 0; d < 3; ++d) ASSERT_NEAR(p[d], p0[d], 1e-12 * speeds);
+    if (!restored && sliced->now() > kEnd / 2) restored = restore_engine(s, test::saved_state(*sliced));
+  }
+  ASSERT_TRUE(restored);
+  ASSERT_EQ(restored->run_until(kEnd, std::int64_t(1) << 40, nullptr), RunStatus::kReached);
+  EXPECT_GT(whole->counters().collisions, 500);
+  EXPECT_EQ(sliced->counters().events, whole->counters().events);
+  EXPECT_EQ(restored->counters().events, whole->counters().events);
+  test::expect_same_frame(sliced->frame(), whole->frame());
+  test::expect_same_frame(restored->frame(), whole->frame());
+  const Observables a = sliced->observables(), b = whole->observables();
+  EXPECT_EQ(a.kinetic_energy, b.kinetic_energy);
+  EXPECT_EQ(a.aggregates.has_value(), GetParam() == CollisionModel::kAggregation);
+}
+
+// Long enough for the engine's own rebuilds (every 200 collisions per
+// particle): they fall on the same events however the run is sliced, and a
+// restored engine keeps their schedule.
+TEST(EngineContractRebuilds, ScheduledRebuildsDoNotDependOnSlicing) {
+  const Scene s = test::elastic_scene(300, 0.2, 12);
+  const Particles start = initial_state(s);
+  const std::int64_t target = 300 * 700 / 2;  // 700 collisions per particle: three rebuilds
+  Engine<ElasticRule> whole(start, ElasticRule{}, 0.0), sliced(start, ElasticRule{}, 0.0);
+  while (whole.counters().collisions < target) whole.run_until(whole.now() + 50, std::int64_t(1) << 40, nullptr);
+  std::unique_ptr<Engine<ElasticRule>> restored;
+  Random rng(3);
+  while (sliced.now() < whole.now()) {
+    sliced.run_until(std::min(whole.now(), sliced.now() + rng.uniform()), 1 + std::int64_t(rng.below(5000)), nullptr);
+    if (!restored && sliced.counters().collisions > target / 2)
+      restored = std::make_unique<Engine<ElasticRule>>(ElasticRule{}, test::saved_state(sliced));
+  }
+  ASSERT_TRUE(restored);
+  restored->run_until(whole.now(), std::int64_t(1) << 40, nullptr);
+  EXPECT_EQ(sliced.counters().events, whole.counters().events);
+  test::expect_same_frame(sliced.frame(), whole.frame());
+  test::expect_same_frame(restored->frame(), whole.frame());
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryModel, EngineContract,
+                         ::testing::Values(CollisionModel::kElastic, CollisionModel::kInelastic,
+                                           CollisionModel::kViscoelastic, CollisionModel::kAggregation));
+
+}  // namespace
+}  // namespace coolgas
