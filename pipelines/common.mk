@@ -263,7 +263,9 @@ $(OUT)/fig3_clusters.png: $(TABLES)/snapshot_gas.png $(TABLES)/nm_gas.tsv $(TABL
 	  snapshot_time='$(SNAPSHOT_TIME)'; out='$$o'" $(PLOTS)/fig3_clusters.gp || exit 1; done
 
 # ---- Fig. 4: largest cluster M_max(t), gas for each phi of Fig. 2 and the snapshot run, BA
-MMAX_GAS_RUNS := $(SNAP_RUN) $(foreach p,$(PARAM_PHIS),$(firstword $(call param_runs,$(call param_name,$(p),$(R0),$(DELTA)))))
+# (the Fig. 2 run at PHI is the snapshot run's twin when both use one box: left out)
+MMAX_PHIS := $(if $(filter $(SNAP_L),$(PARAM_L)),$(filter-out $(PHI),$(PARAM_PHIS)),$(PARAM_PHIS))
+MMAX_GAS_RUNS := $(SNAP_RUN) $(foreach p,$(MMAX_PHIS),$(firstword $(call param_runs,$(call param_name,$(p),$(R0),$(DELTA)))))
 mmax_table = $(TABLES)/mmax_$(notdir $(basename $(1))).tsv
 MMAX_GAS := $(foreach r,$(MMAX_GAS_RUNS),$(call mmax_table,$(r)))
 MMAX_BA := $(foreach r,$(BA_RUNS),$(call mmax_table,$(r)))
