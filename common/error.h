@@ -2,7 +2,8 @@
 //
 // InputError is the user's mistake (bad scene, bad option, bad file): the
 // program prints its message as one line and exits with code 2. Anything else
-// is a bug or an environment failure and exits with code 1.
+// is a bug or an environment failure (a failed write, no memory) and exits
+// with code 1.
 #pragma once
 #include <stdexcept>
 #include <string>
@@ -15,5 +16,20 @@ struct InputError : std::runtime_error {
 
 // Exit codes used by every tool.
 enum ExitCode : int { kExitOk = 0, kExitFailure = 1, kExitInput = 2, kExitInterrupted = 3, kExitCollapse = 4 };
+
+// Longest error line a tool prints, in characters (a longer message keeps its
+// beginning and end around "…").
+inline constexpr std::size_t kMaxMessageChars = 200;
+// Longest user-given value quoted inside a message, in characters.
+inline constexpr std::size_t kMaxQuotedChars = 60;
+
+// `text` made fit for one line of at most `max_chars` characters: control
+// characters become \n, \t or \xNN, and a longer text keeps its first two
+// thirds and its last third around "…" (UTF-8 sequences are never split).
+std::string one_line(const std::string& text, std::size_t max_chars = kMaxMessageChars);
+
+// A user-given value as it appears inside a message: one_line with the
+// shorter limit for values.
+inline std::string shown(const std::string& value) { return one_line(value, kMaxQuotedChars); }
 
 }  // namespace coolgas
