@@ -13,7 +13,7 @@ std::string scene_help() {
   std::ostringstream s;
   s << "\nScene keys (TOML tables [system], [collision], [run], [output]; units: particle diameter, particle mass,\n"
        "initial mean collision time (Enskog with the Carnahan-Starling contact value)):\n";
-  for (const auto& k : coolgas::scene_keys()) s << "  " << k.key << " (" << k.type << "): " << k.help << "\n";
+  s << coolgas::scene_keys_help();
   s << "\nExit codes: 0 done, 2 bad input, 3 interrupted by SIGINT/SIGTERM (final dump written),\n"
        "4 inelastic collapse (set collision.delta > 0), or an aggregate grown wider than a third of the box\n"
        "(aggregation: use more particles); in both cases the state is written as the last dump.\n";
