@@ -100,8 +100,9 @@ double standard_deviation(const std::vector<double>& v) {
 CollapseFit optimize_collapse(const std::vector<ScalingCurve>& curves, const CollapseSearch& search) {
   if (curves.size() < 2)
     throw InputError("--optimize needs E(t) tables of at least 2 system sizes, got " + std::to_string(curves.size()));
-  if (search.bootstrap < 0)
-    throw InputError("--bootstrap " + std::to_string(search.bootstrap) + " is not allowed; it must be >= 0");
+  // Each replica is a full optimisation (milliseconds): 1e5 of them take minutes; errors need about 100.
+  if (search.bootstrap < 0 || search.bootstrap > 100000)
+    throw InputError("--bootstrap " + std::to_string(search.bootstrap) + " is not allowed; it must be in [0, 100000]");
   gsl_set_error_handler_off();
   const Minimum best = minimise(curves, search.theta0, search.z0, search.min_overlap_decades);
   if (best.quality >= kNoOverlapPenalty)

@@ -4,6 +4,7 @@
 
 #include "common/error.h"
 #include "common/hdf5_file.h"
+#include "simulate/start/configuration_check.h"
 
 namespace coolgas {
 
@@ -68,6 +69,7 @@ ResumePoint read_resume_point(const std::string& path) {
   h5::read_rows(img.id(), h5::Type::kInt32, last, 1, rp.particles.image.data());
   std::fill(rp.particles.t.begin(), rp.particles.t.end(), rp.time);
   if (h5::exists(id, "particles/all/id/value")) rp.aggregates = read_aggregates(id, path, last, n);
+  check_configuration(rp.particles, rp.aggregates ? &*rp.aggregates : nullptr, "cannot resume from '" + path + "'");
   return rp;
 }
 

@@ -12,6 +12,7 @@
 
 #include "common/error.h"
 #include "common/h5md_writer.h"
+#include "common/output_file.h"
 #include "common/progress.h"
 #include "common/tsv.h"
 #include "simulate/run/engine_factory.h"
@@ -175,14 +176,7 @@ std::string default_output(const std::string& scene_path) {
 }
 
 // Checked before the (possibly long) set-up, so a typo costs nothing.
-void check_writable(const std::string& out, bool force) {
-  if (!force && std::filesystem::exists(out))
-    throw InputError("output '" + out + "' exists; pass --force to overwrite it (or --resume it)");
-  const auto dir = std::filesystem::path(out).parent_path();
-  const std::string d = dir.empty() ? "." : dir.string();
-  if (!std::filesystem::is_directory(d)) throw InputError("cannot write '" + out + "': no directory '" + d + "'");
-  if (access(d.c_str(), W_OK) != 0) throw InputError("cannot write '" + out + "': directory '" + d + "' is not writable");
-}
+void check_writable(const std::string& out, bool force) { check_output_file(out, force); }
 
 int drive(const Scene& scene, EngineBase& engine, H5mdWriter& writer, bool quiet) {
   Driver driver(scene, engine, writer, 1.5 * initial_temperature(scene), quiet);
