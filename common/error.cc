@@ -48,15 +48,26 @@ Chars cut_middle(const Chars& chars, std::size_t from, std::size_t to, std::size
   return out;
 }
 
-// The longest quoted value ('...' or "..."), as [begin, end) inside the quotes.
-std::pair<std::size_t, std::size_t> longest_quoted(const Chars& chars) {
+// The longest value of the message, as [begin, end): a quoted text ('...' or
+// "...", inside the quotes) or a word without spaces (an unquoted path).
+std::pair<std::size_t, std::size_t> longest_value(const Chars& chars) {
   std::pair<std::size_t, std::size_t> best{0, 0};
+  auto consider = [&](std::size_t b, std::size_t e) {
+    if (e - b > best.second - best.first) best = {b, e};
+  };
   for (std::size_t i = 0; i < chars.size(); ++i) {
-    if (chars[i] != "'" && chars[i] != "\"") continue;
-    std::size_t j = i + 1;
-    while (j < chars.size() && chars[j] != chars[i]) ++j;
-    if (j == chars.size()) break;
-    if (j - i - 1 > best.second - best.first) best = {i + 1, j};
+    if (chars[i] == "'" || chars[i] == "\"") {
+      std::size_t j = i + 1;
+      while (j < chars.size() && chars[j] != chars[i]) ++j;
+      if (j < chars.size()) {
+        consider(i + 1, j);
+        i = j;
+        continue;
+      }
+    }
+    std::size_t j = i;
+    while (j < chars.size() && chars[j] != " ") ++j;
+    consider(i, j);
     i = j;
   }
   return best;
@@ -66,13 +77,14 @@ std::pair<std::size_t, std::size_t> longest_quoted(const Chars& chars) {
 
 std::string one_line(const std::string& text, std::size_t max_chars) {
   Chars chars = printable_characters(text);
-  // Quoted values (paths, scene strings) are shortened first, so that the
+  // Long values (paths, scene strings) are shortened first, so that the
   // message keeps the rule and the fix.
   constexpr std::size_t kMinQuoted = 24;
   while (chars.size() > max_chars) {
-    const auto [b, e] = longest_quoted(chars);
+    const auto [b, e] = longest_value(chars);
     if (e - b <= kMinQuoted) break;
-    const std::size_t keep = std::max(kMinQuoted, (e - b) - (chars.size() - max_chars));
+    const std::size_t excess = chars.size() - max_chars;
+    const std::size_t keep = e - b > kMinQuoted + excess ? (e - b) - excess : kMinQuoted;
     Chars cut = cut_middle(chars, b, e, keep, keep / 2);
     cut.insert(cut.begin(), chars.begin(), chars.begin() + std::ptrdiff_t(b));
     cut.insert(cut.end(), chars.begin() + std::ptrdiff_t(e), chars.end());

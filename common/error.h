@@ -24,8 +24,9 @@ inline constexpr std::size_t kMaxMessageChars = 200;
 inline constexpr std::size_t kMaxQuotedChars = 60;
 
 // `text` made fit for one line of at most `max_chars` characters: control
-// characters become \n, \t or \xNN, and a longer text keeps its first two
-// thirds and its last third around "…" (UTF-8 sequences are never split).
+// characters become \n, \t or \xNN; in a longer text the longest values
+// (quoted texts, words such as paths) are cut around "…" first, then the text
+// keeps its first two thirds and its last third (UTF-8 is never split).
 std::string one_line(const std::string& text, std::size_t max_chars = kMaxMessageChars);
 
 // A user-given value as it appears inside a message: one_line with the

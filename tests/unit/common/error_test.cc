@@ -47,5 +47,12 @@ TEST(OneLine, LongQuotedValuesAreCutBeforeTheRule) {
   EXPECT_NE(line.find("/out.h5': no directory '/dd"), std::string::npos) << line;
 }
 
+// Many values, none long enough to take the whole excess (a case the fuzz corpus found).
+TEST(OneLine, ManyMediumValuesStillFit) {
+  std::string text;
+  for (int i = 0; i < 40; ++i) text += std::string(30, char('a' + i % 26)) + " ";
+  EXPECT_LE(characters(one_line(text)), kMaxMessageChars);
+}
+
 }  // namespace
 }  // namespace coolgas
