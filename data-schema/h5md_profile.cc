@@ -11,7 +11,7 @@ using enum DataType;
 using enum RowCount;
 using enum ValueRule;
 
-// Version 2 adds the effects of issue 4: the viscoelastic model's constant,
+// Version 2 adds the effects models: the viscoelastic model's constant,
 // and for ballistic aggregation per-particle id (fill value -1 marks an
 // absent aggregate), mass and diameter, and the aggregate observables. All
 // optional: a file has them when its model uses them.

@@ -44,14 +44,18 @@ TEST(Pipeline, TinyPipelineRunsEndToEndAndIsIncremental) {
 
   for (const char* figure : kFigures) EXPECT_TRUE(is_png(out + "/" + figure)) << figure;
 
-  // The exponents, one row; every value finite, and the sane ranges of a tiny run.
+  // The exponents, one row; every value finite, and the ranges of a clustered gas.
   const Table exponents = read_table(out + "/exponents.tsv");
   ASSERT_EQ(exponents.rows.size(), 1u);
   for (std::size_t c = 0; c < exponents.columns.size(); ++c)
     EXPECT_TRUE(std::isfinite(exponents.rows[0][c])) << exponents.columns[c];
   const auto value = [&](const std::string& name) { return exponents.rows[0][exponents.column(name)]; };
-  EXPECT_GT(value("theta"), 0.5);
-  EXPECT_LT(value("theta"), 3.0);
+  // Past the homogeneous regime: Haff cooling gives E ~ t^-2 at late times, the
+  // clustered gas of the paper t^-6/5 (Pathak et al. 2014); a run stuck in
+  // Haff's regime would give theta near 2.
+  EXPECT_GT(value("theta"), 0.8);
+  EXPECT_LT(value("theta"), 1.7);
+  EXPECT_LT(value("theta_Lmax"), 1.7);
   EXPECT_GT(value("theta_err"), 0.0);
   EXPECT_GT(value("z"), 0.5);
   EXPECT_GT(value("theta_Lmax"), 0.5);
