@@ -40,8 +40,10 @@ TEST(OneLine, MultibyteCharactersAreNeverSplit) {
 }
 
 TEST(OneLine, LongQuotedValuesAreCutBeforeTheRule) {
-  const std::string path = "/" + std::string(150, 'd') + "/out.h5";
-  const std::string line = one_line("cannot write '" + path + "': no directory '/" + std::string(150, 'd') + "'");
+  const std::string folder(150, 'd');
+  std::string text = "cannot write '/";
+  text.append(folder).append("/out.h5': no directory '/").append(folder).append("'");
+  const std::string line = one_line(text);
   EXPECT_LE(characters(line), kMaxMessageChars);
   EXPECT_EQ(line.rfind("cannot write '/ddd", 0), 0u) << line;
   EXPECT_NE(line.find("/out.h5': no directory '/dd"), std::string::npos) << line;
