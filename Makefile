@@ -1,7 +1,7 @@
 # The two commands of the README, for a fresh Debian 12 machine (as root):
 #   make demo   install what is missing, build, run a short demo simulation
 #   make test   install what is missing, build, run the whole test suite (ctest)
-# Other targets: build, bench, clean. BUILD=dir picks the build folder,
+# Other targets: build, bench, install, clean. BUILD=dir picks the build folder,
 # NATIVE=1 tunes for this CPU (opt-in; the default build is portable).
 
 BUILD ?= build
@@ -13,10 +13,12 @@ CMAKE_FLAGS = -DCMAKE_BUILD_TYPE=Release $(if $(filter 1,$(NATIVE)),-DCOOLGAS_NA
 # the Python readers the tests use to check that real clients open our files.
 DEBIAN_PACKAGES := cmake make g++ pkg-config git \
   libhdf5-dev hdf5-tools libfftw3-dev libgsl-dev libeigen3-dev \
-  libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libtoml11-dev \
+  libgtest-dev libcli11-dev libtoml11-dev \
   gnuplot-nox python3 python3-h5py python3-mdanalysis
 
-.PHONY: deps configure build demo test bench clean
+PREFIX ?= /usr/local
+
+.PHONY: deps configure build demo test bench install clean
 
 deps:
 	@missing=""; for p in $(DEBIAN_PACKAGES); do \
@@ -49,6 +51,10 @@ bench: build
 	$(BUILD)/bench/cluster_bench
 	$(BUILD)/bench/structure_bench
 	$(BUILD)/bench/shape_bench
+
+# The programs into $(PREFIX)/bin.
+install: build
+	cmake --install $(BUILD) --prefix $(PREFIX)
 
 clean:
 	rm -rf $(BUILD)

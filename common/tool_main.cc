@@ -1,25 +1,110 @@
 #include "common/tool_main.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
+#include <cerrno>
+#include <csignal>
+#include <cstring>
 #include <iostream>
+#include <new>
+#include <streambuf>
 
 #include "common/error.h"
 
 namespace coolgas {
 
-int run_tool(const std::string& tool, const std::function<int()>& body) {
+namespace {
+
+// std::cout's buffer: writes straight to file descriptor 1 and keeps the
+// errno of the first failed write, which the iostream state alone loses.
+class StdoutBuffer : public std::streambuf {
+ public:
+  StdoutBuffer() {
+    setp(buf_, buf_ + sizeof buf_);
+    // A stdout closed by the caller (`>&-`): keep fd 1 taken, so that no file
+    // the tool opens becomes fd 1 and receives the table, and report EBADF.
+    if (::fcntl(1, F_GETFD) == -1 && errno == EBADF) {
+      error_ = EBADF;
+      const int fd = ::open("/dev/null", O_WRONLY);
+      if (fd > 1) ::dup2(fd, 1), ::close(fd);
+    }
+  }
+  ~StdoutBuffer() override { sync(); }
+  int error() const { return error_; }
+  // Flushes and closes fd 1, so that an error reported only at close (NFS,
+  // quota) is not lost either. Returns the first error, or 0.
+  int close() {
+    sync();
+    if (::close(1) != 0 && error_ == 0 && errno != EINTR) error_ = errno;
+    closed_ = true;
+    return error_;
+  }
+
+ protected:
+  int_type overflow(int_type c) override {
+    if (sync() != 0) return traits_type::eof();
+    if (!traits_type::eq_int_type(c, traits_type::eof())) {
+      *pptr() = traits_type::to_char_type(c);
+      pbump(1);
+    }
+    return traits_type::not_eof(c);
+  }
+  int sync() override {
+    const char* p = pbase();
+    while (p < pptr() && error_ == 0 && !closed_) {
+      const ssize_t n = ::write(1, p, std::size_t(pptr() - p));
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) error_ = n < 0 ? errno : EIO;
+      else p += n;
+    }
+    setp(buf_, buf_ + sizeof buf_);  // what failed is dropped, once
+    return error_ == 0 ? 0 : -1;
+  }
+
+ private:
+  char buf_[1 << 16];
+  int error_ = 0;
+  bool closed_ = false;
+};
+
+void report(const std::string& tool, const std::string& kind, const std::string& what) {
+  std::cerr << one_line(tool + ": " + kind + ": " + what) << "\n";
+}
+
+int run_body(const std::string& tool, const std::function<int()>& body) {
   try {
     return body();
   } catch (const InputError& e) {
-    std::cerr << tool << ": error: " << e.what() << "\n";
+    report(tool, "error", e.what());
     return kExitInput;
   } catch (const WriteError& e) {
-    std::cerr << tool << ": error: " << e.what() << "\n";
+    report(tool, "error", e.what());
     return kExitWrite;
+  } catch (const std::bad_alloc&) {
+    report(tool, "error", "out of memory (the input asks for more than this machine has)");
+    return kExitFailure;
   } catch (const std::exception& e) {
-    std::cerr << tool << ": internal error: " << e.what() << "\n";
+    report(tool, "internal error", e.what());
     return kExitFailure;
   }
+}
+
+}  // namespace
+
+int run_tool(const std::string& tool, const std::function<int()>& body) {
+  std::signal(SIGXFSZ, SIG_IGN);
+  std::signal(SIGPIPE, SIG_DFL);
+  static StdoutBuffer buffer;  // static: outlives anything written at exit
+  std::cout.rdbuf(&buffer);
+  int code = run_body(tool, body);
+  std::cout.flush();
+  if (const int err = buffer.close(); err != 0) {
+    report(tool, "error", std::string("cannot write stdout: ") + std::strerror(err));
+    if (code == kExitOk) code = kExitFailure;
+  }
+  return code;
 }
 
 bool parse_command_line(CLI::App& app, int argc, char** argv) {

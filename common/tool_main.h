@@ -1,5 +1,6 @@
 // The body of every coolgas main(): run the tool, turn exceptions into one
-// line on stderr and the documented exit code.
+// line on stderr and the documented exit code, and make sure the table on
+// stdout was really written.
 #pragma once
 #include <functional>
 #include <string>
@@ -10,8 +11,19 @@ class App;
 
 namespace coolgas {
 
-// Calls body(); InputError -> "<tool>: error: <what>" and exit code 2,
-// any other std::exception -> "<tool>: internal error: <what>" and exit 1.
+// Calls body() and returns its exit code. Around it:
+// - stdout (std::cout) is written through a buffer that remembers the first
+//   failed write; at the end it is flushed and closed, and a failure (disk
+//   full, `> /dev/full`, a closed stdout) becomes "<tool>: error: cannot
+//   write stdout: <cause>" and exit code 1, as coreutils do;
+// - a closed pipe (`| head`) ends the tool quietly through SIGPIPE, whose
+//   default action is restored even if the parent ignored it;
+// - SIGXFSZ is ignored, so a file-size limit (`ulimit -f`) makes the write
+//   fail with EFBIG (reported) instead of killing the process;
+// - InputError -> "<tool>: error: <what>" and exit code 2, std::bad_alloc ->
+//   "out of memory" and exit 1, any other std::exception -> "<tool>:
+//   internal error: <what>" and exit 1; every message is one line of at most
+//   kMaxMessageChars characters (common/error.h).
 int run_tool(const std::string& tool, const std::function<int()>& body);
 
 // Parses the command line with CLI11. Returns true when --help was asked for

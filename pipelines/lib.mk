@@ -21,8 +21,15 @@ numeric_sort = $(shell printf '%s\n' $(1) | sort -g)
 # The recipe of one run, $(RUNS)/NAME.h5 from $(SCENES)/NAME.toml: LAUNCH
 # prefixes the simulation (on a cluster it runs there), its wall time goes to
 # NAME.wall_s, and the trajectory is renamed into place only when complete.
+# An interrupted run (wall-time limit, pre-emption, Ctrl-C) leaves NAME.h5.part,
+# which the next make continues with --resume when it is newer than the scene;
+# only a .part that cannot be resumed (exit code 2: unreadable, no complete
+# dump) starts over. The wall time is then that of the last part.
 define simulate
 @mkdir -p $(@D)
-$(LAUNCH) sh $(PIPE)timed-run.sh $(basename $@).wall_s $(BIN)/coolgas-simulate $< -o $@.part --force --quiet
+$(LAUNCH) sh $(PIPE)timed-run.sh $(basename $@).wall_s sh -c '\
+  if [ -f "$$1.part" ] && [ "$$1.part" -nt "$$2" ]; then \
+    "$$0" --resume "$$1.part" --quiet; rc=$$?; [ $$rc -eq 2 ] || exit $$rc; \
+  fi; exec "$$0" "$$2" -o "$$1.part" --force --quiet' $(BIN)/coolgas-simulate $@ $<
 mv $@.part $@
 endef

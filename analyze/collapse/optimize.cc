@@ -152,8 +152,9 @@ BootstrapKind resampling_kind(const std::vector<SizeEnsemble>& sizes, const std:
 CollapseFit optimize_collapse(const std::vector<SizeEnsemble>& sizes, const CollapseSearch& search) {
   if (sizes.size() < 2)
     throw InputError("--optimize needs E(t) tables of at least 2 system sizes, got " + std::to_string(sizes.size()));
-  if (search.bootstrap < 0)
-    throw InputError("--bootstrap " + std::to_string(search.bootstrap) + " is not allowed; it must be >= 0");
+  // Each replica is a full optimisation (milliseconds): 1e5 of them take minutes; errors need about 100.
+  if (search.bootstrap < 0 || search.bootstrap > 100000)
+    throw InputError("--bootstrap " + std::to_string(search.bootstrap) + " is not allowed; it must be in [0, 100000]");
   gsl_set_error_handler_off();
   const std::vector<ScalingCurve> means = mean_curves(sizes);
   const Minimum best = minimise(means, search.theta0, search.z0, search.min_overlap_decades);

@@ -43,8 +43,9 @@ SpeedMoments speed_moments(std::span<const double> v) {
 }
 
 ComponentHistogram::ComponentHistogram(int bins, double ymax) : ymax_(ymax) {
-  if (bins < 2 || bins % 2 != 0)
-    throw InputError("--bins must be even and >= 2 (bins mirror about y = 0), got " + std::to_string(bins));
+  // More bins than 1e6 hold no sample each even for N = 1e8 particles, and cost memory and time per dump.
+  if (bins < 2 || bins % 2 != 0 || bins > 1000000)
+    throw InputError("--bins must be even and in [2, 1000000] (bins mirror about y = 0), got " + std::to_string(bins));
   if (!(ymax > 0) || !std::isfinite(ymax))
     throw InputError("--ymax must be a positive number, got " + format_number(ymax));
   width_ = 2 * ymax / bins;

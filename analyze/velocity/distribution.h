@@ -12,7 +12,7 @@ namespace coolgas {
 struct SpeedMoments {
   std::int64_t particles = 0;
   double v_rms = 0;      // per component: sqrt(<v_x^2 + v_y^2 + v_z^2> / 3)
-  double kappa = 0;      // <v^4>/<v^2>^2 - 5/3: zero for a Maxwellian (shared/oracles.md)
+  double kappa = 0;      // <v^4>/<v^2>^2 - 5/3: zero for a Maxwellian (tests/physics/README.md)
   double kappa_err = 0;  // standard error of kappa (delta method, see distribution.cc)
 };
 

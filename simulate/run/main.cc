@@ -13,7 +13,7 @@ std::string scene_help() {
   std::ostringstream s;
   s << "\nScene keys (TOML tables [system], [collision], [run], [output]; units: particle diameter, particle mass,\n"
        "initial mean collision time (Enskog with the Carnahan-Starling contact value)):\n";
-  for (const auto& k : coolgas::scene_keys()) s << "  " << k.key << " (" << k.type << "): " << k.help << "\n";
+  s << coolgas::scene_keys_help();
   s << "\nExit codes: 0 done, 2 bad input, 3 interrupted by SIGINT/SIGTERM (checkpoint written: --resume continues exactly),\n"
        "4 inelastic collapse (set collision.delta > 0), or an aggregate grown wider than a third of the box\n"
        "(aggregation: use more particles); in both cases the state is written as the last dump;\n"
@@ -31,13 +31,14 @@ int main(int argc, char** argv) {
     CLI::App app{"Event-driven MD of inelastic hard spheres in a periodic box; writes an H5MD trajectory "
                  "(data-schema/h5md-profile.md)."};
     app.add_option("scene", req.scene_path, "scene file (TOML)");
-    app.add_option("-o,--output", req.output, "output H5MD file (default: the scene's name with .h5)");
+    auto* output = app.add_option("-o,--output", req.output, "output H5MD file (default: the scene's name with .h5)");
     app.add_option("--set", req.overrides, "override a scene key, e.g. --set collision.r0=0.1 (repeatable)");
     app.add_option("--resume", req.resume, "continue FILE from its last dump (appends to FILE)");
     app.add_flag("--force", req.force, "overwrite an existing output file");
     app.add_flag("-q,--quiet", req.quiet, "no progress line on stderr");
     app.footer(scene_help());
     if (coolgas::parse_command_line(app, argc, argv)) return 0;
+    if (output->count() > 0 && req.output.empty()) throw coolgas::InputError("-o needs a file name, got ''");
     if (req.scene_path.empty() == req.resume.empty())
       throw coolgas::InputError("give either a scene file or --resume FILE (see --help)");
     return coolgas::run_simulation(req);

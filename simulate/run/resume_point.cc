@@ -1,6 +1,7 @@
 #include "simulate/run/resume_point.h"
 
 #include "common/trajectory/resume_frame.h"
+#include "simulate/start/configuration_check.h"
 
 namespace coolgas {
 
@@ -20,6 +21,7 @@ ResumePoint read_resume_point(const std::string& path) {
     rp.particles.t[i] = f.time;
   }
   if (f.aggregates) rp.aggregates = AggregateState{std::move(f.mass), std::move(f.diameter), std::move(f.id)};
+  check_configuration(rp.particles, rp.aggregates ? &*rp.aggregates : nullptr, "cannot resume from '" + path + "'");
   return rp;
 }
 

@@ -1,9 +1,14 @@
 #include "simulate/run/scene.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
+#include <set>
 #include <sstream>
+#include <stdexcept>
 #include <toml.hpp>
 
 #include "common/error.h"
@@ -12,35 +17,160 @@
 
 namespace coolgas {
 
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+using M = CollisionModel;
+
+// A TOML float that reads back to the same double.
+std::string toml_float(double x) {
+  std::string t = format_number(x);
+  if (t.find_first_of(".eEn") == std::string::npos) t += ".0";
+  return t;
+}
+std::string toml_string(const std::string& x) { return "\"" + x + "\""; }
+
+const char* const kInitNames[] = {"random", "fcc"};
+const char* const kModelNames[] = {"elastic", "inelastic", "viscoelastic", "aggregation"};
+
+// Index of `value` among the key's choices (already checked to be one).
+template <class Enum>
+Enum choice(const SceneKey& k, const SceneValue& v) {
+  const auto it = std::find(k.choices.begin(), k.choices.end(), std::get<std::string>(v));
+  return Enum(it - k.choices.begin());
+}
+const SceneKey& key_row(const char* name);
+
+}  // namespace
+
+// Order matters: to_toml() writes the tables and keys in this order.
 const std::vector<SceneKey>& scene_keys() {
   static const std::vector<SceneKey> keys = {
-      {"system.N", "integer", "number of particles (>= 2); give two of N, L, phi"},
-      {"system.L", "float", "box side, in particle diameters"},
-      {"system.phi", "float", "volume fraction N*pi/(6 L^3), in (0, 0.36] for init=random, (0, 0.74] for fcc"},
-      {"system.seed", "integer", "random seed for initial positions and velocities (default 1)"},
-      {"system.init", "string", "initial positions: \"random\" (random sequential addition, default) or \"fcc\""},
-      {"system.equilibrate", "float",
+      {"system.N", KeyType::kInteger, KeyNeed::kSize, "number of particles; give two of N, L, phi", 2, kInf, false,
+       false, {}, {},
+       [](Scene& s, const SceneValue& v) { s.N = std::get<std::int64_t>(v); },
+       [](const Scene& s) { return std::to_string(s.N); }},
+      {"system.L", KeyType::kFloat, KeyNeed::kSize, "box side, in particle diameters", 0, kInf, true, false, {}, {},
+       [](Scene& s, const SceneValue& v) { s.L = std::get<double>(v); },
+       [](const Scene& s) { return toml_float(s.L); }},
+      {"system.phi", KeyType::kFloat, KeyNeed::kSize,
+       "volume fraction N*pi/(6 L^3); at most 0.36 for init = \"random\", 0.7404 for \"fcc\"", 0, kMaxFccPhi, true,
+       false, {}, {},
+       [](Scene& s, const SceneValue& v) { s.phi = std::get<double>(v); },
+       [](const Scene& s) { return toml_float(s.phi); }},
+      {"system.seed", KeyType::kInteger, KeyNeed::kDefault, "random seed for initial positions and velocities", -kInf,
+       kInf, false, false, {}, {},
+       [](Scene& s, const SceneValue& v) { s.seed = std::get<std::int64_t>(v); },
+       [](const Scene& s) { return std::to_string(s.seed); }},
+      {"system.init", KeyType::kString, KeyNeed::kDefault,
+       "initial positions: \"random\" (random sequential addition) or \"fcc\"", 0, 0, false, false,
+       {std::begin(kInitNames), std::end(kInitNames)}, {},
+       [](Scene& s, const SceneValue& v) { s.init = choice<InitialPositions>(key_row("system.init"), v); },
+       [](const Scene& s) { return toml_string(kInitNames[int(s.init)]); }},
+      {"system.equilibrate", KeyType::kFloat, KeyNeed::kDefault,
        "elastic collision times run before t = 0 so the positions form an equilibrium fluid, then velocities "
-       "are drawn afresh (default 5; 0 starts from the raw packing)"},
-      {"collision.model", "string",
-       "\"elastic\" (default), \"inelastic\" (paper Eq. 1 with the delta cut-off), \"viscoelastic\" (restitution "
+       "are drawn afresh (0 starts from the raw packing)", 0, kInf, false, false, {}, {},
+       [](Scene& s, const SceneValue& v) { s.equilibrate = std::get<double>(v); },
+       [](const Scene& s) { return toml_float(s.equilibrate); }},
+      {"collision.model", KeyType::kString, KeyNeed::kDefault,
+       "\"elastic\", \"inelastic\" (paper Eq. 1 with the delta cut-off), \"viscoelastic\" (restitution "
        "rising to 1 as the impact speed falls; see collision.viscoelastic_b) or \"aggregation\" (ballistic "
-       "aggregation: spheres that touch merge, volumes add, momentum conserved)"},
-      {"collision.r0", "float", "coefficient of restitution, in (0, 1] (inelastic)"},
-      {"collision.delta", "float",
-       "cut-off: collisions with normal relative speed below delta are elastic, >= 0, in units of "
-       "diameter per initial collision time (inelastic, viscoelastic; the paper uses 1e-4; default 0)"},
-      {"collision.viscoelastic_b", "float",
-       "viscoelastic material constant b = A alpha^{2/5} (Schwager & Poeschel 1998), > 0, in units of "
+       "aggregation: spheres that touch merge, volumes add, momentum conserved)", 0, 0, false, false,
+       {std::begin(kModelNames), std::end(kModelNames)}, {},
+       [](Scene& s, const SceneValue& v) { s.model = choice<CollisionModel>(key_row("collision.model"), v); },
+       [](const Scene& s) { return toml_string(s.model_name()); }},
+      {"collision.r0", KeyType::kFloat, KeyNeed::kDefault, "coefficient of restitution", 0, 1, true, false, {},
+       {M::kInelastic},
+       [](Scene& s, const SceneValue& v) { s.r0 = std::get<double>(v); },
+       [](const Scene& s) { return toml_float(s.r0); }},
+      {"collision.viscoelastic_b", KeyType::kFloat, KeyNeed::kRequired,
+       "viscoelastic material constant b = A alpha^{2/5} (Schwager & Poeschel 1998), in units of "
        "(diameter per initial collision time)^(-1/5): r = 1 - 1.15344 b v^(1/5) + 0.79826 b^2 v^(2/5) - ... for "
-       "normal impact speed v (viscoelastic)"},
-      {"run.t_end", "float", "simulated time to stop at, > 0, in initial mean collision times"},
-      {"output.observables_per_decade", "integer", "observables recorded per decade of time (default 20)"},
-      {"output.dumps_per_decade", "integer", "trajectory dumps per decade of time (default 5)"},
-      {"output.t_min", "float", "first time of the log-spaced grids, > 0 (default 0.01)"},
-      {"output.dump_times", "array of floats", "extra dump times, e.g. [5, 10, 2000]"},
+       "normal impact speed v", 0, kInf, true, false, {}, {M::kViscoelastic},
+       [](Scene& s, const SceneValue& v) { s.viscoelastic_b = std::get<double>(v); },
+       [](const Scene& s) { return toml_float(s.viscoelastic_b); }},
+      {"collision.delta", KeyType::kFloat, KeyNeed::kDefault,
+       "cut-off: collisions with normal relative speed below delta are elastic, in units of diameter per "
+       "initial collision time (the paper uses 1e-4)", 0, kInf, false, false, {}, {M::kInelastic, M::kViscoelastic},
+       [](Scene& s, const SceneValue& v) { s.delta = std::get<double>(v); },
+       [](const Scene& s) { return toml_float(s.delta); }},
+      {"run.t_end", KeyType::kFloat, KeyNeed::kRequired, "simulated time to stop at, in initial mean collision times",
+       0, kInf, true, false, {}, {},
+       [](Scene& s, const SceneValue& v) { s.t_end = std::get<double>(v); },
+       [](const Scene& s) { return toml_float(s.t_end); }},
+      {"output.observables_per_decade", KeyType::kInteger, KeyNeed::kDefault, "observables recorded per decade of time",
+       1, 2147483647, false, false, {}, {},
+       [](Scene& s, const SceneValue& v) { s.observables_per_decade = int(std::get<std::int64_t>(v)); },
+       [](const Scene& s) { return std::to_string(s.observables_per_decade); }},
+      {"output.dumps_per_decade", KeyType::kInteger, KeyNeed::kDefault, "trajectory dumps per decade of time", 1,
+       2147483647, false, false, {}, {},
+       [](Scene& s, const SceneValue& v) { s.dumps_per_decade = int(std::get<std::int64_t>(v)); },
+       [](const Scene& s) { return std::to_string(s.dumps_per_decade); }},
+      {"output.t_min", KeyType::kFloat, KeyNeed::kDefault, "first time of the log-spaced grids", 0, kInf, true, false,
+       {}, {},
+       [](Scene& s, const SceneValue& v) { s.t_min = std::get<double>(v); },
+       [](const Scene& s) { return toml_float(s.t_min); }},
+      {"output.dump_times", KeyType::kFloatArray, KeyNeed::kDefault, "extra dump times, e.g. [5, 10, 2000]", 0, kInf,
+       false, false, {}, {},
+       [](Scene& s, const SceneValue& v) { s.dump_times = std::get<std::vector<double>>(v); },
+       [](const Scene& s) {
+         std::string t = "[";
+         for (std::size_t i = 0; i < s.dump_times.size(); ++i) t += (i ? ", " : "") + toml_float(s.dump_times[i]);
+         return t + "]";
+       }},
   };
   return keys;
+}
+
+namespace {
+
+const SceneKey& key_row(const char* name) {
+  for (const auto& k : scene_keys())
+    if (std::string(k.key) == name) return k;
+  throw std::logic_error(std::string("no scene key ") + name);
+}
+
+bool used_by(const SceneKey& k, CollisionModel m) {
+  return k.models.empty() || std::find(k.models.begin(), k.models.end(), m) != k.models.end();
+}
+
+// "in (0, 1]", ">= 0", "" (no bound).
+std::string range_text(const SceneKey& k) {
+  const bool lo = std::isfinite(k.lo), hi = std::isfinite(k.hi);
+  if (lo && hi)
+    return std::string("in ") + (k.lo_open ? "(" : "[") + format_number(k.lo) + ", " + format_number(k.hi) +
+           (k.hi_open ? ")" : "]");
+  if (lo) return (k.lo_open ? "> " : ">= ") + format_number(k.lo);
+  if (hi) return (k.hi_open ? "< " : "<= ") + format_number(k.hi);
+  return "";
+}
+
+const char* type_name(KeyType t) {
+  switch (t) {
+    case KeyType::kInteger: return "integer";
+    case KeyType::kFloat: return "float";
+    case KeyType::kString: return "string";
+    case KeyType::kFloatArray: return "array of floats";
+  }
+  return "?";
+}
+
+}  // namespace
+
+std::string scene_keys_help() {
+  std::string out;
+  for (const auto& k : scene_keys()) {
+    std::string facts = type_name(k.type);
+    const std::string range = k.type == KeyType::kString ? "" : range_text(k);
+    if (!range.empty()) facts += ", " + range;
+    if (k.need == KeyNeed::kRequired) facts += ", required";
+    if (k.need == KeyNeed::kDefault) facts += ", default " + k.toml(Scene{});
+    std::string models;
+    for (M m : k.models) models += std::string(models.empty() ? "" : ", ") + kModelNames[int(m)];
+    if (!models.empty()) facts += "; model " + models;
+    out += std::string("  ") + k.key + " (" + facts + "): " + k.help + "\n";
+  }
+  return out;
 }
 
 bool key_changeable_on_resume(const std::string& key) {
@@ -81,14 +211,48 @@ void flatten(const toml::value& v, const std::string& prefix, std::map<std::stri
   }
 }
 
+// The deepest nesting of brackets and braces outside strings and comments:
+// toml11 parses them recursively, so a deep text would overflow its stack.
+int nesting_depth(const std::string& text) {
+  int depth = 0, deepest = 0;
+  char quote = 0;
+  bool comment = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (comment) {
+      comment = c != '\n';
+    } else if (quote) {
+      if (c == '\\' && quote == '"') ++i;
+      else if (c == quote) quote = 0;
+    } else if (c == '"' || c == '\'') {
+      quote = c;
+    } else if (c == '#') {
+      comment = true;
+    } else if (c == '[' || c == '{') {
+      deepest = std::max(deepest, ++depth);
+    } else if (c == ']' || c == '}') {
+      depth = std::max(0, depth - 1);
+    }
+  }
+  return deepest;
+}
+
+void check_parsable(const std::string& text, const std::string& source) {
+  if (text.size() > kMaxSceneBytes)
+    throw InputError(source + ": the scene is " + std::to_string(text.size()) + " bytes; the limit is " +
+                     std::to_string(kMaxSceneBytes) + " (a scene is a few lines)");
+  if (const int d = nesting_depth(text); d > kMaxSceneNesting)
+    throw InputError(source + ": arrays or tables nested " + std::to_string(d) + " deep; the limit is " +
+                     std::to_string(kMaxSceneNesting));
+}
+
 toml::value parse_toml(const std::string& text, const std::string& source) {
+  check_parsable(text, source);
   std::istringstream in(text);
   try {
     return toml::parse(in, source);
   } catch (const std::exception& e) {
-    std::string msg = e.what();
-    std::replace(msg.begin(), msg.end(), '\n', ' ');
-    throw InputError(source + ": not valid TOML: " + msg);
+    throw InputError(source + ": not valid TOML: " + one_line(e.what()));
   }
 }
 
@@ -96,8 +260,9 @@ toml::value parse_toml(const std::string& text, const std::string& source) {
 std::pair<std::string, toml::value> parse_override(const std::string& kv) {
   const auto eq = kv.find('=');
   if (eq == std::string::npos || eq == 0)
-    throw InputError("--set '" + kv + "': expected key=value, e.g. --set collision.r0=0.1");
+    throw InputError("--set '" + shown(kv) + "': expected key=value, e.g. --set collision.r0=0.1");
   const std::string key = kv.substr(0, eq), value = kv.substr(eq + 1);
+  check_parsable(value, "--set " + shown(key));
   std::istringstream in("v = " + value);
   try {
     return {key, toml::find(toml::parse(in, "--set"), "v")};
@@ -106,36 +271,161 @@ std::pair<std::string, toml::value> parse_override(const std::string& kv) {
   }
 }
 
-double as_float(const std::string& key, const toml::value& v) {
+std::string shown_toml(const toml::value& v) { return shown(toml::format(v)); }
+
+// A number as the key's type: integers also from floats that are exact integers (1e4).
+std::int64_t to_integer(const std::string& key, const toml::value& v) {
+  if (v.is_integer()) return v.as_integer();
+  if (v.is_floating()) {
+    const double x = v.as_floating();
+    if (x == std::floor(x) && std::fabs(x) < 0x1p63) return std::int64_t(x);
+  }
+  throw InputError(key + " must be an integer, got " + shown_toml(v));
+}
+
+double to_float(const std::string& key, const toml::value& v) {
   if (v.is_floating()) return v.as_floating();
   if (v.is_integer()) return double(v.as_integer());
-  throw InputError(key + " must be a number, got " + toml::format(v));
+  throw InputError(key + " must be a number, got " + shown_toml(v));
 }
 
-std::int64_t as_int(const std::string& key, const toml::value& v) {
-  if (v.is_integer()) return v.as_integer();
-  throw InputError(key + " must be an integer, got " + toml::format(v));
-}
-
-std::string as_string(const std::string& key, const toml::value& v) {
-  if (v.is_string()) return v.as_string();
-  throw InputError(key + " must be a string, got " + toml::format(v));
+SceneValue to_value(const SceneKey& k, const toml::value& v) {
+  switch (k.type) {
+    case KeyType::kInteger: return to_integer(k.key, v);
+    case KeyType::kFloat: return to_float(k.key, v);
+    case KeyType::kString:
+      if (v.is_string()) return v.as_string();
+      throw InputError(std::string(k.key) + " must be a string, got " + shown_toml(v));
+    case KeyType::kFloatArray: {
+      if (!v.is_array()) throw InputError(std::string(k.key) + " must be an array of numbers, e.g. [5, 10]");
+      std::vector<double> xs;
+      for (const auto& x : v.as_array()) xs.push_back(to_float(k.key, x));
+      return xs;
+    }
+  }
+  return {};
 }
 
 [[noreturn]] void out_of_range(const std::string& key, double value, const std::string& allowed) {
   throw InputError(key + " = " + format_number(value) + " is out of range: " + allowed);
 }
 
-void set_size(Scene& s, const std::map<std::string, toml::value>& kv) {
-  const bool hasN = kv.count("system.N"), hasL = kv.count("system.L"), hasPhi = kv.count("system.phi");
-  if (int(hasN) + int(hasL) + int(hasPhi) < 2)
-    throw InputError("the scene must give two of system.N, system.L and system.phi");
-  if (hasN) s.N = as_int("system.N", kv.at("system.N"));
-  if (hasL) s.L = as_float("system.L", kv.at("system.L"));
-  if (hasPhi) s.phi = as_float("system.phi", kv.at("system.phi"));
-  if (hasPhi && !(s.phi > 0)) out_of_range("system.phi", s.phi, "must be > 0");
-  if (hasL && !(s.L > 0)) out_of_range("system.L", s.L, "must be > 0");
-  if (!hasN) s.N = std::llround(s.phi * 6.0 * s.L * s.L * s.L / M_PI);
+void check_number(const SceneKey& k, double x) {
+  const bool ok = std::isfinite(x) && (k.lo_open ? x > k.lo : x >= k.lo) && (k.hi_open ? x < k.hi : x <= k.hi);
+  if (ok) return;
+  const std::string range = range_text(k);
+  out_of_range(k.key, x, range.empty() ? "must be a finite number" : "must be a finite number " + range);
+}
+
+void check_value(const SceneKey& k, const SceneValue& v) {
+  if (const auto* i = std::get_if<std::int64_t>(&v)) {
+    // Compared as given: a value beyond the range is never wrapped or rounded into it.
+    if ((std::isfinite(k.lo) && double(*i) < k.lo) || (std::isfinite(k.hi) && double(*i) > k.hi))
+      throw InputError(std::string(k.key) + " = " + std::to_string(*i) + " is out of range: must be " + range_text(k));
+  } else if (const auto* x = std::get_if<double>(&v)) {
+    check_number(k, *x);
+  } else if (const auto* xs = std::get_if<std::vector<double>>(&v)) {
+    for (double x : *xs) check_number(k, x);
+  } else if (const auto* str = std::get_if<std::string>(&v)) {
+    if (std::find(k.choices.begin(), k.choices.end(), *str) != k.choices.end()) return;
+    std::string allowed;
+    for (std::size_t i = 0; i < k.choices.size(); ++i)
+      allowed += std::string(i == 0 ? "" : i + 1 == k.choices.size() ? " or " : ", ") + "\"" + k.choices[i] + "\"";
+    throw InputError(std::string(k.key) + " = \"" + shown(*str) + "\" is not known: use " + allowed);
+  }
+}
+
+// A cost in three significant digits: "3.3e+05".
+std::string about(double x) {
+  std::ostringstream s;
+  s.precision(3);
+  s << x;
+  return s.str();
+}
+
+// Bytes with a decimal unit: "180 TB".
+std::string bytes_text(double b) {
+  const char* units[] = {"B", "kB", "MB", "GB", "TB", "PB", "EB"};
+  int u = 0;
+  while (b >= 1000 && u < 6) b /= 1000, ++u;
+  return about(b) + " " + units[u];
+}
+
+// Points of the log grid 10^(k/per_decade) in [t_min, t_end], about.
+double grid_points(const Scene& s, int per_decade) {
+  return std::max(0.0, double(per_decade) * std::log10(s.t_end / s.t_min)) + 1;
+}
+
+double physical_memory() {
+  const long pages = sysconf(_SC_PHYS_PAGES), size = sysconf(_SC_PAGE_SIZE);
+  return pages > 0 && size > 0 ? double(pages) * double(size) : kInf;
+}
+
+}  // namespace
+
+void check_scene_cost(const Scene& s, double memory_bytes) {
+  const double n = double(s.N), cells = std::pow(std::floor(s.L), 3);
+  const double bytes = n * kBytesPerParticle + cells * kBytesPerCell;
+  if (n >= kMaxParticles)
+    throw InputError("system.N = " + format_number(n) + " would need about " + bytes_text(n * kBytesPerParticle) +
+                     " of memory; the limit is N < 2^31 (32-bit particle ids)");
+  if (cells > kMaxCells)
+    throw InputError("a box of side L = " + format_number(s.L) + " needs a cell grid of " + about(cells) +
+                     " cells of one diameter" +
+                     (std::isfinite(cells) ? " (" + bytes_text(cells * kBytesPerCell) + ")" : "") + "; the limit is 2^31 cells (L < 1290; raise phi or N)");
+  if (bytes > memory_bytes)
+    throw InputError("the scene needs about " + bytes_text(bytes) + " of memory (" + format_number(n) +
+                     " particles, 180 B each, and " + about(cells) + " grid cells, 20 B each); this machine has " +
+                     bytes_text(memory_bytes));
+  const double equilibration = n * s.equilibrate / 2;
+  if (equilibration > kMaxEquilibrationCollisions)
+    throw InputError("system.equilibrate = " + format_number(s.equilibrate) + " with N = " + format_number(n) +
+                     " means about " + about(equilibration) +
+                     " collisions before t = 0; the limit is 1e12 (about 3 weeks)");
+  const double extra = double(s.dump_times.size());
+  const double dumps = grid_points(s, s.dumps_per_decade) + extra;
+  if (dumps > kMaxDumps)
+    throw InputError("output.dumps_per_decade = " + std::to_string(s.dumps_per_decade) + " from t = " +
+                     format_number(s.t_min) + " to " + format_number(s.t_end) + " means about " + about(dumps) +
+                     " dumps (" + bytes_text(dumps * n * 60) + "); the limit is 1e4 dumps");
+  const double rows = grid_points(s, s.observables_per_decade) + grid_points(s, s.dumps_per_decade) + extra;
+  if (rows > kMaxObservableRows)
+    throw InputError("output.observables_per_decade = " + std::to_string(s.observables_per_decade) + " from t = " +
+                     format_number(s.t_min) + " to " + format_number(s.t_end) + " means about " + about(rows) +
+                     " rows of observables; the limit is 1e5");
+}
+
+namespace {
+
+using KeyValues = std::map<std::string, toml::value>;
+
+// Which two of N, L, phi define the box: the overridden ones first, then the
+// scene's own in the order phi, N, L (the density is the physics, N the size).
+std::vector<std::string> size_keys(const KeyValues& kv, const std::set<std::string>& overridden) {
+  std::vector<std::string> keys;
+  for (const char* k : {"system.phi", "system.N", "system.L"})
+    if (overridden.count(k)) keys.push_back(k);
+  if (keys.size() == 1)
+    for (const char* k : {"system.phi", "system.N", "system.L"})
+      if (kv.count(k) && keys.size() < 2 && keys[0] != k) keys.push_back(k);
+  if (keys.empty())
+    for (const char* k : {"system.phi", "system.N", "system.L"})
+      if (kv.count(k)) keys.push_back(k);
+  return keys;
+}
+
+void set_size(Scene& s, const KeyValues& kv, const std::set<std::string>& overridden) {
+  const auto keys = size_keys(kv, overridden);
+  if (keys.size() < 2) throw InputError("the scene must give two of system.N, system.L and system.phi");
+  auto has = [&](const char* k) { return std::find(keys.begin(), keys.end(), k) != keys.end(); };
+  const bool hasN = has("system.N"), hasL = has("system.L"), hasPhi = has("system.phi");
+  if (!hasN) {
+    const double n = s.phi * 6.0 * s.L * s.L * s.L / M_PI;
+    if (!(n < kMaxParticles))
+      throw InputError("system.phi = " + format_number(s.phi) + " in a box of side L = " + format_number(s.L) +
+                       " means N = " + format_number(n) + " particles; the limit is N < 2^31 (32-bit ids)");
+    s.N = std::llround(n);
+  }
   if (s.N < 2) out_of_range("system.N", double(s.N), "need at least 2 particles");
   if (!hasL) s.L = std::cbrt(double(s.N) * M_PI / (6.0 * s.phi));
   const double phi_of = double(s.N) * M_PI / (6.0 * s.L * s.L * s.L);
@@ -145,144 +435,87 @@ void set_size(Scene& s, const std::map<std::string, toml::value>& kv) {
   s.phi = phi_of;
 }
 
-void check_ranges(const Scene& s) {
+// Limits that involve more than one key.
+void check_relations(const Scene& s) {
   if (s.init == InitialPositions::kRandom && s.phi > kMaxRandomPhi)
     out_of_range("system.phi", s.phi,
                  "random sequential addition reaches phi <= 0.36; use system.init = \"fcc\" (up to 0.74)");
   if (s.init == InitialPositions::kFcc && s.phi > kMaxFccPhi)
     out_of_range("system.phi", s.phi, "an FCC lattice of unit spheres holds phi <= 0.7404");
-  if (!(s.equilibrate >= 0)) out_of_range("system.equilibrate", s.equilibrate, "must be >= 0");
-  if (!(s.r0 > 0 && s.r0 <= 1)) out_of_range("collision.r0", s.r0, "must be in (0, 1]");
-  if (!(s.delta >= 0)) out_of_range("collision.delta", s.delta, "must be >= 0");
-  if (!(s.t_end > 0)) out_of_range("run.t_end", s.t_end, "must be > 0 (give the time to simulate to)");
-  if (!(s.t_min > 0)) out_of_range("output.t_min", s.t_min, "must be > 0");
-  if (s.observables_per_decade < 1)
-    out_of_range("output.observables_per_decade", s.observables_per_decade, "must be >= 1");
-  if (s.dumps_per_decade < 1) out_of_range("output.dumps_per_decade", s.dumps_per_decade, "must be >= 1");
-  for (double t : s.dump_times)
-    if (!(t >= 0)) out_of_range("output.dump_times", t, "times must be >= 0");
+}
+
+// Each model takes only its own collision.* keys, so a typo in the model name
+// cannot silently drop a parameter; a key at its default value changes nothing.
+void check_model_keys(const Scene& s, const KeyValues& kv) {
+  const Scene defaults;
+  for (const auto& k : scene_keys()) {
+    if (!kv.count(k.key) || used_by(k, s.model) || k.toml(s) == k.toml(defaults)) continue;
+    std::string users;
+    for (M m : k.models) users += std::string(users.empty() ? "" : " or ") + "\"" + kModelNames[int(m)] + "\"";
+    throw InputError(std::string(k.key) + " is set but collision.model = \"" + s.model_name() +
+                     "\" does not use it; remove it, or set model = " + users);
+  }
+}
+
+// Keys without a default that the scene's model uses must be given.
+void check_required(const Scene& s, const KeyValues& kv) {
+  for (const auto& k : scene_keys()) {
+    if (k.need != KeyNeed::kRequired || kv.count(k.key) || !used_by(k, s.model)) continue;
+    const std::string help = k.help, what = help.substr(0, help.find(','));
+    const std::string model = k.models.empty() ? "" : " for collision.model = \"" + s.model_name() + "\"";
+    throw InputError("the scene must give " + std::string(k.key) + model + " (" + what + ")");
+  }
+}
+
+Scene build_scene(const KeyValues& kv, const std::set<std::string>& overridden) {
+  Scene s;
+  for (const auto& k : scene_keys()) {
+    const auto it = kv.find(k.key);
+    if (it == kv.end()) continue;
+    const SceneValue v = to_value(k, it->second);
+    check_value(k, v);
+    k.set(s, v);
+  }
+  check_model_keys(s, kv);
+  check_required(s, kv);
+  set_size(s, kv, overridden);
+  check_relations(s);
   const std::string box = check_box_fits_grid(s.L, 1.0);
   if (!box.empty()) throw InputError(box);
-}
-
-// Each model takes only its own collision.* keys, so a typo in the model
-// name cannot silently drop a parameter.
-void check_model_keys(const Scene& s, const std::map<std::string, toml::value>& kv) {
-  const std::string model = "collision.model = \"" + s.model_name() + "\"";
-  auto refuse = [&](const char* key, const char* fix) {
-    if (kv.count(key)) throw InputError(std::string(key) + " is set but " + model + " does not use it; " + fix);
-  };
-  switch (s.model) {
-    case CollisionModel::kElastic:
-      if (s.r0 != 1.0 || s.delta != 0.0)
-        throw InputError("collision.r0/delta are set but collision.model = \"elastic\"; set model = \"inelastic\"");
-      refuse("collision.viscoelastic_b", "set model = \"viscoelastic\"");
-      break;
-    case CollisionModel::kInelastic:
-      refuse("collision.viscoelastic_b", "set model = \"viscoelastic\" or remove it");
-      break;
-    case CollisionModel::kViscoelastic:
-      refuse("collision.r0", "the viscoelastic restitution follows from collision.viscoelastic_b; remove r0");
-      if (!(s.viscoelastic_b > 0 && std::isfinite(s.viscoelastic_b)))
-        out_of_range("collision.viscoelastic_b", s.viscoelastic_b,
-                     "must be > 0 for model = \"viscoelastic\" (e.g. 0.1 gives r = 0.9 at impact speed 1)");
-      break;
-    case CollisionModel::kAggregation:
-      for (const char* key : {"collision.r0", "collision.delta", "collision.viscoelastic_b"})
-        refuse(key, "aggregates stick; remove it");
-      break;
-  }
-}
-
-Scene build_scene(const std::map<std::string, toml::value>& kv) {
-  Scene s;
-  auto get = [&](const char* k) -> const toml::value* {
-    auto it = kv.find(k);
-    return it == kv.end() ? nullptr : &it->second;
-  };
-  if (auto v = get("system.seed")) s.seed = as_int("system.seed", *v);
-  if (auto v = get("system.init")) {
-    const std::string init = as_string("system.init", *v);
-    if (init == "random") s.init = InitialPositions::kRandom;
-    else if (init == "fcc") s.init = InitialPositions::kFcc;
-    else throw InputError("system.init = \"" + init + "\" is not known: use \"random\" or \"fcc\"");
-  }
-  if (auto v = get("system.equilibrate")) s.equilibrate = as_float("system.equilibrate", *v);
-  if (auto v = get("collision.model")) {
-    const std::string m = as_string("collision.model", *v);
-    if (m == "elastic") s.model = CollisionModel::kElastic;
-    else if (m == "inelastic") s.model = CollisionModel::kInelastic;
-    else if (m == "viscoelastic") s.model = CollisionModel::kViscoelastic;
-    else if (m == "aggregation") s.model = CollisionModel::kAggregation;
-    else
-      throw InputError("collision.model = \"" + m +
-                       "\" is not known: use \"elastic\", \"inelastic\", \"viscoelastic\" or \"aggregation\"");
-  }
-  if (auto v = get("collision.r0")) s.r0 = as_float("collision.r0", *v);
-  if (auto v = get("collision.delta")) s.delta = as_float("collision.delta", *v);
-  if (auto v = get("collision.viscoelastic_b")) s.viscoelastic_b = as_float("collision.viscoelastic_b", *v);
-  check_model_keys(s, kv);
-  if (auto v = get("run.t_end")) s.t_end = as_float("run.t_end", *v);
-  else throw InputError("the scene must give run.t_end (the simulated time to stop at)");
-  if (auto v = get("output.observables_per_decade")) s.observables_per_decade = int(as_int("output.observables_per_decade", *v));
-  if (auto v = get("output.dumps_per_decade")) s.dumps_per_decade = int(as_int("output.dumps_per_decade", *v));
-  if (auto v = get("output.t_min")) s.t_min = as_float("output.t_min", *v);
-  if (auto v = get("output.dump_times")) {
-    if (!v->is_array()) throw InputError("output.dump_times must be an array of times, e.g. [5, 10]");
-    for (const auto& t : v->as_array()) s.dump_times.push_back(as_float("output.dump_times", t));
-  }
-  set_size(s, kv);
-  check_ranges(s);
+  check_scene_cost(s, physical_memory());
   return s;
 }
 
 }  // namespace
 
 Scene parse_scene(const std::string& toml_text, const std::string& source, const std::vector<std::string>& overrides) {
-  std::map<std::string, toml::value> kv;
+  KeyValues kv;
   flatten(parse_toml(toml_text, source), "", kv);
+  std::set<std::string> overridden;
   for (const auto& o : overrides) {
     auto [key, value] = parse_override(o);
     kv[key] = value;
+    overridden.insert(key);
   }
   for (const auto& [key, value] : kv) {
     const bool known = std::any_of(scene_keys().begin(), scene_keys().end(),
                                    [&](const SceneKey& k) { return key == k.key; });
-    if (!known) throw InputError("unknown scene key '" + key + "'" + did_you_mean(key));
+    if (!known) throw InputError("unknown scene key '" + shown(key) + "'" + did_you_mean(key));
   }
-  return build_scene(kv);
+  return build_scene(kv, overridden);
 }
 
-std::string Scene::model_name() const {
-  switch (model) {
-    case CollisionModel::kElastic: return "elastic";
-    case CollisionModel::kInelastic: return "inelastic";
-    case CollisionModel::kViscoelastic: return "viscoelastic";
-    case CollisionModel::kAggregation: return "aggregation";
-  }
-  return "?";
-}
+std::string Scene::model_name() const { return kModelNames[int(model)]; }
 
 std::string Scene::to_toml() const {
-  std::ostringstream s;
-  auto num = [](double x) {  // a TOML float that reads back to the same double
-    std::string t = format_number(x);
-    if (t.find_first_of(".eEn") == std::string::npos) t += ".0";
-    return t;
-  };
-  s << "# coolgas scene: the effective values (file, --set overrides and defaults)\n"
-    << "[system]\nN = " << N << "\nL = " << num(L) << "\nphi = " << num(phi) << "\nseed = " << seed
-    << "\ninit = \"" << (init == InitialPositions::kRandom ? "random" : "fcc") << "\"\nequilibrate = " << num(equilibrate)
-    << "\n\n"
-    << "[collision]\nmodel = \"" << model_name() << "\"\n";
-  if (model == CollisionModel::kInelastic) s << "r0 = " << num(r0) << "\ndelta = " << num(delta) << "\n";
-  if (model == CollisionModel::kViscoelastic)
-    s << "viscoelastic_b = " << num(viscoelastic_b) << "\ndelta = " << num(delta) << "\n";
-  s << "\n[run]\nt_end = " << num(t_end) << "\n\n[output]\nobservables_per_decade = " << observables_per_decade
-    << "\ndumps_per_decade = " << dumps_per_decade << "\nt_min = " << num(t_min) << "\ndump_times = [";
-  for (std::size_t i = 0; i < dump_times.size(); ++i) s << (i ? ", " : "") << num(dump_times[i]);
-  s << "]\n";
-  return s.str();
+  std::string out = "# coolgas scene: the effective values (file, --set overrides and defaults)\n";
+  std::string table;
+  for (const auto& k : scene_keys()) {
+    const std::string key = k.key, name = key.substr(0, key.find('.'));
+    if (name != table) out += (table.empty() ? "[" : "\n[") + name + "]\n", table = name;
+    if (used_by(k, model)) out += key.substr(key.find('.') + 1) + " = " + k.toml(*this) + "\n";
+  }
+  return out;
 }
 
 }  // namespace coolgas

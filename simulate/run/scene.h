@@ -1,9 +1,11 @@
 // The scene: what to simulate, read from TOML (toml11) with command-line
-// `--set key=value` overrides. Every key is listed once in scene_keys(),
-// which also produces the scene part of `coolgas-simulate --help`.
+// `--set key=value` overrides. Every key is one row of scene_keys(), which
+// parses, checks, prints the scene part of `coolgas-simulate --help` and
+// writes the effective scene back as TOML.
 #pragma once
 #include <cstdint>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace coolgas {
@@ -42,12 +44,34 @@ struct Scene {
   std::string model_name() const;
 };
 
+// One row per scene key: it parses, checks, prints --help and writes TOML.
+enum class KeyType { kInteger, kFloat, kString, kFloatArray };
+// A key's value converted to its type (integers given as exact floats, 1e4, count).
+using SceneValue = std::variant<std::int64_t, double, std::string, std::vector<double>>;
+// kDefault: the key has a default (Scene{}'s member); kRequired: no default;
+// kSize: system.N, system.L, system.phi, of which a scene gives two.
+enum class KeyNeed { kDefault, kRequired, kSize };
+
 struct SceneKey {
-  const char* key;
-  const char* type;  // "integer", "float", "string", "array of floats"
-  const char* help;  // meaning, units and default
+  const char* key;   // "table.name"
+  KeyType type;
+  KeyNeed need;
+  const char* help;  // meaning and units; --help adds the range and the default
+  // Numbers (each element of an array): lo <= x <= hi, strict where *_open;
+  // infinite bounds mean none, and every number must be finite.
+  double lo, hi;
+  bool lo_open, hi_open;
+  std::vector<std::string> choices;  // strings: the allowed values
+  // Models that use the key (collision.* keys; empty: every model).
+  std::vector<CollisionModel> models;
+  void (*set)(Scene&, const SceneValue&);
+  std::string (*toml)(const Scene&);  // the member as a TOML value
 };
 const std::vector<SceneKey>& scene_keys();
+
+// The scene part of `coolgas-simulate --help`: one line per key with its
+// type, range and default.
+std::string scene_keys_help();
 
 // The highest volume fraction offered for random sequential addition (its
 // saturation limit is 0.3841; Torquato et al. 2006). The voxel phase
@@ -60,9 +84,30 @@ inline constexpr double kMaxRandomPhi = 0.36;
 inline constexpr double kMaxFccPhi = 0.7404;
 
 // Parses and checks a scene. `overrides` are "key=value" strings (values in
-// TOML syntax; a bare word is taken as a string). Throws InputError with one
-// line: unknown keys (with a did-you-mean), wrong types, out-of-range values.
+// TOML syntax; a bare word is taken as a string). An override of one of
+// system.N, L, phi replaces the scene's own: of the scene's two, phi is kept
+// before N before L, and the third follows. Throws InputError with one line:
+// unknown keys (with a did-you-mean), wrong types, out-of-range values, a
+// text too large or too deeply nested for the TOML parser, and values whose
+// cost is absurd (memory, collisions, rows and dumps; see check_scene_cost).
 Scene parse_scene(const std::string& toml_text, const std::string& source, const std::vector<std::string>& overrides);
+
+// The most the scene may cost (check_scene_cost); the machine's memory is
+// read at run time.
+inline constexpr double kBytesPerParticle = 180;  // engine, measured (README, Performance)
+inline constexpr double kBytesPerCell = 20;       // the gas engine's grid of L^3 cells, measured
+inline constexpr double kMaxCells = 2147483647;   // cell indices are 32-bit
+inline constexpr double kMaxParticles = 2147483647;  // particle ids are 32-bit
+inline constexpr double kMaxEquilibrationCollisions = 1e12;  // about 3 weeks at 5e5 collisions/s
+inline constexpr double kMaxObservableRows = 1e5;
+inline constexpr double kMaxDumps = 1e4;
+// Scene texts above this size, or nested deeper, are refused before parsing.
+inline constexpr std::size_t kMaxSceneBytes = 1 << 20;
+inline constexpr int kMaxSceneNesting = 16;
+
+// Refuses (InputError, one line saying what the scene would cost and the
+// limit) a scene whose memory exceeds `memory_bytes` or the limits above.
+void check_scene_cost(const Scene& scene, double memory_bytes);
 
 // Keys a resumed run may change (run.* and output.*); others are rejected.
 bool key_changeable_on_resume(const std::string& key);

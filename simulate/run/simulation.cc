@@ -17,6 +17,7 @@
 #include "common/error.h"
 #include "common/trajectory/collision_models.h"
 #include "common/trajectory/h5md_writer.h"
+#include "common/output_file.h"
 #include "common/progress.h"
 #include "common/tsv.h"
 #include "simulate/run/checkpoint.h"
@@ -241,14 +242,7 @@ std::string default_output(const std::string& scene_path) {
 }
 
 // Checked before the (possibly long) set-up, so a typo costs nothing.
-void check_writable(const std::string& out, bool force) {
-  if (!force && std::filesystem::exists(out))
-    throw InputError("output '" + out + "' exists; pass --force to overwrite it (or --resume it)");
-  const auto dir = std::filesystem::path(out).parent_path();
-  const std::string d = dir.empty() ? "." : dir.string();
-  if (!std::filesystem::is_directory(d)) throw InputError("cannot write '" + out + "': no directory '" + d + "'");
-  if (access(d.c_str(), W_OK) != 0) throw InputError("cannot write '" + out + "': directory '" + d + "' is not writable");
-}
+void check_writable(const std::string& out, bool force) { check_output_file(out, force); }
 
 int drive(Driver& driver, const Scene& scene) {
   try {

@@ -1,5 +1,5 @@
 // Equilibrium hard-sphere kinetic theory that fixes the time unit
-// (shared/oracles.md): Enskog collision frequency with the Carnahan–Starling
+// (tests/physics/README.md): Enskog collision frequency with the Carnahan–Starling
 // contact value, ω = 4 n σ² g(σ) √(π T / m).
 #pragma once
 #include <cmath>

@@ -9,10 +9,10 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
-#include <random>
 
 #include "common/trajectory/h5md_writer.h"
 #include "common/hdf5_file.h"
+#include "common/random.h"
 #include "tests/support/cli_checks.h"
 #include "tests/support/run_command.h"
 
@@ -41,14 +41,12 @@ void write_run(const std::string& path, double nan_at_position = false, bool nan
   p.L = 25;
   p.seed = 9;
   H5mdWriter w = H5mdWriter::create(path, p, true);
-  std::mt19937_64 rng(9);
-  std::uniform_real_distribution<double> u(0, p.L);
-  std::normal_distribution<double> g(0, 1);
+  Random rng(9);
   std::vector<double> pos(3 * n), vel(3 * n);
   std::vector<std::int32_t> img(3 * n, 0);
   for (int f = 0; f < 2; ++f) {
-    for (double& x : pos) x = u(rng);
-    for (double& v : vel) v = g(rng);
+    for (double& x : pos) x = p.L * rng.uniform();
+    for (double& v : vel) v = rng.normal();
     if (f == 1 && nan_at_position) pos[3 * 17 + 1] = std::numeric_limits<double>::quiet_NaN();
     if (f == 1 && nan_at_velocity) vel[3 * 5] = std::numeric_limits<double>::quiet_NaN();
     w.add_frame({double(10 * f), 100 * f, 0, pos.data(), img.data(), vel.data()});

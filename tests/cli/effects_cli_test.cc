@@ -1,4 +1,4 @@
-// The effects of issue 4 driven as a user would: bad viscoelastic and
+// The effects models (viscoelastic, aggregation) driven as a user would: bad viscoelastic and
 // aggregation parameters are refused with one line and exit code 2; an
 // aggregation run validates (schema version 2), resumes bit for bit, and
 // coolgas-clusters and coolgas-velocity read its aggregates; an elastic run

@@ -85,8 +85,12 @@ TEST(Pipeline, TinyPipelineRunsEndToEndAndIsIncremental) {
     return it == exponents.end() ? Judged{} : it->second;
   };
   const auto value = [&](const std::string& prefix) { return row(prefix).measured; };
-  EXPECT_GT(value("theta, collapse"), 0.5);
-  EXPECT_LT(value("theta, collapse"), 3.0);
+  // Past the homogeneous regime: Haff cooling gives E ~ t^-2 at late times, the
+  // clustered gas of the paper t^-6/5 (Pathak et al. 2014); a run stuck in
+  // Haff's regime would give theta near 2.
+  EXPECT_GT(value("theta, collapse"), 0.8);
+  EXPECT_LT(value("theta, collapse"), 1.7);
+  EXPECT_LT(value("theta, power-law fit"), 1.7);
   EXPECT_GT(row("theta, collapse").error, 0.0);
   EXPECT_GT(value("z, same collapse"), 0.5);
   EXPECT_GT(value("theta, power-law fit"), 0.5);

@@ -1,6 +1,6 @@
 // The time unit: at t -> 0 the measured collision frequency per particle is
 // the Enskog value with the Carnahan–Starling contact value, which the
-// initial temperature makes 1 (shared/oracles.md; Enskog+CS is accurate to
+// initial temperature makes 1 (tests/physics/README.md; Enskog+CS is accurate to
 // well under 1 % below phi = 0.45). Required within 2 %.
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Haff's law for the homogeneous cooling state: T(t) = T0 / (1 + t/t0)^2 with
 // t0 = 6 / ((1 - r^2) omega0) and omega0 = 1 in this project's units
-// (shared/oracles.md; Haff, J. Fluid Mech. 134, 401 (1983)). Tested with r
+// (tests/physics/README.md; Haff, J. Fluid Mech. 134, 401 (1983)). Tested with r
 // near 1 in a small dilute box, where the homogeneous state is stable, and
 // checked to have stayed homogeneous: the collision rate must follow the
 // Enskog omega ∝ sqrt(T), i.e. omega(t) = 1 / (1 + t/t0).

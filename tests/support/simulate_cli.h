@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include "tests/support/cli_checks.h"
@@ -16,6 +17,14 @@ inline std::string write_file(const std::string& dir, const std::string& name, c
   const std::string path = dir + "/" + name;
   std::ofstream(path) << text;
   return path;
+}
+
+// x with 17 significant digits, which read back to the same double (for --set values).
+inline std::string format_exact(double x) {
+  std::ostringstream s;
+  s.precision(17);
+  s << x;
+  return s.str();
 }
 
 // The command line of a quiet coolgas-simulate run with these arguments.

@@ -2,7 +2,7 @@
 // fill over the periodic grid, cell by cell, with the six face neighbours
 // from modular arithmetic (nothing shared with the run-based labeller but the
 // cell of each particle). The cluster definition is the paper's (Pathak et
-// al. 2014, Sec. IV; shared/oracles.md): unit cells, occupied when they hold
+// al. 2014, Sec. IV; tests/physics/README.md): unit cells, occupied when they hold
 // a centre, face neighbours, periodic boundaries.
 #include "analyze/labelling/cluster_labeller.h"
 
@@ -10,11 +10,12 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
 #include <queue>
-#include <random>
 
 #include "common/error.h"
+#include "common/random.h"
 
 namespace coolgas {
 namespace {
@@ -81,10 +82,9 @@ void expect_same_clusters(const ClusterGrid& g, const std::vector<double>& pos) 
 }
 
 std::vector<double> random_positions(double L, std::size_t n, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0.0, L);
+  Random rng(seed);
   std::vector<double> pos(3 * n);
-  for (double& x : pos) x = u(rng);
+  for (double& x : pos) x = L * rng.uniform();
   return pos;
 }
 
@@ -130,17 +130,16 @@ TEST(ClusterLabeller, MatchesFloodFillOnRowsOfSeveralWords) {
 // centres, wrapped into the box, so most blobs near a face, edge or corner
 // cross it.
 TEST(ClusterLabeller, MatchesFloodFillOnClusteredGrids) {
-  std::mt19937_64 rng(42);
+  Random rng(42);
   const double L = 20.0;
-  std::uniform_real_distribution<double> u(0.0, L);
+  auto u = [&] { return L * rng.uniform(); };
   for (double spread : {0.8, 1.5, 3.0}) {
     std::vector<double> pos;
     for (int blob = 0; blob < 40; ++blob) {
-      const double c[3] = {u(rng), u(rng), u(rng)};
-      std::normal_distribution<double> g(0.0, spread);
+      const double c[3] = {u(), u(), u()};
       for (int p = 0; p < 60; ++p)
         for (int d = 0; d < 3; ++d) {
-          double x = std::fmod(c[d] + g(rng), L);
+          double x = std::fmod(c[d] + spread * rng.normal(), L);
           pos.push_back(x < 0 ? x + L : x);
         }
     }

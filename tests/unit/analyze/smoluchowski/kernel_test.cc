@@ -24,7 +24,7 @@ TEST(SmoluchowskiKernel, NamedKernelsAreTheirFormulas) {
 }
 
 TEST(SmoluchowskiKernel, BallisticKernelHasSixExponentsAndHomogeneityOneSixth) {
-  // oracles.md: six products with exponents 1/6, -1/6, 1/3, -1/2, 2/3 (and 0).
+  // tests/physics/README.md: six products with exponents 1/6, -1/6, 1/3, -1/2, 2/3 (and 0).
   const Kernel k = parse_kernel("ballistic");
   EXPECT_EQ(k.exponents().size(), 6u);
   EXPECT_NEAR(k.homogeneity(), 1.0 / 6, 1e-15);

@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <random>
 #include <sstream>
 
 #include "analyze/velocity/distribution.h"
@@ -12,6 +11,7 @@
 #include "analyze/velocity/tool.h"
 #include "common/error.h"
 #include "common/trajectory/h5md_writer.h"
+#include "common/random.h"
 #include "common/tsv.h"
 #include "tests/support/run_command.h"
 
@@ -20,28 +20,24 @@ namespace {
 
 constexpr std::size_t kParticles = 1'000'000;
 
-template <class Dist>
-std::vector<double> sample(Dist dist, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::vector<double> v(3 * kParticles);
-  for (double& x : v) x = dist(rng);
-  return v;
-}
-
+// Samples from the portable generator (common/random.h): the same numbers on every platform.
 std::vector<double> gaussian(std::uint64_t seed, double sigma = 1.0) {
-  return sample(std::normal_distribution<double>(0.0, sigma), seed);
-}
-
-// Laplace with scale b: the difference of two exponentials of mean b.
-std::vector<double> laplace(std::uint64_t seed, double b) {
-  std::mt19937_64 rng(seed);
-  std::exponential_distribution<double> e(1.0 / b);
+  Random rng(seed);
   std::vector<double> v(3 * kParticles);
-  for (double& x : v) x = e(rng) - e(rng);
+  for (double& x : v) x = sigma * rng.normal();
   return v;
 }
 
-// Maxwellian: κ = 0 (shared/oracles.md), and the delta-method standard error
+// Laplace with scale b: the difference of two exponentials of mean b (-b ln U, U uniform in (0, 1]).
+std::vector<double> laplace(std::uint64_t seed, double b) {
+  Random rng(seed);
+  auto exponential = [&] { return -b * std::log(1.0 - rng.uniform()); };
+  std::vector<double> v(3 * kParticles);
+  for (double& x : v) x = exponential() - exponential();
+  return v;
+}
+
+// Maxwellian: κ = 0 (tests/physics/README.md), and the delta-method standard error
 // is sqrt(40 / (27 N)) (from the χ²₃ moments 3, 15, 105, 945; derivation in
 // analyze/velocity/distribution.cc).
 TEST(SpeedMoments, GaussianKurtosisIsZeroWithinItsStandardError) {
@@ -141,10 +137,9 @@ TEST(ComponentHistogram, RejectsBadBins) {
 TEST(VelocityTool, SeriesRowMatchesTheLibrary) {
   const std::string path = test::scratch_dir("velocity_tool") + "/run.h5";
   const std::size_t n = 200'000;
-  std::mt19937_64 rng(16);
-  std::normal_distribution<double> g(0.0, 1.0);
+  Random rng(16);
   std::vector<double> vel(3 * n), pos(3 * n, 1.0);
-  for (double& x : vel) x = g(rng);
+  for (double& x : vel) x = rng.normal();
   {
     RunParameters p;
     p.N = static_cast<std::int64_t>(n);

@@ -74,5 +74,83 @@ TEST(Scene, AllowsFccUpToItsClosePacking) {
   EXPECT_NE(error_of({"system.phi=0.75", "system.init=fcc"}).find("0.7404"), std::string::npos);
 }
 
+TEST(Scene, IntegersAreRefusedAsGivenNeverWrapped) {
+  EXPECT_NE(error_of({"output.observables_per_decade=4294967297"}).find("= 4294967297 is out of range"),
+            std::string::npos);
+  EXPECT_NE(error_of({"output.dumps_per_decade=2147483648"}).find("= 2147483648 is out of range"), std::string::npos);
+  EXPECT_NE(error_of({"output.dumps_per_decade=-2147483648"}).find("= -2147483648 is out of range"), std::string::npos);
+}
+
+TEST(Scene, ExactFloatsAreAcceptedForIntegerKeys) {
+  const Scene s = parse_scene(kScene, "s.toml", {"system.N=1e4", "system.seed=2.0"});
+  EXPECT_EQ(s.N, 10000);
+  EXPECT_EQ(s.seed, 2);
+  EXPECT_NE(error_of({"system.N=1e4.5"}).find("integer"), std::string::npos);
+  EXPECT_NE(error_of({"system.N=1000.5"}).find("integer"), std::string::npos);
+  EXPECT_NE(error_of({"system.N=1e30"}).find("integer"), std::string::npos);  // beyond 64 bits
+}
+
+// Each absurd consequence is named with what it would cost and the limit.
+TEST(Scene, AbsurdCostsAreRefusedWithWhatTheyWouldCost) {
+  EXPECT_NE(error_of({"system.N=1e12"}).find("180 TB of memory; the limit is N < 2^31"), std::string::npos);
+  EXPECT_NE(error_of({"system.phi=1e-308"}).find("cell grid of inf cells"), std::string::npos);
+  const std::string wide = error_of({}, "[system]\nN = 2\nL = 3e9\n[run]\nt_end = 1\n");
+  EXPECT_NE(wide.find("cell grid of 2.7e+28 cells"), std::string::npos) << wide;
+  EXPECT_NE(wide.find("the limit is 2^31 cells"), std::string::npos) << wide;
+  EXPECT_NE(error_of({"system.L=inf"}).find("must be a finite number > 0"), std::string::npos);
+  EXPECT_NE(error_of({"system.equilibrate=inf"}).find("finite"), std::string::npos);
+  EXPECT_NE(error_of({"system.equilibrate=1e300"}).find("5e+302 collisions before t = 0; the limit is 1e12"),
+            std::string::npos);
+  EXPECT_NE(error_of({"output.dumps_per_decade=1000000000"}).find("4e+09 dumps (240 TB); the limit is 1e4"),
+            std::string::npos);
+  EXPECT_NE(error_of({"output.observables_per_decade=100000"}).find("4e+05 rows of observables; the limit is 1e5"),
+            std::string::npos);
+  // Within the limits a scene is accepted: check_scene_cost with this machine's memory.
+  EXPECT_EQ(error_of({"system.equilibrate=1e6"}), "");
+  const Scene s = parse_scene(kScene, "s.toml", {});
+  EXPECT_NO_THROW(check_scene_cost(s, 1e9));
+  EXPECT_THROW(check_scene_cost(s, 1e4), InputError);  // 1000 particles need about 180 kB
+}
+
+TEST(Scene, OneOfNLPhiCanBeOverriddenAndTheOthersFollow) {
+  const Scene l = parse_scene(kScene, "s.toml", {"system.L=20"});  // the scene gives N and phi
+  EXPECT_EQ(l.L, 20.0);
+  EXPECT_EQ(l.N, std::llround(0.208 * 6 * 8000 / M_PI));  // phi kept, N follows
+  const char* kNL = "[system]\nN = 1000\nL = 20\n[run]\nt_end = 1\n";
+  const Scene phi = parse_scene(kNL, "s.toml", {"system.phi=0.05"});
+  EXPECT_EQ(phi.N, 1000);  // N kept, L follows
+  EXPECT_NEAR(phi.phi, 0.05, 1e-15);
+  const Scene n = parse_scene(kNL, "s.toml", {"system.N=2000"});
+  EXPECT_EQ(n.L, 20.0);  // N and L: the scene's L stays
+  EXPECT_NE(error_of({"system.N=1000", "system.L=20", "system.phi=0.3"}).find("disagree"), std::string::npos);
+}
+
+TEST(Scene, TextsTheParserCannotSurviveAreRefusedBeforeParsing) {
+  const std::string deep = "[run]\nt_end = 1\nx = " + std::string(100000, '[') + std::string(100000, ']') + "\n";
+  EXPECT_NE(error_of({}, deep).find("nested 100000 deep; the limit is 16"), std::string::npos);
+  EXPECT_NE(error_of({"output.dump_times=" + std::string(5000, '[')}).find("nested"), std::string::npos);
+  const std::string big = "# " + std::string(2 << 20, 'x') + "\n" + kScene;
+  EXPECT_NE(error_of({}, big).find("the limit is 1048576"), std::string::npos);
+  // Brackets inside strings and comments are not nesting.
+  EXPECT_NE(error_of({}, std::string(kScene) + "# " + std::string(100, '[') + "\n"), "x");
+  EXPECT_EQ(error_of({"system.init=\"[[[[[[[[[[[[[[[[[[[[\""}).find("nested"), std::string::npos);
+}
+
+TEST(Scene, ValuesInMessagesAreOneShortLine) {
+  const std::string e = error_of({"system.init=\"ran\\ndom" + std::string(1000, 'x') + "\""});
+  EXPECT_EQ(e.find('\n'), std::string::npos);
+  EXPECT_NE(e.find("ran\\ndom"), std::string::npos) << e;
+  EXPECT_LT(e.size(), 200u) << e;
+  EXPECT_NE(e.find("is not known: use \"random\" or \"fcc\""), std::string::npos) << e;
+}
+
+TEST(Scene, HelpShowsEachKeysRangeAndDefaultFromTheTable) {
+  const std::string help = scene_keys_help();
+  EXPECT_NE(help.find("collision.r0 (float, in (0, 1], default 1.0; model inelastic)"), std::string::npos) << help;
+  EXPECT_NE(help.find("run.t_end (float, > 0, required)"), std::string::npos) << help;
+  EXPECT_NE(help.find("output.dumps_per_decade (integer, in [1, 2147483647], default 5)"), std::string::npos);
+  EXPECT_NE(help.find("collision.viscoelastic_b (float, > 0, required; model viscoelastic)"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace coolgas

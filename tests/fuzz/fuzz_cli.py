@@ -1,0 +1,357 @@
+#!/usr/bin/python3
+"""Hostile input for every program, as a fuzz corpus run by ctest.
+
+Generates several hundred cases from a fixed seed (the same corpus on every
+run) and runs each:
+  refused   scenes, --set values, output paths, tool arguments and corrupt
+            files to resume: exit code 2, one line on stderr, nothing on
+            stdout, no file written or changed;
+  no space  every tool writing its table to /dev/full or a closed stdout:
+            a non-zero exit code and one line naming stdout;
+  pipe      every tool into a closed pipe (| head -c 1): nothing on stderr.
+Each case has a time limit: a hang is a failure too.
+
+usage: fuzz_cli.py BIN_DIR WORK_DIR [--list]
+"""
+import concurrent.futures
+import hashlib
+import os
+import random
+import shutil
+import subprocess
+import sys
+
+TIMEOUT_S = 20
+
+BASE = {
+    "system.N": "200",
+    "system.phi": "0.1",
+    "system.seed": "3",
+    "collision.model": '"inelastic"',
+    "collision.r0": "0.5",
+    "collision.delta": "1e-4",
+    "run.t_end": "2",
+}
+
+# Values refused for every key of the type (wrong types, not finite, absurd).
+NOT_A_NUMBER = ['"12"', "true", "[1, 2]", "{ a = 1 }", "1979-05-27", '"x\\ny"']
+NOT_FINITE = ["inf", "-inf", "nan", "+inf"]
+# Values out of each key's range or absurd in what they imply.
+BAD = {
+    "system.N": ["0", "1", "-5", "1e12", "1.5", "1e30", "9223372036854775807", "4294967297", "2.5e9"],
+    "system.phi": ["0", "-0.1", "0.4", "0.75", "1", "1e-308", "1e300", "5e-324"],
+    "system.seed": ["1.5", "1e30"],
+    "system.init": ['"lattice"', '""', '"random "', '"' + "r" * 10000 + '"', '"ran\\u0000dom"', "1"],
+    "system.equilibrate": ["-1", "1e300", "1e20", "-1e-300"],
+    "collision.model": ['"sticky"', '"Elastic"', '""', "2", '"inelastic\\n"'],
+    "collision.r0": ["0", "-0.5", "1.0000001", "2", "1e300"],
+    "collision.delta": ["-1e-4", "-1e300"],
+    "run.t_end": ["0", "-5", "-1e-300"],
+    "output.observables_per_decade": ["0", "-1", "4294967297", "2147483648", "1e5", "100000", "1e9", "0.5"],
+    "output.dumps_per_decade": ["0", "-3", "4294967297", "2147483648", "1e9", "1000000", "2.5"],
+    "output.t_min": ["0", "-1", "-1e-300"],
+    "output.dump_times": ["[-1]", "[nan]", "[inf]", "5", '["a"]', "[[1]]", "[1, -2]"],
+}
+KEYS = list(BAD)
+STRING_KEYS = {"system.init", "collision.model"}
+
+
+def toml(kv):
+    tables = {}
+    for key, value in kv.items():
+        table, name = key.split(".", 1)
+        tables.setdefault(table, []).append(f"{name} = {value}")
+    return "".join(f"[{t}]\n" + "\n".join(lines) + "\n\n" for t, lines in tables.items())
+
+
+class Corpus:
+    def __init__(self, bin_dir, work):
+        self.bin, self.work, self.cases = bin_dir, work, []
+        self.rng = random.Random(20261201)
+
+    def prog(self, name):
+        return os.path.join(self.bin, name)
+
+    def path(self, name):
+        return os.path.join(self.work, name)
+
+    def add(self, kind, what, command, stdin=None, watch=None):
+        self.cases.append({"kind": kind, "what": what, "command": command, "watch": watch})
+
+    def scene_file(self, text):
+        name = self.path(f"scene{len(self.cases)}.toml")
+        with open(name, "w", encoding="utf-8", errors="surrogateescape") as f:
+            f.write(text)
+        return name
+
+    def refused_scene(self, what, text, extra=""):
+        out = self.path(f"out{len(self.cases)}.h5")
+        cmd = f"{self.prog('coolgas-simulate')} -q {self.scene_file(text)} -o {out} {extra}"
+        self.add("refused", what, cmd, watch=out)
+
+    # Scenes: each key with each of its bad values, in the file and as --set.
+    def scenes(self):
+        for key in KEYS:
+            wrong_type = [v for v in NOT_A_NUMBER if not (key == "output.dump_times" and v == "[1, 2]")]
+            bad = BAD[key] + (NOT_A_NUMBER[3:] if key in STRING_KEYS else wrong_type + NOT_FINITE)
+            for value in bad:
+                kv = dict(BASE)
+                kv[key] = value
+                self.refused_scene(f"scene {key} = {value[:40]}", toml(kv))
+                out = self.path(f"out{len(self.cases)}.h5")
+                arg = f"{key}={value}".replace("'", "'\\''")
+                cmd = f"{self.prog('coolgas-simulate')} -q {self.scene_file(toml(BASE))} -o {out} --set '{arg}'"
+                self.add("refused", f"--set {key}={value[:40]}", cmd, watch=out)
+
+    # Structure: typos, missing keys, nesting, size, garbage bytes.
+    def structures(self):
+        letters = "abcdefghijklmnopqrstuvwxyz._"
+        for _ in range(40):
+            key = self.rng.choice(KEYS)
+            i = self.rng.randrange(len(key))
+            typo = key[:i] + self.rng.choice(letters) + key[i + 1:]
+            if typo in BASE or typo in BAD or typo.count(".") != 1 or typo.startswith(".") or typo.endswith("."):
+                continue
+            kv = dict(BASE)
+            kv[typo] = "1"
+            self.refused_scene(f"unknown key {typo}", toml(kv))
+        for drop in ["run.t_end", "system.N", "system.phi"]:
+            kv = {k: v for k, v in BASE.items() if k != drop}
+            if drop != "run.t_end":
+                kv.pop("system.phi" if drop == "system.N" else "system.N")
+            self.refused_scene(f"missing {drop}", toml(kv))
+        for depth in [17, 100, 5000, 100000]:
+            self.refused_scene(f"nested {depth}", toml(BASE) + "[output]\ndump_times = " + "[" * depth + "]" * depth + "\n")
+            self.refused_scene(f"inline tables {depth}", toml(BASE) + "x = " + "{a=" * depth + "1" + "}" * depth + "\n")
+        self.refused_scene("10 MB value", toml(BASE).replace('"inelastic"', '"' + "x" * 10_000_000 + '"'))
+        self.refused_scene("2 MB comment", "#" + "c" * 2_000_000 + "\n" + toml(BASE))
+        for n in range(30):
+            garbage = bytes(self.rng.randrange(256) for _ in range(self.rng.randrange(1, 400)))
+            self.refused_scene(f"garbage {n}", garbage.decode("latin-1"))
+        self.refused_scene("empty scene", "")
+        self.refused_scene("N, L, phi disagree", toml({**BASE, "system.L": "5"}))
+        self.refused_scene("box too small", toml({**BASE, "system.N": "2", "system.phi": "0.3"}))
+        self.refused_scene("N = 2, L = 3e9", toml({"system.N": "2", "system.L": "3e9", "run.t_end": "1"}))
+        self.refused_scene("aggregation with r0", toml({**BASE, "collision.model": '"aggregation"'}))
+        for bad in ["", "=", "=5", "noequals", "system.N", "run.t_end=" + "[" * 20000]:
+            self.refused_scene(f"--set '{bad[:30]}'", toml(BASE), f"--set '{bad}'")
+
+    # Output paths and command lines of coolgas-simulate.
+    def simulate_paths(self):
+        scene = self.scene_file(toml(BASE))
+        os.makedirs(self.path("a_directory"), exist_ok=True)
+        sim = self.prog("coolgas-simulate") + " -q"
+        for what, args in [
+            ("-o a directory", f"-o {self.path('a_directory')} --force"),
+            ("-o a directory/", f"-o {self.path('a_directory')}/"),
+            ("-o /dev/null --force", "-o /dev/null --force"),
+            ("-o a missing folder", f"-o {self.path('no/such/dir/x.h5')}"),
+            ("-o through a file", f"-o {scene}/x.h5"),
+            ("-o a 300-character name", f"-o {self.path('n' * 300 + '.h5')}"),
+            ("-o an empty name", "-o ''"),
+            ("unknown option", "--no-such-option"),
+        ]:
+            self.add("refused", "simulate " + what, f"{sim} {scene} {args}")
+        for what, args in [
+            ("missing scene", self.path("missing.toml")),
+            ("scene is a directory", self.path("a_directory")),
+            ("scene and --resume", f"{scene} --resume {scene}"),
+            ("nothing", ""),
+            ("--resume missing", "--resume " + self.path("missing.h5")),
+            ("--resume a directory", "--resume " + self.path("a_directory")),
+            ("--resume /dev/null", "--resume /dev/null"),
+            ("--resume a text file", "--resume " + scene),
+        ]:
+            self.add("refused", "simulate " + what, f"{sim} {args}")
+
+    # Analysis tools: bad options and bad inputs.
+    def tools(self, run, table):
+        os.makedirs(self.path("a_directory"), exist_ok=True)
+        text = self.scene_file("not a trajectory\n")
+        bad_inputs = [self.path("missing.h5"), self.path("a_directory"), "/dev/null", text]
+        p = self.prog
+        for tool in ["coolgas-energy", "coolgas-clusters", "coolgas-velocity", "coolgas-validate"]:
+            for b in bad_inputs:
+                self.add("refused", f"{tool} {b[-30:]}", f"{p(tool)} {b}")
+        for b in bad_inputs[:2] + [run]:
+            self.add("refused", f"coolgas-fit --power {b[-30:]}", f"{p('coolgas-fit')} --power {b}")
+            self.add("refused", f"coolgas-collapse {b[-30:]}", f"{p('coolgas-collapse')} {b}")
+        options = {
+            "coolgas-energy": [f"{run} --per-decade {v}" for v in ["0", "-1", "1e9", "2000000000", "x", "99999999999"]],
+            "coolgas-velocity": [f"{run} --bins {v}" for v in ["0", "7", "1e9", "1000000000", "-2", "x"]]
+            + [f"{run} --ymax {v}" for v in ["0", "-1", "nan", "inf"]]
+            + [f"{run} --tail-from {v}" for v in ["0", "-1", "nan"]]
+            + [f"{run} --min-count {v}" for v in ["0", "-5"]] + [f"{run} --tail --series"],
+            "coolgas-clusters": [f"{run} --bins-per-decade {v}" for v in ["0", "-1", "x"]] + [f"{run} --series --scaled"],
+            "coolgas-fit": [f"--power --window {w} {table}" for w in ["x:y", "5:1", "1e300:1e301", "::"]]
+            + [f"--local-slope --smooth {s} {table}" for s in ["0", "-1", "nan"]]
+            + [f"--power --t-column nope {table}", "--power --haff " + table, table],
+            "coolgas-collapse": [f"--bootstrap {b} --optimize {table} {table}" for b in ["-1", "1000000000"]]
+            + [f"--min-overlap -1 {table}", f"--t-window 5:1 {table}", f"--e-column nope {table}"],
+            "coolgas-snapshot": [f"{run} --time 0 -o {self.path('a_directory')}",
+                                 f"{run} --time 0 -o {self.path('no/dir/x.png')}",
+                                 f"{run} --time 0 -o x.png --colored 99", f"{run} --time 0 -o x.png --size 1e9",
+                                 f"{run} --time 0 -o x.png --size 5", f"{run} --time 0 -o x.png --view 2d",
+                                 f"{run} --time 0 -o x.png --max-points 0", f"{run} --time 0 -o x.png --thickness -1"],
+            "coolgas-smoluchowski": [f"--M {m} --times 1" for m in ["0", "1", "1e12", "1000000000000", "-5"]]
+            + ["--kernel nope --times 1", "--method nope --times 1", "--times -1", "--times x", "--M 64",
+               "--until-mean-mass 1e300 --M 64", "--kernel separable:0,1,1 --times 1", "--rtol -1 --times 1"],
+        }
+        for tool, args in options.items():
+            for a in args:
+                self.add("refused", f"{tool} {a.replace(self.work, '')[:50]}", f"{p(tool)} {a}")
+            self.add("refused", f"{tool} unknown option", f"{p(tool)} --no-such-option")
+
+    # Resuming corrupt files: each a copy of a good run with one fault.
+    def corrupt_resumes(self, run):
+        import h5py
+        import numpy as np
+
+        def fault(name, change):
+            path = self.path(f"corrupt_{name}.h5")
+            shutil.copy(run, path)
+            with h5py.File(path, "r+") as f:
+                change(f)
+            self.add("refused", f"--resume {name}", f"{self.prog('coolgas-simulate')} -q --resume {path} --set run.t_end=4",
+                     watch=path)
+
+        pos = "particles/all/position/value"
+
+        def set_position(i, value):
+            def change(f):
+                p = f[pos][-1]
+                p[i] = value
+                f[pos][-1] = p
+            return change
+
+        def two_spheres_close(f):
+            p = f[pos][-1]
+            p[7] = p[3] + np.array([0.3, 0, 0])
+            p[7][0] %= f["parameters"].attrs["L"]
+            f[pos][-1] = p
+
+        def set_attr(name, value):
+            def change(f):
+                f["parameters"].attrs[name] = value
+            return change
+
+        fault("outside_the_box", set_position(5, [1e6, 1, 1]))
+        fault("negative_position", set_position(5, [-0.5, 1, 1]))
+        fault("position_1e300", set_position(9, [1e300, 1e300, 1e300]))
+        fault("nan_position", set_position(2, [np.nan, 1, 1]))
+        fault("inf_position", set_position(2, [1, np.inf, 1]))
+        fault("two_spheres_0.3_apart", two_spheres_close)
+        fault("L_inf", set_attr("L", np.inf))
+        fault("L_nan", set_attr("L", np.nan))
+        fault("L_tiny", set_attr("L", 2.0))
+        fault("L_huge", set_attr("L", 3e9))
+
+        def nan_velocity(f):
+            v = f["particles/all/velocity/value"][-1]
+            v[4] = [np.nan, 0, 0]
+            f["particles/all/velocity/value"][-1] = v
+        fault("nan_velocity", nan_velocity)
+
+    # Output that cannot be written, and closed pipes.
+    def outputs(self, run, table):
+        p = self.prog
+        commands = {
+            "coolgas-energy": f"{p('coolgas-energy')} --per-decade 2000 {run}",
+            "coolgas-fit": f"{p('coolgas-fit')} --local-slope {table}",
+            "coolgas-collapse": f"{p('coolgas-collapse')} {table}",
+            "coolgas-clusters": f"{p('coolgas-clusters')} {run}",
+            "coolgas-velocity": f"{p('coolgas-velocity')} --bins 20000 {run}",
+            "coolgas-smoluchowski": f"{p('coolgas-smoluchowski')} --kernel constant --M 4096 --times 1,2,3",
+            "coolgas-validate": f"{p('coolgas-validate')} {run}",
+            "coolgas-simulate --help": f"{p('coolgas-simulate')} --help",
+        }
+        for tool, cmd in commands.items():
+            self.add("no space", f"{tool} > /dev/full", cmd + " > /dev/full")
+            self.add("no space", f"{tool} >&-", cmd + " >&-")
+            self.add("pipe", f"{tool} | head -c 1", cmd + " | head -c 1 > /dev/null")
+
+
+def run_case(case, work):
+    before = sorted(os.listdir(work))
+    digest = None
+    if case["watch"] and os.path.exists(case["watch"]):
+        digest = hashlib.sha256(open(case["watch"], "rb").read()).hexdigest()
+    try:
+        r = subprocess.run(["/bin/sh", "-c", case["command"]], cwd=work, capture_output=True, timeout=TIMEOUT_S)
+    except subprocess.TimeoutExpired:
+        return f"no answer within {TIMEOUT_S} s"
+    err = r.stderr.decode("utf-8", "replace")
+    lines = err.count("\n") + (1 if err and not err.endswith("\n") else 0)
+    kind = case["kind"]
+    if kind == "refused":
+        if r.returncode != 2:
+            return f"exit code {r.returncode}, expected 2: {err[:300]}"
+        if lines != 1:
+            return f"{lines} lines on stderr, expected 1: {err[:300]}"
+        if len(err.rstrip("\n")) > 600:  # about 200 characters (UTF-8, escapes)
+            return f"an error line of {len(err)} bytes"
+        if "internal error" in err:
+            return "internal error: " + err
+        if r.stdout:
+            return "stdout not empty: " + r.stdout[:200].decode("utf-8", "replace")
+        if case["watch"]:
+            if digest is None and os.path.exists(case["watch"]):
+                return "output file written: " + case["watch"]
+            if digest and hashlib.sha256(open(case["watch"], "rb").read()).hexdigest() != digest:
+                return "file changed: " + case["watch"]
+        after = sorted(os.listdir(work))
+        if after != before:
+            return "files written: " + ", ".join(sorted(set(after) - set(before)))
+    elif kind == "no space":
+        if r.returncode == 0:
+            return "exit code 0 although stdout could not be written"
+        if lines != 1 or "stdout" not in err:
+            return f"expected one line naming stdout, got: {err[:300]}"
+    elif kind == "pipe":
+        if err:
+            return "stderr not empty: " + err[:300]
+    return None
+
+
+def main():
+    if len(sys.argv) < 3:
+        sys.exit(__doc__)
+    bin_dir, work = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
+    corpus = Corpus(bin_dir, work)
+    # A small good run and its energy table, for the tools and the corrupt resumes.
+    run, table = corpus.path("good.h5"), corpus.path("good.tsv")
+    good = subprocess.run([corpus.prog("coolgas-simulate"), "-q", corpus.scene_file(toml(BASE)), "-o", run],
+                          capture_output=True, timeout=120)
+    if good.returncode != 0:
+        sys.exit("cannot make the good run: " + good.stderr.decode())
+    with open(table, "wb") as f:
+        subprocess.run([corpus.prog("coolgas-energy"), run], stdout=f, check=True, timeout=60)
+    corpus.scenes()
+    corpus.structures()
+    corpus.simulate_paths()
+    corpus.tools(run, table)
+    corpus.corrupt_resumes(run)
+    corpus.outputs(run, table)
+    if "--list" in sys.argv:
+        for c in corpus.cases:
+            print(c["kind"], "|", c["what"])
+        return
+    failures = 0
+    # Two at a time (the machine's two cores); the report keeps the corpus order.
+    with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
+        problems = list(pool.map(lambda c: run_case(c, work), corpus.cases))
+    for case, problem in zip(corpus.cases, problems):
+        if problem:
+            failures += 1
+            print(f"FAIL [{case['kind']}] {case['what']}: {problem}")
+    kinds = {}
+    for c in corpus.cases:
+        kinds[c["kind"]] = kinds.get(c["kind"], 0) + 1
+    print(f"{len(corpus.cases)} cases ({', '.join(f'{n} {k}' for k, n in kinds.items())}), {failures} failed")
+    sys.exit(1 if failures else 0)
+
+
+if __name__ == "__main__":
+    main()
