@@ -73,10 +73,10 @@ TEST_F(TrajectorySafety, SigkillAtAnyMomentLeavesEveryEarlierDumpValidAndResumab
                                delay + "; kill -KILL $p; wait $p)");
     if (k.exit_code == 0) continue;  // the run finished first: nothing to test at this delay
     if (run_command("test -e " + out).exit_code != 0) continue;  // killed before its first dump
-    ++files;
     EXPECT_EQ(validate(out), "") << "killed after " << delay << " s";
     const auto before = dump_times(out);
-    ASSERT_LT(before.size(), whole.size());
+    if (before.size() == whole.size()) continue;  // killed after its last dump, while closing: nothing to resume
+    ++files;
     EXPECT_EQ(before, std::vector<double>(whole.begin(), whole.begin() + long(before.size())));
     const auto r = run_command(bin("coolgas-simulate") + " -q --resume " + out);
     EXPECT_EQ(r.exit_code, 0) << r.err;
