@@ -1,5 +1,6 @@
-# SCALE = demo: the paper's result at the smallest sizes that show it, in
-# about 10 minutes with make -j2 on a 2-core machine (one core per run).
+# SCALE = demo: the paper's result at the smallest sizes that show it
+# (about 4 800 core-seconds of runs measured on a loaded 2-core machine;
+# pipelines/README.md).
 # Every box is chosen so its quantity is measured in its own regime: Fig. 1
 # needs L >= 34 (smaller boxes stay in the finite-size regime), and the
 # exponent table (exponents.md) says for each quantity whether the run
