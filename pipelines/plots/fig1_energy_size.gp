@@ -41,10 +41,12 @@ x_min = STATS_min; x_max = STATS_max
 if (xhi <= 0) xhi = x_max
 stats collapse using ($1 >= xlo && $1 <= xhi ? log($2) + eta * log($1) : 1/0) nooutput
 B_eta = exp(STATS_mean)
-stats collapse using ($1 < xlo / 3 ? log($2) + theta * log($1) : 1/0) nooutput
+# x^-theta is the scaling regime x << 1: drawn (and its prefactor taken) below x = 0.1
+th_hi = (xlo / 3 < 0.1 ? xlo / 3 : 0.1)
+stats collapse using ($1 < th_hi ? log($2) + theta * log($1) : 1/0) nooutput
 B_theta = exp(STATS_mean)
 plot for [i = 0 : n - 1] collapse index i using 1:2 with linespoints ls (i + 1) pi 6 title sprintf("L = %d", Lof(i + 1)), \
-     [x_min:xlo] B_theta * x**(-theta) with lines lw 3 lc rgb "black" \
+     [x_min:th_hi] B_theta * x**(-theta) with lines lw 3 lc rgb "black" \
        title sprintf("x^{-{/Symbol q}}, {/Symbol q} = %.3f ± %.3f, z = %.2f ± %.2f", theta, theta_err, z, z_err), \
      [xlo:xhi] B_eta * x**(-eta) with lines lw 3 dt 2 lc rgb "black" title sprintf("x^{-{/Symbol h}}, {/Symbol h} = %.2f ± %.2f", eta, eta_err)
 
