@@ -96,7 +96,11 @@ int run_body(const std::string& tool, const std::function<int()>& body) {
 int run_tool(const std::string& tool, const std::function<int()>& body) {
   std::signal(SIGXFSZ, SIG_IGN);
   std::signal(SIGPIPE, SIG_DFL);
-  static StdoutBuffer buffer;  // static: outlives anything written at exit
+  // Never destroyed: std::cout is flushed at exit after function-local
+  // statics are gone (ios_base::Init runs first, so is torn down last), and
+  // a destroyed buffer there is a use after free (AddressSanitizer's lane
+  // found it).
+  static StdoutBuffer& buffer = *new StdoutBuffer;
   std::cout.rdbuf(&buffer);
   int code = run_body(tool, body);
   std::cout.flush();
