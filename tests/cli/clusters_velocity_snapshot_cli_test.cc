@@ -14,6 +14,7 @@
 #include "common/hdf5_file.h"
 #include "common/random.h"
 #include "tests/support/cli_checks.h"
+#include "tests/support/gas_file.h"
 #include "tests/support/run_command.h"
 
 namespace coolgas {
@@ -32,34 +33,13 @@ std::string command(const std::string& tool, const std::string& file, const std:
   return c;
 }
 
-// A run of N = 3000 uniformly placed particles with Gaussian velocities (two
-// dumps), optionally with a NaN at one coordinate of the second dump.
-void write_run(const std::string& path, double nan_at_position = false, bool nan_at_velocity = false) {
-  const std::int64_t n = 3000;
-  RunParameters p;
-  p.N = n;
-  p.L = 25;
-  p.seed = 9;
-  H5mdWriter w = H5mdWriter::create(path, p, true);
-  Random rng(9);
-  std::vector<double> pos(3 * n), vel(3 * n);
-  std::vector<std::int32_t> img(3 * n, 0);
-  for (int f = 0; f < 2; ++f) {
-    for (double& x : pos) x = p.L * rng.uniform();
-    for (double& v : vel) v = rng.normal();
-    if (f == 1 && nan_at_position) pos[3 * 17 + 1] = std::numeric_limits<double>::quiet_NaN();
-    if (f == 1 && nan_at_velocity) vel[3 * 5] = std::numeric_limits<double>::quiet_NaN();
-    w.add_frame({double(10 * f), 100 * f, 0, pos.data(), img.data(), vel.data()});
-  }
-}
-
 class ClustersVelocitySnapshotCli : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     dir = new std::string(test::scratch_dir("clusters_velocity_snapshot_cli"));
-    write_run(*dir + "/run.h5");
-    write_run(*dir + "/nan_position.h5", true, false);
-    write_run(*dir + "/nan_velocity.h5", false, true);
+    test::write_gas_file(*dir + "/run.h5");
+    test::write_gas_file(*dir + "/nan_position.h5", true, false);
+    test::write_gas_file(*dir + "/nan_velocity.h5", false, true);
     std::ofstream(*dir + "/empty.h5");
     std::ofstream(*dir + "/table.tsv") << "# t\tE\n0\t1\n";
     // An HDF5 file with the H5MD root group but no particles.

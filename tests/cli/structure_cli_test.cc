@@ -14,6 +14,7 @@
 #include "common/random.h"
 #include "common/tsv.h"
 #include "tests/support/cli_checks.h"
+#include "tests/support/gas_file.h"
 #include "tests/support/run_command.h"
 
 namespace coolgas {
@@ -24,26 +25,6 @@ using test::expect_one_error_line;
 using test::run_command;
 
 const char* const kTools[] = {"coolgas-structure", "coolgas-shape"};
-
-// A gas of N = 3000 uniformly placed particles with Gaussian velocities (two
-// dumps), optionally with a NaN position in the second.
-void write_gas(const std::string& path, bool nan_at_position = false) {
-  const std::int64_t n = 3000;
-  RunParameters p;
-  p.N = n;
-  p.L = 25;
-  p.seed = 9;
-  H5mdWriter w = H5mdWriter::create(path, p, true);
-  Random rng(9);
-  std::vector<double> pos(3 * n), vel(3 * n);
-  std::vector<std::int32_t> img(3 * n, 0);
-  for (int f = 0; f < 2; ++f) {
-    for (double& x : pos) x = p.L * rng.uniform();
-    for (double& v : vel) v = rng.normal();
-    if (f == 1 && nan_at_position) pos[3 * 17 + 1] = std::numeric_limits<double>::quiet_NaN();
-    w.add_frame({double(10 * f), 100 * f, 0, pos.data(), img.data(), vel.data()});
-  }
-}
 
 // A ballistic-aggregation file: 400 slots holding five aggregates of masses
 // 10, 20, 50, 100 and 220 (one dump).
@@ -77,8 +58,8 @@ class StructureCli : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     dir = new std::string(test::scratch_dir("structure_cli"));
-    write_gas(*dir + "/run.h5");
-    write_gas(*dir + "/nan.h5", true);
+    test::write_gas_file(*dir + "/run.h5");
+    test::write_gas_file(*dir + "/nan.h5", true);
     write_aggregates(*dir + "/ba.h5");
     std::ofstream(*dir + "/empty.h5");
     std::ofstream(*dir + "/table.tsv") << "# t\tE\n0\t1\n";
