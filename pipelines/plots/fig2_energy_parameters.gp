@@ -25,21 +25,27 @@ set xlabel "t  [initial mean collision times 1/{/Symbol w}_0]"
 set ylabel "E(t) / E(0)"
 set xrange [0.1:*]
 ref(x) = 3 * x**(-1.2)
-# panel(tables, values, name): the curves, their fits, and t^-6/5 (joined
+# read_fits: the fit of each curve of `tables` into arrays TH, THE, FA, FLO,
+# FHI, read once before its panel (a function of the file in the plot command
+# would run its shell commands again at every sample point: minutes).
+read_fits = "n = words(tables); array TH[n]; array THE[n]; array FA[n]; array FLO[n]; array FHI[n]; " . \
+  "do for [i = 1 : n] { t = word(tables, i); TH[i] = th(t); THE[i] = the(t); FA[i] = fA(t); FLO[i] = flo(t); FHI[i] = fhi(t) }"
+# panel(values, name): the curves of `tables`, their fits, and t^-6/5 (joined
 # with '.', not sprintf, which cuts long strings such as lists of paths)
-panel(tables, values, name) = "for [i = 1 : words(" . q(tables) . ")] word(" . q(tables) . ", i) using 1:($1 > 0 ? $4 : NaN) " . \
-  "with linespoints ls i pi 6 title sprintf('" . name . " = %s: {/Symbol q} = %.3f ± %.3f', word(" . q(values) . ", i), " . \
-  "th(word(" . q(tables) . ", i)), the(word(" . q(tables) . ", i))), " . \
-  "for [i = 1 : words(" . q(tables) . ")] [flo(word(" . q(tables) . ", i)):fhi(word(" . q(tables) . ", i))] " . \
-  "fA(word(" . q(tables) . ", i)) * x**(-th(word(" . q(tables) . ", i))) with lines ls i lw 1 dt 1 notitle, " . \
+panel(values, name) = "for [i = 1 : n] word(tables, i) using 1:($1 > 0 ? $4 : NaN) " . \
+  "with linespoints ls i pi 6 title sprintf('" . name . " = %s: {/Symbol q} = %.3f ± %.3f', word(" . q(values) . ", i), TH[i], THE[i]), " . \
+  "for [i = 1 : n] [FLO[i]:FHI[i]] FA[i] * x**(-TH[i]) with lines ls i lw 1 dt 1 notitle, " . \
   "[1:*] ref(x) with lines lw 3 lc rgb 'black' title 't^{-6/5}'"
 
 set title "(a) volume fraction {/Symbol f}"
-eval "plot " . panel(phi_tables, phis, "{/Symbol f}")
+tables = phi_tables; eval read_fits
+eval "plot " . panel(phis, "{/Symbol f}")
 
 set title "(b) coefficient of restitution r_0"
-eval "plot " . panel(r0_tables, r0s, "r_0")
+tables = r0_tables; eval read_fits
+eval "plot " . panel(r0s, "r_0")
 
 set title "(c) cut-off velocity {/Symbol d}"
-eval "plot " . panel(delta_tables, deltas, "{/Symbol d}")
+tables = delta_tables; eval read_fits
+eval "plot " . panel(deltas, "{/Symbol d}")
 unset multiplot

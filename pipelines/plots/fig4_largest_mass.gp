@@ -27,10 +27,18 @@ set key outside right top
 set xlabel "t  [initial mean collision times 1/{/Symbol w}_0]"
 set ylabel "M_{max}(t) / N  (largest cluster's share of the particles)"
 set xrange [0.01:*]
-gas_curves = "for [i = 1 : ng] word(gas, i) using 1:($1 > 0 ? $6 / Nof(word(gas, i)) : NaN) with linespoints ls i title sprintf('gas %s', label(word(gas, i))), \
-  for [i = 1 : ng] [lo(word(gas, i)):hi(word(gas, i))] A(word(gas, i)) * x**a(word(gas, i)) / Nof(word(gas, i)) with lines ls i lw 1 dt 1 title sprintf('  fit t^{%.2f ± %.2f}', a(word(gas, i)), ae(word(gas, i)))"
-ba_curves = "for [i = 1 : nb] word(ba, i) using 1:($1 > 0 ? $6 / Nof(word(ba, i)) : NaN) with linespoints ls (ng + i) title sprintf('BA %s', label(word(ba, i))), \
-  for [i = 1 : nb] [lo(word(ba, i)):hi(word(ba, i))] A(word(ba, i)) * x**a(word(ba, i)) / Nof(word(ba, i)) with lines ls (ng + i) lw 1 dt 1 title sprintf('  fit t^{%.2f ± %.2f}', a(word(ba, i)), ae(word(ba, i)))"
+# read_fits: for each table of `tables` (prefix P), its N and its fit into
+# arrays P_N, P_a, P_ae, P_A, P_lo, P_hi, read once: a function of the file
+# in the plot command would run its shell commands at every point (minutes).
+read_fits(P) = "n = words(tables); array ".P."_N[n]; array ".P."_a[n]; array ".P."_ae[n]; " . \
+  "array ".P."_A[n]; array ".P."_lo[n]; array ".P."_hi[n]; do for [i = 1 : n] { t = word(tables, i); " . \
+  P."_N[i] = Nof(t); ".P."_a[i] = a(t); ".P."_ae[i] = ae(t); ".P."_A[i] = A(t); ".P."_lo[i] = lo(t); ".P."_hi[i] = hi(t) }"
+tables = gas; eval read_fits("g")
+tables = ba; if (nb > 0) { eval read_fits("b") }
+gas_curves = "for [i = 1 : ng] word(gas, i) using 1:($1 > 0 ? $6 / g_N[i] : NaN) with linespoints ls i title sprintf('gas %s', label(word(gas, i))), \
+  for [i = 1 : ng] [g_lo[i]:g_hi[i]] g_A[i] * x**g_a[i] / g_N[i] with lines ls i lw 1 dt 1 title sprintf('  fit t^{%.2f ± %.2f}', g_a[i], g_ae[i])"
+ba_curves = "for [i = 1 : nb] word(ba, i) using 1:($1 > 0 ? $6 / b_N[i] : NaN) with linespoints ls (ng + i) title sprintf('BA %s', label(word(ba, i))), \
+  for [i = 1 : nb] [b_lo[i]:b_hi[i]] b_A[i] * x**b_a[i] / b_N[i] with lines ls (ng + i) lw 1 dt 1 title sprintf('  fit t^{%.2f ± %.2f}', b_a[i], b_ae[i])"
 if (nb > 0) {
   eval "plot " . gas_curves . ", " . ba_curves
 } else {

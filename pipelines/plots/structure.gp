@@ -19,6 +19,15 @@ lo(t) = tsvval(fitof(t, "lt"), "t_min")
 hi(t) = tsvval(fitof(t, "lt"), "t_max")
 if (!exists("shape_ba")) shape_ba = ""
 nb = nblocks(sk); nl = words(lt); ng = words(shape_gas); nba = words(shape_ba)
+# The fits of each series, read once: a function of the file in the plot
+# command would run its shell commands again at every sample point (minutes).
+array Zt[nl]; array Zte[nl]; array At[nl]; array Ac[nl]; array Zc[nl]; array Zce[nl]; array LO[nl]; array HI[nl]
+do for [i = 1 : nl] {
+  t = word(lt, i)
+  Zt[i] = z(t, "lt"); Zte[i] = ze(t, "lt"); At[i] = A(t, "lt")
+  Zc[i] = z(t, "lc"); Zce[i] = ze(t, "lc"); Ac[i] = A(t, "lc")
+  LO[i] = lo(t); HI[i] = hi(t)
+}
 blockt(i) = real(bfield(sk, i + 1, "t"))
 
 set terminal pngcairo size 1400, 1000 font "sans,11"
@@ -56,10 +65,10 @@ plot for [i = 1 : nl] word(lt, i) using 1:($1 > 0 ? $2 : NaN) with linespoints p
        title "L_C: first zero of C(r)", \
      for [i = 1 : nl] word(lt, i) using 1:($1 > 0 ? $8 : NaN) with linespoints pt 6 ps 0.6 dt 3 lc i \
        title "L_v: first zero of C_v(r) (momentum)", \
-     for [i = 1 : nl] [lo(word(lt, i)):hi(word(lt, i))] A(word(lt, i), "lt") * x**(-th(word(lt, i), "lt")) \
-       with lines lw 3 lc rgb "black" title sprintf("L_t: z = %.2f ± %.2f", z(word(lt, i), "lt"), ze(word(lt, i), "lt")), \
-     for [i = 1 : nl] [lo(word(lt, i)):hi(word(lt, i))] A(word(lt, i), "lc") * x**(-th(word(lt, i), "lc")) \
-       with lines lw 3 dt 2 lc rgb "black" title sprintf("L_C: z = %.2f ± %.2f", z(word(lt, i), "lc"), ze(word(lt, i), "lc"))
+     for [i = 1 : nl] [LO[i]:HI[i]] At[i] * x**(1 / Zt[i]) \
+       with lines lw 3 lc rgb "black" title sprintf("L_t: z = %.2f ± %.2f", Zt[i], Zte[i]), \
+     for [i = 1 : nl] [LO[i]:HI[i]] Ac[i] * x**(1 / Zc[i]) \
+       with lines lw 3 dt 2 lc rgb "black" title sprintf("L_C: z = %.2f ± %.2f", Zc[i], Zce[i])
 unset xrange
 
 set title "(d) fractal dimension of clusters, M ∝ R_g^{d_f} (mass bins from 10 particles)"

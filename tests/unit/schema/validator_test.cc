@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <limits>
@@ -218,7 +219,10 @@ TEST(Validator, FileThatIsNotHdf5IsOneErrorLine) {
     EXPECT_EQ(cli.exit_code, kExitInput);
     EXPECT_EQ(cli.out, "");
     EXPECT_EQ(test::line_count(cli.err), 1) << cli.err;
-    EXPECT_NE(cli.err.find(path), std::string::npos) << cli.err;
+    // The message names the file; a long path is shortened in the middle to
+    // keep the line within common/tool_main's limit, so look for its name.
+    const std::string name = std::filesystem::path(path).filename().string();
+    EXPECT_NE(cli.err.find(name), std::string::npos) << cli.err;
   }
 }
 
