@@ -328,7 +328,7 @@ void Engine<Rule>::note_collision_gap(int i, double gap, int partner) {
       stall_[i] = 0;
       return;
     }
-    if (++stall_[i] < rule_.collapse_limit()) return;
+    if (++stall_[i] < static_cast<unsigned>(rule_.collapse_limit())) return;
     std::ostringstream s;
     s << "inelastic collapse at t = " << now_ << ": particle " << id_[i] << " collided " << rule_.collapse_limit()
       << " times in a row (last with particle " << id_[partner] << ") without simulated time advancing";

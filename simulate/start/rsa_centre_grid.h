@@ -62,12 +62,10 @@ class CentreGrid {
   void prefetch_near(std::size_t cell) const {
     const int cx = int(cell % std::size_t(n_)), cy = int(cell / std::size_t(n_) % std::size_t(n_)),
               cz = int(cell / (std::size_t(n_) * std::size_t(n_)));
-    for (int oz = -1; oz <= 1; ++oz)
-      for (int oy = -1; oy <= 1; ++oy) {
-        const int row = index(0, wrap(cy + oy), wrap(cz + oz));
-        __builtin_prefetch(&first_[std::size_t(row + wrap(cx - 1))]);
-        __builtin_prefetch(&first_[std::size_t(row + wrap(cx + 1))]);
-      }
+    // The cells beside the row through `cell` (its own column shares their lines' neighbours).
+    for_each_neighbour_cell(n_, 0.0, {cx, cy, cz}, [&](const NeighbourCell& nb) {
+      if (nb.offset.x != 0) __builtin_prefetch(&first_[std::size_t(nb.index)]);
+    });
   }
 
   // Calls f(cx, cy, cz, offset) for every centre, cell by cell: the
@@ -161,6 +159,8 @@ bool CentreGrid::any_within_one(const Vec3& x, Exact&& exact) const {
   // x relative to the corner of the cell below-left-front of its own, so
   // that a centre in neighbour (i, j, k) of that corner is at (i, j, k) w + its offset.
   const float px = float(x.x - ax * w_) + wf_, py = float(x.y - ay * w_) + wf_, pz = float(x.z - az * w_) + wf_;
+  // Not the shared walk (cell_grid.h), which visits cells in a fixed order:
+  // this test stops at the first centre it meets, so it goes nearest first.
   const int xs[3] = {wrap(ax - 1), ax, wrap(ax + 1)};
   const int ys[3] = {wrap(ay - 1), ay, wrap(ay + 1)};
   const int zs[3] = {wrap(az - 1), az, wrap(az + 1)};

@@ -13,11 +13,11 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <random>
 #include <vector>
 
 #include "analyze/labelling/cluster_labeller.h"
 #include "analyze/clusters/mass_distribution.h"
+#include "common/random.h"
 #include "common/trajectory/frame_reader.h"
 #include "common/trajectory/h5md_writer.h"
 #include "tests/bench/median_timing.h"
@@ -36,10 +36,9 @@ using coolgas::bench::median_time;
 using coolgas::bench::Timing;
 
 std::vector<double> uniform_positions(std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0.0, kL);
+  coolgas::Random rng(seed);
   std::vector<double> pos(3 * kN);
-  for (double& x : pos) x = u(rng);
+  for (double& x : pos) x = kL * rng.uniform();
   return pos;
 }
 
@@ -47,25 +46,25 @@ std::vector<double> uniform_positions(std::uint64_t seed) {
 // filaments (extended clusters as in the paper's Fig. 3), the rest uniform.
 // Particle order is shuffled, as in a run where particles have mixed.
 std::vector<double> clustered_positions(std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0.0, kL);
-  std::normal_distribution<double> g(0.0, 1.0);
+  coolgas::Random rng(seed);  // portable: the same positions with every standard library
+  const auto u = [&] { return kL * rng.uniform(); };
+  const auto g = [&] { return rng.normal(); };
   std::vector<double> pos;
   pos.reserve(3 * kN);
   const std::int64_t in_filaments = 3 * kN / 4, per_clump = 200;
-  double c[3] = {u(rng), u(rng), u(rng)};
+  double c[3] = {u(), u(), u()};
   for (std::int64_t p = 0; p < in_filaments; ++p) {
     if (p % per_clump == 0) {
-      if (p % (per_clump * 500) == 0) c[0] = u(rng), c[1] = u(rng), c[2] = u(rng);  // new filament
-      for (double& x : c) x += 2.5 * g(rng);
+      if (p % (per_clump * 500) == 0) c[0] = u(), c[1] = u(), c[2] = u();  // new filament
+      for (double& x : c) x += 2.5 * g();
     }
-    for (double x : c) pos.push_back(x + 1.5 * g(rng));
+    for (double x : c) pos.push_back(x + 1.5 * g());
   }
-  while (std::int64_t(pos.size()) < 3 * kN) pos.push_back(u(rng));
+  while (std::int64_t(pos.size()) < 3 * kN) pos.push_back(u());
   for (double& x : pos) x = std::fmod(std::fmod(x, kL) + kL, kL);
   std::vector<std::int64_t> order(kN);
   for (std::int64_t i = 0; i < kN; ++i) order[i] = i;
-  std::shuffle(order.begin(), order.end(), rng);
+  for (std::int64_t i = kN - 1; i > 0; --i) std::swap(order[i], order[rng.below(std::uint64_t(i) + 1)]);  // Fisher-Yates
   std::vector<double> shuffled(3 * kN);
   for (std::int64_t i = 0; i < kN; ++i)
     for (int d = 0; d < 3; ++d) shuffled[3 * i + d] = pos[3 * order[i] + d];

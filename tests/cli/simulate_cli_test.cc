@@ -154,7 +154,10 @@ double last_dump_time(const std::string& path) {
   return h5::read_all<double>(t.id()).back();
 }
 
-TEST(SimulateCli, SigintWritesAFinalDumpThatResumes) {
+// SIGINT stops the run with exit 3 (simulate/run/checkpoint.h: the exact
+// state goes to the checkpoint beside the file; no off-grid dump is added),
+// the file validates, and --resume carries it past its last dump.
+TEST(SimulateCli, SigintLeavesAValidFileThatResumes) {
   const std::string dir = test::scratch_dir("simulate_sigint");
   EXPECT_EQ(run_and_signal(dir, "INT"), 3);
   EXPECT_EQ(run_command(bin("coolgas-validate") + " " + dir + "/long.h5").exit_code, 0);
