@@ -58,7 +58,8 @@ std::map<std::string, Judged> read_exponents(const std::string& path) {
 }
 
 const char* kFigures[] = {"fig1_energy_size.png", "fig2_energy_parameters.png", "fig3_clusters.png",
-                          "fig4_largest_mass.png", "fig5_velocity.png", "smoluchowski.png"};
+                          "fig4_largest_mass.png", "fig5_velocity.png", "smoluchowski.png",
+                          "structure.png"};
 
 TEST(Pipeline, TinyPipelineRunsEndToEndAndIsIncremental) {
   const std::string dir = test::scratch_dir("pipeline");
@@ -101,6 +102,19 @@ TEST(Pipeline, TinyPipelineRunsEndToEndAndIsIncremental) {
   EXPECT_NEAR(value("Smoluchowski Eq. 4: M_avg"), 1.2, 0.1);
   // The tiny boxes are far from the paper's late-time regime, and the table says so.
   EXPECT_EQ(row("beta,").regime.rfind("no: ", 0), 0u);
+  // The growing length (pipelines/structure.mk): z from L_t and L_C with fit
+  // errors, each beside the collapse's z as a difference with its combined
+  // error. A growing length has 1/z > 0; in the 16^3 box (scales/tiny.mk)
+  // L_t is above L/4 = 4 from the first dump on, and the table says box-limited.
+  for (const char* length : {"z, from L_t", "z, from L_C"}) {
+    EXPECT_GT(value(length), 0.0) << length;
+    EXPECT_GT(row(length).error, 0.0) << length;
+  }
+  EXPECT_NE(row("z, from L_t").regime.find("box-limited"), std::string::npos) << row("z, from L_t").regime;
+  const Judged difference = row("z from L_t minus z from the E(t) collapse");
+  EXPECT_NEAR(difference.measured, value("z, from L_t") - value("z, same collapse"), 1e-4);
+  EXPECT_GT(difference.error, row("z, same collapse").error);
+  EXPECT_TRUE(std::isfinite(row("z from L_C minus z from the E(t) collapse").measured));
 
   // Every table of the figures parses, and each fitted theta of Fig. 2 is finite.
   int fits = 0;
