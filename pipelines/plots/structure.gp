@@ -99,9 +99,10 @@ set format y "%g"
 set yrange [0:3.5]
 set xrange [0.5:*]
 set key bottom left opaque box
+# (an empty loop over files still opens one: the BA curves only when there are BA runs)
+ba_curves = nba == 0 ? "" : 'for [i = 1 : nba] word(shape_ba, i) using 1:($4 >= 3 ? $2 : NaN):3 with yerrorbars ls (ng + i) ps 0.7 ' . \
+  'title sprintf("BA, L = %s: aggregates as solid spheres, 3 by construction", meta(word(shape_ba, i), "L")),'
 plot for [i = 1 : ng] word(shape_gas, i) using 1:($4 >= 3 ? $2 : NaN):3 with yerrorbars ls i ps 0.7 \
        title sprintf("gas, L = %s (clusters that wrap left out)", meta(word(shape_gas, i), "L")), \
-     for [i = 1 : nba] word(shape_ba, i) using 1:($4 >= 3 ? $2 : NaN):3 with yerrorbars ls (ng + i) ps 0.7 \
-       title sprintf("BA, L = %s: aggregates as solid spheres, 3 by construction", meta(word(shape_ba, i), "L")), \
-     3 with lines dt 2 lc rgb "gray40" title "d_f = 3", 2.5226 with lines dt 3 lc rgb "gray60" title "percolation 2.52"
+     @ba_curves 3 with lines dt 2 lc rgb "gray40" title "d_f = 3", 2.5226 with lines dt 3 lc rgb "gray60" title "percolation 2.52"
 unset multiplot
