@@ -343,7 +343,9 @@ $(TABLES)/fit_energy_ba_%.tsv: $(TABLES)/energy_ba_%.tsv $(call knob,ba_theta_fi
 
 # ---- The growing length: S(k, t), its dynamic-scaling collapse, L_t(t) and L_C(t)
 # with their fits, d_f(t) (pipelines/structure.mk; the scale file names the runs
-# STRUCTURE_GAS, STRUCTURE_BA and sets LT_FIT_WINDOW, COLLAPSE_FROM).
+# STRUCTURE_GAS, STRUCTURE_BA and sets LT_FIT_WINDOW, COLLAPSE_FROM; a scale
+# that sets none gets the snapshot run and structure.mk's defaults).
+STRUCTURE_GAS ?= $(notdir $(basename $(SNAP_RUN)))
 ifneq ($(ARCHIVE),)
 # Reanalysis: the scale's runs where the archive has them, else its snapshot run.
 STRUCTURE_GAS := $(or $(foreach r,$(STRUCTURE_GAS),$(if $(wildcard $(RUNS)/$(r).h5),$(r))),$(notdir $(basename $(SNAP_RUN))))

@@ -144,7 +144,15 @@ TEST(Pipeline, TinyPipelineRunsEndToEndAndIsIncremental) {
   EXPECT_NE(dry.out.find("coolgas-fit --power --window 20:200"), std::string::npos) << dry.out;
   EXPECT_EQ(dry.out.find("coolgas-simulate"), std::string::npos) << dry.out;
   EXPECT_EQ(dry.out.find("coolgas-collapse"), std::string::npos) << dry.out;
-  // (make -n recorded the new window; the default one comes back with a refit.)
+  // So does the growing length's fit window: both length fits, the figure and
+  // the table, and neither a simulation nor coolgas-structure.
+  auto lt_dry = run_command(make_command(out, "-n LT_FIT_WINDOW=20:800"));
+  ASSERT_EQ(lt_dry.exit_code, 0) << lt_dry.err;
+  EXPECT_NE(lt_dry.out.find("--window 20:800 --e-column L_t"), std::string::npos) << lt_dry.out;
+  EXPECT_NE(lt_dry.out.find("--window 20:800 --e-column L_C"), std::string::npos) << lt_dry.out;
+  EXPECT_EQ(lt_dry.out.find("coolgas-structure"), std::string::npos) << lt_dry.out;
+  EXPECT_EQ(lt_dry.out.find("coolgas-simulate"), std::string::npos) << lt_dry.out;
+  // (make -n recorded the new windows; the default ones come back with a refit.)
   ASSERT_EQ(run_command(make_command(out, "")).exit_code, 0);
   EXPECT_EQ(run_command(make_command(out, "-q")).exit_code, 0);
 
