@@ -112,11 +112,11 @@ row "Smoluchowski Eq. 4: M_avg ~ t^a" S "$(calc "-($(value "$tables/fit_smolucho
 # measures the coarsening only while it is well inside the box, L < L_box/4 at
 # the window's end.
 z_coll=$(value "$collapse" z '#') z_coll_err=$(value "$collapse" z_err '#')
-length_regime() {  # lt_table fit_table column name
-  L_box=$(value "$1" L '#') t_end=$(value "$2" t_max)
+length_regime() {  # lt_table fit_table column L_box
+  t_end=$(value "$2" t_max)
   len=$(at_time "$1" "$3" "$t_end")
-  if awk "BEGIN { exit !($len < $L_box / 4) }"; then echo yes
-  else echo "no: box-limited, $4 = $(short "$len") at t = $(short "$t_end") is above L/4 = $(short "$L_box / 4")"; fi
+  if awk "BEGIN { exit !($len < $4 / 4) }"; then echo yes
+  else echo "no: box-limited, $3 = $(short "$len") at t = $(short "$t_end") is above L/4 = $(short "$4 / 4")"; fi
 }
 for r in $structure_runs; do
   lt=$tables/lt_$r.tsv L_box=$(value "$lt" L '#')
@@ -124,7 +124,7 @@ for r in $structure_runs; do
     k=${kind%%:*} col=${kind#*:} col=${col%%:*} what=${kind##*:}
     fit=$tables/fit_${k}_$r.tsv th=$(value "$fit" theta)
     z=$(calc "-1 / ($th)") ze=$(calc "$(value "$fit" theta_err) / (($th) ^ 2)")
-    reg=$(length_regime "$lt" "$fit" "$col" "$col")
+    reg=$(length_regime "$lt" "$fit" "$col" "$L_box")
     row "z, from $what ~ t^(1/z) at L = $L_box (t = $(short "$(value "$fit" t_min)"):$(short "$(value "$fit" t_max)"))" \
       struct "$z" "$ze" 2.5 0 "$reg"
     # Against the collapse's z: their difference in units of the combined error.

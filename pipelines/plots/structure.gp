@@ -4,9 +4,11 @@
 #  (c) L_t(t) (first moment of the low-k peak), L_C (first zero of the density
 #      correlation) and L_v (of the momentum correlation) for each series in lt,
 #      with the fits L = A t^{1/z} of L_t and L_C over window (coolgas-fit
-#      tables fit_lt_* and fit_lc_* beside each lt_*);
+#      tables fit_lt_* and fit_lc_* beside each lt_*), the box limit L/4 and
+#      the paper's slope 1/z = 2/5 for comparison;
 #  (d) the fractal dimension d_f(t) of the gas clusters and, if shape_ba is
 #      not empty, of the BA aggregates.
+# Written as PNG or PDF by the name of out (term() of plots/common.gp).
 plots = system("dirname " . ARG0)
 load plots . "/common.gp"
 # The fit tables of a series: kind "lt" (L_t) or "lc" (L_C).
