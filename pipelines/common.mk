@@ -153,7 +153,7 @@ endif
 
 # ---------------------------------------------------------------- figures
 FIGURES := $(OUT)/fig1_energy_size.png $(OUT)/fig2_energy_parameters.png $(OUT)/fig3_clusters.png \
-           $(OUT)/fig4_largest_mass.png $(OUT)/fig5_velocity.png $(OUT)/smoluchowski.png
+           $(OUT)/fig4_largest_mass.png $(OUT)/fig5_velocity.png $(OUT)/smoluchowski.png $(OUT)/structure.png
 RESULTS := $(FIGURES) $(OUT)/exponents.tsv $(OUT)/exponents.md
 
 # No recipes here, so that 'make -q' after a finished run exits 0. The longest
@@ -341,13 +341,29 @@ $(TABLES)/energy_ba_%.tsv: $(RUNS)/ba_%.h5
 $(TABLES)/fit_energy_ba_%.tsv: $(TABLES)/energy_ba_%.tsv $(call knob,ba_theta_fit,$(BA_THETA_WINDOW))
 	$(BIN)/coolgas-fit --power --window $(BA_THETA_WINDOW) $< > $@
 
+# ---- The growing length: S(k, t), its dynamic-scaling collapse, L_t(t) and L_C(t)
+# with their fits, d_f(t) (pipelines/structure.mk; the scale file names the runs
+# STRUCTURE_GAS, STRUCTURE_BA and sets LT_FIT_WINDOW, COLLAPSE_FROM; a scale
+# that sets none gets the snapshot run and structure.mk's defaults).
+STRUCTURE_GAS ?= $(notdir $(basename $(SNAP_RUN)))
+ifneq ($(ARCHIVE),)
+# Reanalysis: the scale's runs where the archive has them, else its snapshot run.
+STRUCTURE_GAS := $(or $(foreach r,$(STRUCTURE_GAS),$(if $(wildcard $(RUNS)/$(r).h5),$(r))),$(notdir $(basename $(SNAP_RUN))))
+STRUCTURE_BA := $(foreach r,$(STRUCTURE_BA),$(if $(wildcard $(RUNS)/$(r).h5),$(r)))
+endif
+ifneq ($(BA),1)
+STRUCTURE_BA :=
+endif
+include $(PIPE)structure.mk
+
 # ---- The measured exponents, one row (exponents.tsv) and against the paper (exponents.md)
 EXPONENT_INPUTS := $(TABLES)/collapse.tsv $(TABLES)/fit_size_Lmax.tsv $(TABLES)/fit_nm_gas.tsv \
   $(TABLES)/nm_gas.tsv $(TABLES)/fit_$(notdir $(call mmax_table,$(SNAP_RUN))) $(TABLES)/velocity_series.tsv \
-  $(TABLES)/fit_smoluchowski_M_max.tsv $(TABLES)/fit_smoluchowski_M_avg.tsv $(PARAM_FITS)
+  $(TABLES)/fit_smoluchowski_M_max.tsv $(TABLES)/fit_smoluchowski_M_avg.tsv $(PARAM_FITS) \
+  $(foreach r,$(STRUCTURE_GAS),$(TABLES)/lt_$(r).tsv $(TABLES)/fit_lt_$(r).tsv $(TABLES)/fit_lc_$(r).tsv)
 $(OUT)/exponents.tsv: $(EXPONENT_INPUTS) $(BA_FITS) $(PIPE)tsv-value.sh $(PIPE)exponents.sh
 	sh $(PIPE)exponents.sh $(TABLES) $(notdir $(basename $(SNAP_RUN))) "$(lastword $(PHI_LATE_TIMES))" \
-	  $(L_MAX) $(SNAP_L) $(PARAM_L) "$(PARAM_SETS)" "$(BA_FITS)" > $@
+	  $(L_MAX) $(SNAP_L) $(PARAM_L) "$(PARAM_SETS)" "$(BA_FITS)" "$(STRUCTURE_GAS)" > $@
 
 $(OUT)/exponents.md: $(OUT)/exponents.tsv $(PIPE)exponents-md.sh
 	sh $(PIPE)exponents-md.sh $< "$(SCALE)" > $@

@@ -1,5 +1,5 @@
 #!/bin/sh
-# exponents.sh TABLES SNAP_RUN LATE_TIME L_MAX SNAP_L PARAM_L "PARAM_SETS" "BA_FITS"
+# exponents.sh TABLES SNAP_RUN LATE_TIME L_MAX SNAP_L PARAM_L "PARAM_SETS" "BA_FITS" "STRUCTURE_RUNS"
 # The quantities a figure pipeline measured, one row each, judged against
 # the paper (Pathak, Jabeen, Das, Rajesh 2014): a TSV table with columns
 #   quantity  figure  measured  error  paper  paper_error  deviation  regime
@@ -9,9 +9,11 @@
 # crossover to finite-size behaviour at x = t / L^(5/2) ~ 0.1 (its Fig. 1).
 # TABLES is the pipeline's tables folder, SNAP_RUN the run of Figs. 3-5,
 # LATE_TIME the time its late-time values are read at, L_MAX the largest L
-# of Fig. 1, SNAP_L and PARAM_L the box sides of Figs. 3-5 and Fig. 2.
+# of Fig. 1, SNAP_L and PARAM_L the box sides of Figs. 3-5 and Fig. 2,
+# STRUCTURE_RUNS the runs whose growing lengths were fitted (lt_RUN.tsv,
+# fit_lt_RUN.tsv, fit_lc_RUN.tsv of pipelines/structure.mk).
 set -e
-tables=$1 snap=$2 late=$3 L_max=$4 snap_L=$5 param_L=$6 sets=$7 ba_fits=${8:-}
+tables=$1 snap=$2 late=$3 L_max=$4 snap_L=$5 param_L=$6 sets=$7 ba_fits=${8:-} structure_runs=${9:-}
 here=$(dirname "$0")
 value() { sh "$here/tsv-value.sh" "$@"; }
 # Column $2 of table $1 in the row whose t is nearest $3.
@@ -69,6 +71,7 @@ xlo=${xr% *} xhi=${xr#* }
 if awk "BEGIN { exit !($xlo < 0.1 && $xhi > 1) }"; then reg=yes; else reg="no: the scaled data span x = $xlo to $xhi, not both x < 0.1 and x > 1"; fi
 row "theta, collapse E L^(z theta) vs t/L^z" 1 "$(value "$collapse" theta '#')" "$(value "$collapse" theta_err '#')" 1.2 0 "$reg"
 row "z, same collapse" 1 "$(value "$collapse" z '#')" "$(value "$collapse" z_err '#')" 2.5 0 "$reg"
+collapse_regime=$reg
 ew=$(value "$collapse" eta_window '#')
 ewlo=${ew%%:*}
 if awk "BEGIN { exit !(${ewlo:-0} >= 1) }"; then reg=yes; else reg="no: the fit window starts at x = ${ewlo:-0} < 1"; fi
@@ -101,6 +104,36 @@ row "beta, -ln Phi(y) ~ y^beta at t = $late" 5 "$(at_time "$vs" beta "$late")" "
 row "kappa at t = $late (paper: > 0, saturating)" 5 "$(at_time "$vs" kappa "$late")" "$(at_time "$vs" kappa_err "$late")" - - "$late_regime"
 row "Smoluchowski Eq. 4: M_max ~ t^a" S "$(calc "-($(value "$tables/fit_smoluchowski_M_max.tsv" theta))")" - 1.2 0 yes
 row "Smoluchowski Eq. 4: M_avg ~ t^a" S "$(calc "-($(value "$tables/fit_smoluchowski_M_avg.tsv" theta))")" - 1.2 0 yes
+
+# The growing length: L ~ t^(1/z) fitted as L = A t^-theta, so z = -1/theta and
+# z_err = theta_err / theta^2 (fit errors, which treat the correlated points of
+# one run as independent). The paper has no direct measurement; its z = 5/2
+# comes from the E(t) collapse, which the last row compares with: a length
+# measures the coarsening only while it is well inside the box, L < L_box/4 at
+# the window's end.
+z_coll=$(value "$collapse" z '#') z_coll_err=$(value "$collapse" z_err '#')
+length_regime() {  # lt_table fit_table column L_box
+  t_end=$(value "$2" t_max)
+  len=$(at_time "$1" "$3" "$t_end")
+  if awk "BEGIN { exit !($len < $4 / 4) }"; then echo yes
+  else echo "no: box-limited, $3 = $(short "$len") at t = $(short "$t_end") is above L/4 = $(short "$4 / 4")"; fi
+}
+for r in $structure_runs; do
+  lt=$tables/lt_$r.tsv L_box=$(value "$lt" L '#')
+  for kind in lt:L_t:"L_t = 2 pi/<k>" lc:L_C:"L_C, first zero of C(r)"; do
+    k=${kind%%:*} col=${kind#*:} col=${col%%:*} what=${kind##*:}
+    fit=$tables/fit_${k}_$r.tsv th=$(value "$fit" theta)
+    z=$(calc "-1 / ($th)") ze=$(calc "$(value "$fit" theta_err) / (($th) ^ 2)")
+    reg=$(length_regime "$lt" "$fit" "$col" "$L_box")
+    row "z, from $what ~ t^(1/z) at L = $L_box (t = $(short "$(value "$fit" t_min)"):$(short "$(value "$fit" t_max)"))" \
+      struct "$z" "$ze" 2.5 0 "$reg"
+    # Against the collapse's z: their difference in units of the combined error.
+    d=$(calc "$z - ($z_coll)") de=$(calc "sqrt(($ze) ^ 2 + ($z_coll_err) ^ 2)")
+    verdict=$(awk "BEGIN { if ($d * $d <= 4 * $de * $de) print \"they agree within 2 sigma\"; else print \"they differ by more than 2 sigma\" }")
+    if [ "$reg" = yes ] && [ "$collapse_regime" != yes ]; then reg="no: the E(t) collapse, ${collapse_regime#no: }"; fi
+    row "z from $col minus z from the E(t) collapse at L = $L_box: $verdict" struct "$d" "$de" 0 0 "$reg"
+  done
+done
 
 # Ballistic aggregation: the paper gives theta_BA = 1.283 +- 0.005 at phi = 0.005 and 1.206 +- 0.005 at 0.208.
 for fit in $ba_fits; do

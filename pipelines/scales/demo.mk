@@ -72,3 +72,15 @@ BA_DUMP_TIMES := 10, 25, 50, 100, 200
 BA_SNAPSHOT_TIME := 100
 BA_NM_TIMES := 25 50 100
 BA_PHI_TIMES := 10 25 50
+
+# The growing length (structure.png, z from L_t and L_C in exponents.md): the
+# Fig. 2 run at the paper's gas, L = 68, dumped 5 times a decade (the snapshot
+# run, its twin, only twice; the Fig. 1 runs once). Fit window t = 20-400:
+# clusters have formed by t = 20 (L_C has left its t = 0 value 2.2), and L_C
+# stays below L/4 = 17 to t = 400 (12.4 there), while L_t = 2 pi/<k> is 12 at
+# t = 20 and 24 at t = 400: in this box L_t is box-limited over the whole
+# window (its row in exponents.md says so), and L_C is the length to trust.
+STRUCTURE_GAS := param_phi0.208_r0.1_d1e-4_s1
+STRUCTURE_BA := ba_phi0.208_s1
+LT_FIT_WINDOW := 20:400
+COLLAPSE_FROM := 20

@@ -57,3 +57,11 @@ BA_DUMP_TIMES := 400, 800, 1600
 BA_SNAPSHOT_TIME := 1600
 BA_NM_TIMES := 400 800 1600
 BA_PHI_TIMES := 400 800 1600
+
+# The growing length: the snapshot run at L = 272 (dumped twice a decade and
+# at the Fig. 5 times). L_C ~ 1.7 t^0.34 (the demo's L = 68) reaches
+# L/4 = 68 near t = 5e4, past this run's end.
+STRUCTURE_GAS := snap_s1
+STRUCTURE_BA := ba_phi0.208_s1
+LT_FIT_WINDOW := 30:10000
+COLLAPSE_FROM := 30

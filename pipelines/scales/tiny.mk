@@ -48,3 +48,9 @@ BA_DUMP_TIMES := 1, 2, 4, 8, 16
 BA_SNAPSHOT_TIME := 8
 BA_NM_TIMES := 8 16
 BA_PHI_TIMES := 1 2
+
+# The growing length: the snapshot run (L = 16, box-limited from the start).
+STRUCTURE_GAS := snap_s1
+STRUCTURE_BA := ba_phi0.208_s1
+LT_FIT_WINDOW := 10:1000
+COLLAPSE_FROM := 10

@@ -58,7 +58,8 @@ std::map<std::string, Judged> read_exponents(const std::string& path) {
 }
 
 const char* kFigures[] = {"fig1_energy_size.png", "fig2_energy_parameters.png", "fig3_clusters.png",
-                          "fig4_largest_mass.png", "fig5_velocity.png", "smoluchowski.png"};
+                          "fig4_largest_mass.png", "fig5_velocity.png", "smoluchowski.png",
+                          "structure.png"};
 
 TEST(Pipeline, TinyPipelineRunsEndToEndAndIsIncremental) {
   const std::string dir = test::scratch_dir("pipeline");
@@ -101,6 +102,19 @@ TEST(Pipeline, TinyPipelineRunsEndToEndAndIsIncremental) {
   EXPECT_NEAR(value("Smoluchowski Eq. 4: M_avg"), 1.2, 0.1);
   // The tiny boxes are far from the paper's late-time regime, and the table says so.
   EXPECT_EQ(row("beta,").regime.rfind("no: ", 0), 0u);
+  // The growing length (pipelines/structure.mk): z from L_t and L_C with fit
+  // errors, each beside the collapse's z as a difference with its combined
+  // error. A growing length has 1/z > 0; in the 16^3 box (scales/tiny.mk)
+  // L_t is above L/4 = 4 from the first dump on, and the table says box-limited.
+  for (const char* length : {"z, from L_t", "z, from L_C"}) {
+    EXPECT_GT(value(length), 0.0) << length;
+    EXPECT_GT(row(length).error, 0.0) << length;
+  }
+  EXPECT_NE(row("z, from L_t").regime.find("box-limited"), std::string::npos) << row("z, from L_t").regime;
+  const Judged difference = row("z from L_t minus z from the E(t) collapse");
+  EXPECT_NEAR(difference.measured, value("z, from L_t") - value("z, same collapse"), 1e-4);
+  EXPECT_GT(difference.error, row("z, same collapse").error);
+  EXPECT_TRUE(std::isfinite(row("z from L_C minus z from the E(t) collapse").measured));
 
   // Every table of the figures parses, and each fitted theta of Fig. 2 is finite.
   int fits = 0;
@@ -130,7 +144,15 @@ TEST(Pipeline, TinyPipelineRunsEndToEndAndIsIncremental) {
   EXPECT_NE(dry.out.find("coolgas-fit --power --window 20:200"), std::string::npos) << dry.out;
   EXPECT_EQ(dry.out.find("coolgas-simulate"), std::string::npos) << dry.out;
   EXPECT_EQ(dry.out.find("coolgas-collapse"), std::string::npos) << dry.out;
-  // (make -n recorded the new window; the default one comes back with a refit.)
+  // So does the growing length's fit window: both length fits, the figure and
+  // the table, and neither a simulation nor coolgas-structure.
+  auto lt_dry = run_command(make_command(out, "-n LT_FIT_WINDOW=20:800"));
+  ASSERT_EQ(lt_dry.exit_code, 0) << lt_dry.err;
+  EXPECT_NE(lt_dry.out.find("--window 20:800 --e-column L_t"), std::string::npos) << lt_dry.out;
+  EXPECT_NE(lt_dry.out.find("--window 20:800 --e-column L_C"), std::string::npos) << lt_dry.out;
+  EXPECT_EQ(lt_dry.out.find("coolgas-structure"), std::string::npos) << lt_dry.out;
+  EXPECT_EQ(lt_dry.out.find("coolgas-simulate"), std::string::npos) << lt_dry.out;
+  // (make -n recorded the new windows; the default ones come back with a refit.)
   ASSERT_EQ(run_command(make_command(out, "")).exit_code, 0);
   EXPECT_EQ(run_command(make_command(out, "-q")).exit_code, 0);
 
