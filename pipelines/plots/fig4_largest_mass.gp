@@ -35,12 +35,15 @@ read_fits(P) = "n = words(tables); array ".P."_N[n]; array ".P."_a[n]; array ".P
   P."_N[i] = Nof(t); ".P."_a[i] = a(t); ".P."_ae[i] = ae(t); ".P."_A[i] = A(t); ".P."_lo[i] = lo(t); ".P."_hi[i] = hi(t) }"
 tables = gas; eval read_fits("g")
 tables = ba; if (nb > 0) { eval read_fits("b") }
-gas_curves = "for [i = 1 : ng] word(gas, i) using 1:($1 > 0 ? $6 / g_N[i] : NaN) with linespoints ls i title sprintf('gas %s', label(word(gas, i))), \
-  for [i = 1 : ng] [g_lo[i]:g_hi[i]] g_A[i] * x**g_a[i] / g_N[i] with lines ls i lw 1 dt 1 title sprintf('  fit t^{%.2f ± %.2f}', g_a[i], g_ae[i])"
-ba_curves = "for [i = 1 : nb] word(ba, i) using 1:($1 > 0 ? $6 / b_N[i] : NaN) with linespoints ls (ng + i) title sprintf('BA %s', label(word(ba, i))), \
-  for [i = 1 : nb] [b_lo[i]:b_hi[i]] b_A[i] * x**b_a[i] / b_N[i] with lines ls (ng + i) lw 1 dt 1 title sprintf('  fit t^{%.2f ± %.2f}', b_a[i], b_ae[i])"
-if (nb > 0) {
-  eval "plot " . gas_curves . ", " . ba_curves
-} else {
-  eval "plot " . gas_curves
-}
+# curve(P, list, i, style, kind): run i of list (arrays P_*) and, right after
+# it in the key, its fit over its window.
+curve(P, list, i, style, kind) = "word(" . list . ", " . i . ") using 1:($1 > 0 ? $6 / " . P . "_N[" . i . "] : NaN) " . \
+  "with linespoints ls " . style . " title sprintf('" . kind . " %s', label(word(" . list . ", " . i . "))), " . \
+  "[" . P . "_lo[" . i . "]:" . P . "_hi[" . i . "]] " . P . "_A[" . i . "] * x**" . P . "_a[" . i . "] / " . P . "_N[" . i . "] " . \
+  "with lines ls " . style . " lw 1 dt 1 title sprintf('  fit t^{%.2f ± %.2f}', " . P . "_a[" . i . "], " . P . "_ae[" . i . "])"
+curves = ""
+do for [i = 1 : ng] { curves = curves . (i > 1 ? ", " : "") . curve("g", "gas", i, i, "gas") }
+do for [i = 1 : nb] { curves = curves . ", " . curve("b", "ba", i, ng + i, "BA") }
+# A share of the particles: at most 1 (a fit line past it is cut there).
+set yrange [*:1]
+eval "plot " . curves
