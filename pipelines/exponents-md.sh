@@ -1,13 +1,14 @@
 #!/bin/sh
 # exponents-md.sh EXPONENTS_TSV SCALE
 # The exponent table (pipelines/exponents.sh) as Markdown, headed by the
-# scale, the program version (commit) and the date it was measured; the
-# README's tables are copies made by pipelines/readme-table.sh.
+# scale, the versions (commits) that made the runs and the analysis, and the
+# date it was measured; the README's tables are copies made by
+# pipelines/readme-table.sh.
 set -e
 tsv=$1
 scale=$2
 meta() { sed -n "s/^# $1: //p" "$tsv" | head -n 1; }
-echo "SCALE = $scale, coolgas $(meta version), measured $(meta date)."
+echo "SCALE = $scale: runs by coolgas $(meta simulator_version), analysed by coolgas $(meta version) on $(meta date)."
 echo
 echo "| quantity | Fig. | measured | paper | (measured − paper)/σ | in the paper's regime? |"
 echo "|---|---|---|---|---|---|"

@@ -61,6 +61,8 @@ row() {
 collapse=$tables/collapse.tsv
 printf '# tool: pipelines/exponents.sh\n'
 printf '# version: %s\n' "$(value "$collapse" version '#')"
+# The program that made the runs (it may be older than the analysis, e.g. on reanalysis).
+printf '# simulator_version: %s\n' "$(sed -n 's/^# simulator_version: //p' "$tables"/energy_*.tsv | sort -u | paste -sd ';' -)"
 printf '# date: %s\n' "$(date -u +%Y-%m-%d)"
 printf '# late_time: %s\n' "$late"
 printf '# quantity\tfigure\tmeasured\terror\tpaper\tpaper_error\tdeviation\tregime\n'
