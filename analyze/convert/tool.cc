@@ -1,8 +1,10 @@
 #include "analyze/convert/tool.h"
 
+#include <cmath>
 #include <ostream>
 
 #include "analyze/convert/lammps_dump.h"
+#include "common/error.h"
 #include "common/extended_xyz.h"
 #include "common/trajectory/frame_reader.h"
 #include "common/version.h"
@@ -21,6 +23,8 @@ XyzFrame xyz_of(const Frame& f) {
 }  // namespace
 
 void run_convert(const ConvertOptions& opt, std::ostream& out) {
+  for (double t : opt.times)
+    if (!std::isfinite(t)) throw InputError("--time " + format_number(t) + ": a time is a finite number [1/omega0]");
   const Trajectory t(opt.input, kPosition | kVelocity | kImage | kDiameter);
   const std::vector<std::size_t> dumps =
       opt.last ? std::vector<std::size_t>{t.dump_times().size() - 1} : t.dumps_nearest(opt.times);
