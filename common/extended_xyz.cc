@@ -209,7 +209,8 @@ XyzFrame read_xyz_frame(std::istream& in, const std::string& source, std::option
   while (p.next(line)) {
     const auto w = Parser::words(line);
     if (w.empty() && best) continue;  // blank lines after the last frame
-    const double n = w.size() == 1 ? p.number(w[0], "the particle count") : -1;
+    double n = -1;
+    if (w.size() == 1) std::from_chars(w[0].data(), w[0].data() + w[0].size(), n);
     if (!(n >= 1 && n < 2147483648.0 && n == std::floor(n)))
       p.fail("expected the number of particles (an extended XYZ frame starts with it), got '" + shown(line) + "'");
     XyzFrame f = read_frame(p, std::size_t(n));
