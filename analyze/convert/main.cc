@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
         "          ix iy iz [radius mass]; ids are the file's + 1 (LAMMPS ids are positive), type 1.\n"
         "Ballistic-aggregation files give only the aggregates present, with radius = diameter/2 and mass.\n"
         "Units: lengths in particle diameters sigma, velocities in sigma*omega0, times in 1/omega0, masses in\n"
-        "particle masses (reduced units: readers that convert units, such as MDAnalysis, must be told not to,\n"
+        "particle masses (reduced units: tell readers that convert units not to, e.g. MDAnalysis'\n"
         "convert_units=False). Positions are wrapped into [0, L), written exactly (shortest round-trip form).\n"
         "An XYZ frame can start a new run: coolgas-simulate with system.init = \"file\", system.from = FILE."};
     app.add_option("trajectory", o.input, "trajectory file (H5MD, written by coolgas-simulate)")->required();
