@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 
 #include "common/hdf5_file.h"
@@ -95,6 +96,10 @@ TEST(ConvertCli, ARunStartedFromAnExportedFrameBeginsWithItsStateBitForBit) {
       const auto v = run_command(bin("coolgas-validate") + " " + again);
       EXPECT_EQ(v.exit_code, 0) << v.out << v.err;
     }
+    // The effective scene states N, L, phi and T0: resuming needs no source file.
+    std::filesystem::remove(xyz);
+    const auto r = run_command(simulate("--resume " + again + " --set run.t_end=2"));
+    EXPECT_EQ(r.exit_code, 0) << r.err;
   }
 }
 
@@ -126,6 +131,33 @@ TEST(ConvertCli, AnH5mdFileWrittenByMDAnalysisStartsARun) {
   h5::Handle ds = h5::open_dataset(f.id(), "particles/trajectory/position/value");
   expect_bit_identical(h5::read_row<double>(ds.id(), 0), row_of(again, "particles/all/position", 0, 3, false),
                        "positions");
+}
+
+// The other shape H5MD 1.1 allows: time-independent datasets, box edges a
+// vector, and an absent particle (id -1, its position NaN) that is left out.
+TEST(ConvertCli, AnH5mdFileOfTimeIndependentDatasetsStartsARun) {
+  const std::string dir = test::scratch_dir("convert_fixed_h5md");
+  const std::string run = dir + "/run.h5", foreign = dir + "/fixed.h5", again = dir + "/again.h5";
+  ASSERT_EQ(run_command(simulate(test::write_file(dir, "run.toml", kGas) + " -o " + run)).exit_code, 0);
+  const auto w = run_command(py("h5md_fixed " + run + " " + foreign));
+  ASSERT_EQ(w.exit_code, 0) << w.out << w.err;
+  const auto s = run_command(simulate(file_scene(dir, foreign, "inelastic") + " -o " + again));
+  ASSERT_EQ(s.exit_code, 0) << s.err;
+  for (const char* el : {"particles/all/position", "particles/all/velocity"})
+    expect_bit_identical(row_of(run, el, -1, 3, false), row_of(again, el, 0, 3, false), el);
+}
+
+TEST(ConvertCli, BrokenH5mdFilesAreRefusedWithOneLine) {
+  const std::string dir = test::scratch_dir("convert_bad_h5md");
+  const std::string out = dir + "/out.h5";
+  for (const auto& [kind, needle] : std::vector<std::pair<std::string, std::string>>{
+           {"slab", "the box is not cubic (edges 10, 10, 5)"},
+           {"open", "has boundary 'none'; coolgas boxes are periodic"},
+           {"groups", "holds several particle groups (a, b)"}}) {
+    const std::string file = dir + "/" + kind + ".h5";
+    ASSERT_EQ(run_command(py("h5md_bad " + kind + " " + file)).exit_code, 0);
+    test::expect_simulate_refused(file_scene(dir, file, "elastic") + " -o " + out, needle, out);
+  }
 }
 
 TEST(ConvertCli, BadInputIsRefusedWithOneLine) {

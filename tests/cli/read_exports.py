@@ -9,6 +9,11 @@ usage: read_exports.py xyz RUN.h5 FRAMES.xyz     ASE reads every frame: cell, pb
                                                  velocities (float32 in MDAnalysis)
        read_exports.py h5md RUN.h5 OUT.h5md      MDAnalysis writes the last frame as H5MD 1.1 (another
                                                  program's file for coolgas-simulate to start from)
+       read_exports.py h5md_fixed RUN.h5 OUT     h5py writes the last frame as H5MD 1.1 the other way the
+                                                 specification allows: time-independent datasets, box edges
+                                                 a vector, group "gas", and one absent particle (id -1)
+       read_exports.py h5md_bad KIND OUT         h5py writes a broken H5MD file: KIND = slab (edges 10 10 5),
+                                                 open (boundary none), groups (two particle groups)
 Exits non-zero with a message on the first mismatch; prints "ok".
 """
 import sys
@@ -74,6 +79,38 @@ def write_h5md(h5, out):
         w.write(u)
 
 
+def h5md_group(f, name, pos, edges, boundary="periodic"):
+    f.require_group("h5md").attrs["version"] = np.array([1, 1])
+    g = f.create_group("particles/" + name)
+    g["position"] = pos
+    box = g.create_group("box")
+    box.attrs["dimension"] = 3
+    box.attrs["boundary"] = np.array([boundary.encode()] * 3)  # fixed-length strings, as numpy writes them
+    box["edges"] = edges
+    return g
+
+
+def write_h5md_fixed(h5, out):
+    t, L, pos, vel, d = frames(h5)[-1]
+    with h5py.File(out, "w") as f:
+        g = h5md_group(f, "gas", np.vstack([[np.nan, np.nan, np.nan], pos]), np.array([L, L, L]))
+        g["velocity"] = np.vstack([[0, 0, 0], vel])
+        g["id"] = np.concatenate([[-1], np.arange(len(pos))])
+
+
+def write_h5md_bad(kind, out):
+    pos = np.array([[1.0, 1, 1], [3, 3, 3]])
+    with h5py.File(out, "w") as f:
+        if kind == "slab":
+            h5md_group(f, "all", pos, np.array([10.0, 10, 5]))
+        elif kind == "open":
+            h5md_group(f, "all", pos, np.array([10.0, 10, 10]), "none")
+        else:
+            h5md_group(f, "a", pos, np.array([10.0, 10, 10]))
+            h5md_group(f, "b", pos, np.array([10.0, 10, 10]))
+
+
 mode, h5, other = sys.argv[1], sys.argv[2], sys.argv[3]
-{"xyz": check_xyz, "lammps": check_lammps, "h5md": write_h5md}[mode](h5, other)
+{"xyz": check_xyz, "lammps": check_lammps, "h5md": write_h5md, "h5md_fixed": write_h5md_fixed,
+ "h5md_bad": write_h5md_bad}[mode](h5, other)
 print("ok")
