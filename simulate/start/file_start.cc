@@ -84,6 +84,36 @@ double temperature(const Particles& p, const std::vector<double>& mass) {
   return sum / (3.0 * double(p.size()));
 }
 
+// Positions as they are; velocities the file's, else drawn at T0 (masses set first).
+Particles particles_of(const FileConfiguration& c, const Scene& s) {
+  const std::size_t n = c.position.size() / 3;
+  Particles p;
+  p.L = c.L;
+  p.resize(n);
+  const auto vec = [](const std::vector<double>& x, std::size_t i) { return Vec3{x[3 * i], x[3 * i + 1], x[3 * i + 2]}; };
+  for (std::size_t i = 0; i < n; ++i) p.r[i] = vec(c.position, i);
+  if (c.velocity.empty()) {
+    Random rng(std::uint64_t(s.seed));
+    draw_velocities(p, s.T0, rng, c.mass.empty() ? nullptr : &c.mass);
+  } else {
+    for (std::size_t i = 0; i < n; ++i) p.v[i] = vec(c.velocity, i);
+  }
+  return p;
+}
+
+// "starting from 'f.xyz' (extended XYZ, t = 5): N = 2000, L = 17.4, phi = 0.2;
+// velocities from the file (0.404 T0); T0 = 0.0441 (the file's)".
+std::string notice(const Scene& s, const FileConfiguration& c, const FileStart& start, bool drawn, bool own_T0) {
+  const std::vector<double> unit;
+  const double T = temperature(start.particles, start.aggregates ? start.aggregates->mass : unit);
+  const std::string velocities = drawn ? "drawn at T0" : "from the file (" + three_digits(T / s.T0) + " T0)";
+  const std::string T0 = own_T0 ? "system.T0" : c.T0 ? "the file's" : "Enskog, as for a fresh start";
+  return "starting from '" + s.from + "' (" + c.format + (c.time ? ", t = " + format_number(*c.time) : "") +
+         "): N = " + std::to_string(s.N) + ", L = " + format_number(s.L) + ", phi = " + three_digits(s.phi) +
+         "; velocities " + velocities + "; T0 = " + format_number(s.T0) + " (" + T0 + ")" +
+         (c.length_unit.empty() ? "" : "; the file's length unit '" + c.length_unit + "' is read as one diameter");
+}
+
 }  // namespace
 
 FileStart start_from_file(Scene& s) {
@@ -98,31 +128,16 @@ FileStart start_from_file(Scene& s) {
   check_scene_size(s);
 
   FileStart start;
-  Particles& p = start.particles;
-  p.L = c.L;
-  p.resize(n);
-  for (std::size_t i = 0; i < n; ++i) p.r[i] = {c.position[3 * i], c.position[3 * i + 1], c.position[3 * i + 2]};
+  start.particles = particles_of(c, s);
   const bool drawn = c.velocity.empty();
-  if (drawn) {
-    Random rng(std::uint64_t(s.seed));
-    draw_velocities(p, s.T0, rng, c.mass.empty() ? nullptr : &c.mass);
-  } else {
-    for (std::size_t i = 0; i < n; ++i) p.v[i] = {c.velocity[3 * i], c.velocity[3 * i + 1], c.velocity[3 * i + 2]};
-  }
   if (s.model == CollisionModel::kAggregation) {
     AggregateState a{std::move(c.mass), std::move(c.diameter), std::vector<std::int32_t>(n)};
     for (std::size_t i = 0; i < n; ++i) a.id[i] = std::int32_t(i);
     start.aggregates = std::move(a);
   }
-  check_configuration(p, start.aggregates ? &*start.aggregates : nullptr, source);
+  check_configuration(start.particles, start.aggregates ? &*start.aggregates : nullptr, source);
 
-  start.notice = "starting from '" + s.from + "' (" + c.format + (c.time ? ", t = " + format_number(*c.time) : "") +
-                 "): N = " + std::to_string(n) + ", L = " + format_number(c.L) + ", phi = " + three_digits(s.phi) +
-                 "; velocities " +
-                 (drawn ? "drawn at T0" : "from the file (" + three_digits(temperature(p, start.aggregates ? start.aggregates->mass : std::vector<double>{}) / s.T0) + " T0)") +
-                 "; T0 = " + format_number(s.T0) +
-                 (own_T0 ? " (system.T0)" : c.T0 ? " (the file's)" : " (Enskog, as for a fresh start)") +
-                 (c.length_unit.empty() ? "" : "; the file's length unit '" + c.length_unit + "' is read as one diameter");
+  start.notice = notice(s, c, start, drawn, own_T0);
   return start;
 }
 
