@@ -311,6 +311,37 @@ std::string read_attr_string(hid_t obj, const std::string& name) {
   return s;
 }
 
+std::vector<std::string> read_attr_strings(hid_t obj, const std::string& name) {
+  Handle a = open_attr(obj, name);
+  Handle ftype(check(H5Aget_type(a.id()), "attribute type"));
+  if (H5Tget_class(ftype.id()) != H5T_STRING) throw InputError("attribute '" + name + "' is not a string");
+  Handle space(check(H5Aget_space(a.id()), "attribute space"));
+  const hssize_t n = H5Sget_simple_extent_npoints(space.id());
+  if (n < 0) throw Error("size of attribute '" + name + "'", "");
+  std::vector<std::string> out;
+  if (H5Tis_variable_str(ftype.id()) > 0) {
+    Handle type = vlen_string_type();
+    std::vector<char*> p(static_cast<std::size_t>(n), nullptr);
+    check_status(H5Aread(a.id(), type.id(), p.data()), "read attribute '" + name + "'");
+    for (char* c : p) out.emplace_back(c ? c : "");
+    H5Dvlen_reclaim(type.id(), space.id(), H5P_DEFAULT, p.data());
+    return out;
+  }
+  const std::size_t size = H5Tget_size(ftype.id());
+  std::string buf(size * static_cast<std::size_t>(n), '\0');
+  check_status(H5Aread(a.id(), ftype.id(), buf.data()), "read attribute '" + name + "'");
+  for (hssize_t i = 0; i < n; ++i) {
+    std::string s = buf.substr(static_cast<std::size_t>(i) * size, size);
+    out.push_back(s.erase(s.find_last_not_of('\0') + 1));
+  }
+  return out;
+}
+
+bool is_group(hid_t loc, const std::string& path) {
+  Handle o(check(H5Oopen(loc, path.c_str(), H5P_DEFAULT), "open '" + path + "'"));
+  return H5Iget_type(o.id()) == H5I_GROUP;
+}
+
 double read_attr_double(hid_t obj, const std::string& name) {
   Handle a = open_attr(obj, name);
   double v = 0;

@@ -25,6 +25,7 @@ constexpr ElementSpec kElements[] = {
     {kImage, layout::kImage, 3},
     {kId, layout::kId, 1},
     {kMass, layout::kMass, 1},
+    {kDiameter, layout::kDiameter, 1},
 };
 
 // Moves the entries of present slots (keep[i]) to the front, `k` numbers each.
@@ -43,11 +44,11 @@ void compact(std::vector<T>& v, const std::vector<bool>& keep, std::size_t k) {
 std::string value_of(const ElementSpec& e) { return layout::value_of(e.path); }
 
 // Rejects NaN and infinities, naming the first offending particle.
-void check_finite(const std::vector<double>& v, const std::string& where) {
+void check_finite(const std::vector<double>& v, const std::string& where, std::size_t per_particle = 3) {
   for (std::size_t i = 0; i < v.size(); ++i) {
     if (!std::isfinite(v[i]))
       throw InputError(where + " has a non-finite value (" + format_number(v[i]) + ") for particle " +
-                       std::to_string(i / 3));
+                       std::to_string(i / per_particle));
   }
 }
 
@@ -58,6 +59,7 @@ Trajectory::Trajectory(const std::string& path, unsigned fields) : path_(path), 
   file_ = h5::open_file(path, h5::Mode::kReadOnly);
   aggregates_ = layout::layout_of(file_.id()) == layout::Layout::kAggregation;
   if (aggregates_) fields_ |= kId | kMass;
+  else fields_ &= ~unsigned(kDiameter);  // gas files have unit spheres and no diameter element
   std::size_t frames = SIZE_MAX;
   for (const auto& e : kElements) {
     if (!(fields_ & e.field)) continue;
@@ -177,7 +179,12 @@ void Trajectory::read(std::size_t dump, Frame& frame) const {
       case kMass:
         frame.mass.resize(std::size_t(n_));
         h5::read_rows(value.id(), h5::Type::kFloat64, dump, 1, frame.mass.data());
-        check_finite(frame.mass, where + std::string(e.path));
+        check_finite(frame.mass, where + std::string(e.path), 1);
+        break;
+      case kDiameter:
+        frame.diameter.resize(std::size_t(n_));
+        h5::read_rows(value.id(), h5::Type::kFloat64, dump, 1, frame.diameter.data());
+        check_finite(frame.diameter, where + std::string(e.path), 1);
         break;
     }
   }
@@ -192,6 +199,7 @@ void Trajectory::keep_present(Frame& frame) const {
   compact(frame.velocity, keep, 3);
   compact(frame.image, keep, 3);
   compact(frame.mass, keep, 1);
+  compact(frame.diameter, keep, 1);
   compact(frame.id, keep, 1);
   if (frame.id.empty())
     throw InputError(path_ + ": dump " + std::to_string(frame.dump) + " holds no aggregate (every id is -1)");

@@ -27,7 +27,7 @@
 namespace coolgas {
 
 // Per-particle elements, combinable as a bit set.
-enum Field : unsigned { kPosition = 1u, kVelocity = 2u, kImage = 4u, kId = 8u, kMass = 16u };
+enum Field : unsigned { kPosition = 1u, kVelocity = 2u, kImage = 4u, kId = 8u, kMass = 16u, kDiameter = 32u };
 
 // One dump. Arrays hold 3 numbers per particle, in particle-id order.
 struct Frame {
@@ -38,9 +38,11 @@ struct Frame {
   std::vector<double> position;
   std::vector<double> velocity;
   std::vector<std::int32_t> image;
-  // aggregation files only (empty otherwise): id and mass of each aggregate present
+  // aggregation files only (empty otherwise): id and mass of each aggregate present,
+  // and its diameter when the Trajectory was opened for kDiameter
   std::vector<std::int32_t> id;
   std::vector<double> mass;
+  std::vector<double> diameter;
 
   std::size_t particles() const { return id.empty() ? std::max({position.size(), velocity.size(), image.size()}) / 3 : id.size(); }
 };

@@ -8,6 +8,10 @@ std::string step_of(std::string_view element) { return std::string(element) + "/
 std::string time_of(std::string_view element) { return std::string(element) + "/time"; }
 std::string value_of(std::string_view element) { return std::string(element) + "/value"; }
 
+std::string in_group(std::string_view element, std::string_view group) {
+  return std::string(kParticles) + "/" + std::string(group) + std::string(element.substr(kAll.size()));
+}
+
 hsize_t complete_dumps(hid_t file) {
   if (!h5::exists(file, std::string(kRestartTime))) return 0;
   h5::Handle t = h5::open_dataset(file, std::string(kRestartTime));

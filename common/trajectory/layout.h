@@ -19,6 +19,8 @@ namespace coolgas::layout {
 inline constexpr std::string_view kH5md = "/h5md";
 inline constexpr std::string_view kAuthor = "/h5md/author";
 inline constexpr std::string_view kCreator = "/h5md/creator";
+inline constexpr std::string_view kParticles = "/particles";  // one group per particle group (H5MD 1.1)
+inline constexpr std::string_view kAll = "/particles/all";     // coolgas writes the one group "all"
 inline constexpr std::string_view kBox = "/particles/all/box";
 inline constexpr std::string_view kParameters = "/parameters";
 inline constexpr std::string_view kRestart = "/restart";
@@ -55,6 +57,9 @@ inline constexpr std::int32_t kAbsentId = -1;
 std::string step_of(std::string_view element);
 std::string time_of(std::string_view element);
 std::string value_of(std::string_view element);
+// The same element in another particle group (files of other programs):
+// in_group(kPosition, "trajectory") is "/particles/trajectory/position".
+std::string in_group(std::string_view element, std::string_view group);
 
 // The completion marker: the number of complete dumps (rows of
 // /restart/time; 0 if the file has none) and the time of the last one.

@@ -21,6 +21,7 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 using M = CollisionModel;
+using I = InitialPositions;
 
 // A TOML float that reads back to the same double.
 std::string toml_float(double x) {
@@ -30,7 +31,7 @@ std::string toml_float(double x) {
 }
 std::string toml_string(const std::string& x) { return "\"" + x + "\""; }
 
-const char* const kInitNames[] = {"random", "fcc"};
+const char* const kInitNames[] = {"random", "fcc", "file"};
 const char* const kModelNames[] = {"elastic", "inelastic", "viscoelastic", "aggregation"};
 
 // Index of `value` among the key's choices (already checked to be one).
@@ -47,71 +48,89 @@ const SceneKey& key_row(const char* name);
 const std::vector<SceneKey>& scene_keys() {
   static const std::vector<SceneKey> keys = {
       {"system.N", KeyType::kInteger, KeyNeed::kSize, "number of particles; give two of N, L, phi", 2, kInf, false,
-       false, {}, {},
+       false, {}, {}, {},
        [](Scene& s, const SceneValue& v) { s.N = std::get<std::int64_t>(v); },
        [](const Scene& s) { return std::to_string(s.N); }},
-      {"system.L", KeyType::kFloat, KeyNeed::kSize, "box side, in particle diameters", 0, kInf, true, false, {}, {},
+      {"system.L", KeyType::kFloat, KeyNeed::kSize, "box side, in particle diameters", 0, kInf, true, false, {}, {}, {},
        [](Scene& s, const SceneValue& v) { s.L = std::get<double>(v); },
        [](const Scene& s) { return toml_float(s.L); }},
       {"system.phi", KeyType::kFloat, KeyNeed::kSize,
        "volume fraction N*pi/(6 L^3); at most 0.36 for init = \"random\", 0.7404 for \"fcc\"", 0, kMaxFccPhi, true,
-       false, {}, {},
+       false, {}, {}, {},
        [](Scene& s, const SceneValue& v) { s.phi = std::get<double>(v); },
        [](const Scene& s) { return toml_float(s.phi); }},
       {"system.seed", KeyType::kInteger, KeyNeed::kDefault, "random seed for initial positions and velocities", -kInf,
-       kInf, false, false, {}, {},
+       kInf, false, false, {}, {}, {},
        [](Scene& s, const SceneValue& v) { s.seed = std::get<std::int64_t>(v); },
        [](const Scene& s) { return std::to_string(s.seed); }},
       {"system.init", KeyType::kString, KeyNeed::kDefault,
-       "initial positions: \"random\" (random sequential addition) or \"fcc\"", 0, 0, false, false,
-       {std::begin(kInitNames), std::end(kInitNames)}, {},
+       "initial positions: \"random\" (random sequential addition), \"fcc\", or \"file\" (a frame of "
+       "system.from; N, L and phi then come from the file)", 0, 0, false, false,
+       {std::begin(kInitNames), std::end(kInitNames)}, {}, {},
        [](Scene& s, const SceneValue& v) { s.init = choice<InitialPositions>(key_row("system.init"), v); },
        [](const Scene& s) { return toml_string(kInitNames[int(s.init)]); }},
       {"system.equilibrate", KeyType::kFloat, KeyNeed::kDefault,
        "elastic collision times run before t = 0 so the positions form an equilibrium fluid, then velocities "
-       "are drawn afresh (0 starts from the raw packing)", 0, kInf, false, false, {}, {},
+       "are drawn afresh (0 starts from the raw packing)", 0, kInf, false, false, {}, {}, {I::kRandom, I::kFcc},
        [](Scene& s, const SceneValue& v) { s.equilibrate = std::get<double>(v); },
        [](const Scene& s) { return toml_float(s.equilibrate); }},
+      {"system.from", KeyType::kString, KeyNeed::kRequired,
+       "the file to start from, relative to the working directory: a coolgas trajectory, an H5MD 1.1 file of "
+       "another program (particles/<group>/position, box/edges) or an extended XYZ file; velocities from the "
+       "file, else drawn at T0 with system.seed", 0, 0, false, false, {}, {}, {I::kFile},
+       [](Scene& s, const SceneValue& v) { s.from = std::get<std::string>(v); },
+       [](const Scene& s) { return toml_string(s.from); }},
+      {"system.from_time", KeyType::kFloat, KeyNeed::kOptional,
+       "start from the file's frame nearest this time (its own time unit); absent: the last frame", 0, kInf, false,
+       false, {}, {}, {I::kFile},
+       [](Scene& s, const SceneValue& v) { s.from_time = std::get<double>(v); },
+       [](const Scene& s) { return s.from_time ? toml_float(*s.from_time) : std::string(); }},
+      {"system.T0", KeyType::kFloat, KeyNeed::kOptional,
+       "temperature per velocity component that sets the time unit 1/omega0; absent: a coolgas file's own T0 (or "
+       "the T0= of an XYZ comment line), else the Enskog value of the file's density as for a fresh start", 0, kInf,
+       true, false, {}, {}, {I::kFile},
+       [](Scene& s, const SceneValue& v) { s.T0 = std::get<double>(v); },
+       [](const Scene& s) { return s.T0 > 0 ? toml_float(s.T0) : std::string(); }},
       {"collision.model", KeyType::kString, KeyNeed::kDefault,
        "\"elastic\", \"inelastic\" (paper Eq. 1 with the delta cut-off), \"viscoelastic\" (restitution "
        "rising to 1 as the impact speed falls; see collision.viscoelastic_b) or \"aggregation\" (ballistic "
        "aggregation: spheres that touch merge, volumes add, momentum conserved)", 0, 0, false, false,
-       {std::begin(kModelNames), std::end(kModelNames)}, {},
+       {std::begin(kModelNames), std::end(kModelNames)}, {}, {},
        [](Scene& s, const SceneValue& v) { s.model = choice<CollisionModel>(key_row("collision.model"), v); },
        [](const Scene& s) { return toml_string(s.model_name()); }},
       {"collision.r0", KeyType::kFloat, KeyNeed::kDefault, "coefficient of restitution", 0, 1, true, false, {},
-       {M::kInelastic},
+       {M::kInelastic}, {},
        [](Scene& s, const SceneValue& v) { s.r0 = std::get<double>(v); },
        [](const Scene& s) { return toml_float(s.r0); }},
       {"collision.viscoelastic_b", KeyType::kFloat, KeyNeed::kRequired,
        "viscoelastic material constant b = A alpha^{2/5} (Schwager & Poeschel 1998), in units of "
        "(diameter per initial collision time)^(-1/5): r = 1 - 1.15344 b v^(1/5) + 0.79826 b^2 v^(2/5) - ... for "
-       "normal impact speed v", 0, kInf, true, false, {}, {M::kViscoelastic},
+       "normal impact speed v", 0, kInf, true, false, {}, {M::kViscoelastic}, {},
        [](Scene& s, const SceneValue& v) { s.viscoelastic_b = std::get<double>(v); },
        [](const Scene& s) { return toml_float(s.viscoelastic_b); }},
       {"collision.delta", KeyType::kFloat, KeyNeed::kDefault,
        "cut-off: collisions with normal relative speed below delta are elastic, in units of diameter per "
-       "initial collision time (the paper uses 1e-4)", 0, kInf, false, false, {}, {M::kInelastic, M::kViscoelastic},
+       "initial collision time (the paper uses 1e-4)", 0, kInf, false, false, {}, {M::kInelastic, M::kViscoelastic}, {},
        [](Scene& s, const SceneValue& v) { s.delta = std::get<double>(v); },
        [](const Scene& s) { return toml_float(s.delta); }},
       {"run.t_end", KeyType::kFloat, KeyNeed::kRequired, "simulated time to stop at, in initial mean collision times",
-       0, kInf, true, false, {}, {},
+       0, kInf, true, false, {}, {}, {},
        [](Scene& s, const SceneValue& v) { s.t_end = std::get<double>(v); },
        [](const Scene& s) { return toml_float(s.t_end); }},
       {"output.observables_per_decade", KeyType::kInteger, KeyNeed::kDefault, "observables recorded per decade of time",
-       1, 2147483647, false, false, {}, {},
+       1, 2147483647, false, false, {}, {}, {},
        [](Scene& s, const SceneValue& v) { s.observables_per_decade = int(std::get<std::int64_t>(v)); },
        [](const Scene& s) { return std::to_string(s.observables_per_decade); }},
       {"output.dumps_per_decade", KeyType::kInteger, KeyNeed::kDefault, "trajectory dumps per decade of time", 1,
-       2147483647, false, false, {}, {},
+       2147483647, false, false, {}, {}, {},
        [](Scene& s, const SceneValue& v) { s.dumps_per_decade = int(std::get<std::int64_t>(v)); },
        [](const Scene& s) { return std::to_string(s.dumps_per_decade); }},
       {"output.t_min", KeyType::kFloat, KeyNeed::kDefault, "first time of the log-spaced grids", 0, kInf, true, false,
-       {}, {},
+       {}, {}, {},
        [](Scene& s, const SceneValue& v) { s.t_min = std::get<double>(v); },
        [](const Scene& s) { return toml_float(s.t_min); }},
       {"output.dump_times", KeyType::kFloatArray, KeyNeed::kDefault, "extra dump times, e.g. [5, 10, 2000]", 0, kInf,
-       false, false, {}, {},
+       false, false, {}, {}, {},
        [](Scene& s, const SceneValue& v) { s.dump_times = std::get<std::vector<double>>(v); },
        [](const Scene& s) {
          std::string t = "[";
@@ -132,6 +151,17 @@ const SceneKey& key_row(const char* name) {
 
 bool used_by(const SceneKey& k, CollisionModel m) {
   return k.models.empty() || std::find(k.models.begin(), k.models.end(), m) != k.models.end();
+}
+bool used_by(const SceneKey& k, InitialPositions i) {
+  return k.inits.empty() || std::find(k.inits.begin(), k.inits.end(), i) != k.inits.end();
+}
+bool used_by(const SceneKey& k, const Scene& s) { return used_by(k, s.model) && used_by(k, s.init); }
+
+// "\"random\" or \"fcc\"": the starts that use a key.
+std::string init_names(const SceneKey& k) {
+  std::string out;
+  for (I i : k.inits) out += std::string(out.empty() ? "" : " or ") + "\"" + kInitNames[int(i)] + "\"";
+  return out;
 }
 
 // "in (0, 1]", ">= 0", "" (no bound).
@@ -165,9 +195,11 @@ std::string scene_keys_help() {
     if (!range.empty()) facts += ", " + range;
     if (k.need == KeyNeed::kRequired) facts += ", required";
     if (k.need == KeyNeed::kDefault) facts += ", default " + k.toml(Scene{});
+    if (k.need == KeyNeed::kOptional) facts += ", optional";
     std::string models;
     for (M m : k.models) models += std::string(models.empty() ? "" : ", ") + kModelNames[int(m)];
     if (!models.empty()) facts += "; model " + models;
+    if (!k.inits.empty()) facts += "; init " + init_names(k);
     out += std::string("  ") + k.key + " (" + facts + "): " + k.help + "\n";
   }
   return out;
@@ -327,6 +359,10 @@ void check_value(const SceneKey& k, const SceneValue& v) {
   } else if (const auto* xs = std::get_if<std::vector<double>>(&v)) {
     for (double x : *xs) check_number(k, x);
   } else if (const auto* str = std::get_if<std::string>(&v)) {
+    if (k.choices.empty()) {  // a free text, such as a path
+      if (str->empty()) throw InputError(std::string(k.key) + " is empty; give " + k.help);
+      return;
+    }
     if (std::find(k.choices.begin(), k.choices.end(), *str) != k.choices.end()) return;
     std::string allowed;
     for (std::size_t i = 0; i < k.choices.size(); ++i)
@@ -362,6 +398,12 @@ double physical_memory() {
 }
 
 }  // namespace
+
+void check_scene_size(const Scene& s) {
+  const std::string box = check_box_fits_grid(s.L, 1.0);
+  if (!box.empty()) throw InputError(box);
+  check_scene_cost(s, physical_memory());
+}
 
 void check_scene_cost(const Scene& s, double memory_bytes) {
   const double n = double(s.N), cells = std::pow(std::floor(s.L), 3);
@@ -415,6 +457,9 @@ std::vector<std::string> size_keys(const KeyValues& kv, const std::set<std::stri
 }
 
 void set_size(Scene& s, const KeyValues& kv, const std::set<std::string>& overridden) {
+  // A start from a file takes its size from the file, and those of N, L,
+  // phi the scene gives are checked against it (simulate/start/file_start.h).
+  if (s.init == InitialPositions::kFile) return;
   const auto keys = size_keys(kv, overridden);
   if (keys.size() < 2) throw InputError("the scene must give two of system.N, system.L and system.phi");
   auto has = [&](const char* k) { return std::find(keys.begin(), keys.end(), k) != keys.end(); };
@@ -444,12 +489,16 @@ void check_relations(const Scene& s) {
     out_of_range("system.phi", s.phi, "an FCC lattice of unit spheres holds phi <= 0.7404");
 }
 
-// Each model takes only its own collision.* keys, so a typo in the model name
-// cannot silently drop a parameter; a key at its default value changes nothing.
-void check_model_keys(const Scene& s, const KeyValues& kv) {
+// Each model takes only its own collision.* keys, and each start its own
+// system.* keys, so a typo in the model name cannot silently drop a
+// parameter; a key at its default value changes nothing.
+void check_unused_keys(const Scene& s, const KeyValues& kv) {
   const Scene defaults;
   for (const auto& k : scene_keys()) {
-    if (!kv.count(k.key) || used_by(k, s.model) || k.toml(s) == k.toml(defaults)) continue;
+    if (!kv.count(k.key) || used_by(k, s) || k.toml(s) == k.toml(defaults)) continue;
+    if (!used_by(k, s.init))
+      throw InputError(std::string(k.key) + " is set but system.init = \"" + kInitNames[int(s.init)] +
+                       "\" does not use it; remove it, or set init = " + init_names(k));
     std::string users;
     for (M m : k.models) users += std::string(users.empty() ? "" : " or ") + "\"" + kModelNames[int(m)] + "\"";
     throw InputError(std::string(k.key) + " is set but collision.model = \"" + s.model_name() +
@@ -460,9 +509,10 @@ void check_model_keys(const Scene& s, const KeyValues& kv) {
 // Keys without a default that the scene's model uses must be given.
 void check_required(const Scene& s, const KeyValues& kv) {
   for (const auto& k : scene_keys()) {
-    if (k.need != KeyNeed::kRequired || kv.count(k.key) || !used_by(k, s.model)) continue;
+    if (k.need != KeyNeed::kRequired || kv.count(k.key) || !used_by(k, s)) continue;
     const std::string help = k.help, what = help.substr(0, help.find(','));
-    const std::string model = k.models.empty() ? "" : " for collision.model = \"" + s.model_name() + "\"";
+    const std::string model = !k.inits.empty() ? " for system.init = \"" + std::string(kInitNames[int(s.init)]) + "\""
+                              : k.models.empty() ? "" : " for collision.model = \"" + s.model_name() + "\"";
     throw InputError("the scene must give " + std::string(k.key) + model + " (" + what + ")");
   }
 }
@@ -476,13 +526,13 @@ Scene build_scene(const KeyValues& kv, const std::set<std::string>& overridden) 
     check_value(k, v);
     k.set(s, v);
   }
-  check_model_keys(s, kv);
+  check_unused_keys(s, kv);
   check_required(s, kv);
   set_size(s, kv, overridden);
   check_relations(s);
-  const std::string box = check_box_fits_grid(s.L, 1.0);
-  if (!box.empty()) throw InputError(box);
-  check_scene_cost(s, physical_memory());
+  // A start from a file knows its size here only when the scene states it
+  // (a resumed run's effective scene); else once the file is read.
+  if (s.init != InitialPositions::kFile || (s.N > 0 && s.L > 0)) check_scene_size(s);
   return s;
 }
 
@@ -513,7 +563,8 @@ std::string Scene::to_toml() const {
   for (const auto& k : scene_keys()) {
     const std::string key = k.key, name = key.substr(0, key.find('.'));
     if (name != table) out += (table.empty() ? "[" : "\n[") + name + "]\n", table = name;
-    if (used_by(k, model)) out += key.substr(key.find('.') + 1) + " = " + k.toml(*this) + "\n";
+    const std::string value = used_by(k, *this) ? k.toml(*this) : "";
+    if (!value.empty()) out += key.substr(key.find('.') + 1) + " = " + value + "\n";
   }
   return out;
 }

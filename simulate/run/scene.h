@@ -4,13 +4,15 @@
 // writes the effective scene back as TOML.
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
 
 namespace coolgas {
 
-enum class InitialPositions { kRandom, kFcc };
+// kFile: a frame of a file (simulate/start/file_start.h).
+enum class InitialPositions { kRandom, kFcc, kFile };
 // kViscoelastic: velocity-dependent restitution (simulate/engine/collision_rules.h);
 // kAggregation: ballistic aggregation, spheres that touch merge (simulate/engine/aggregation_engine.h).
 enum class CollisionModel { kElastic, kInelastic, kViscoelastic, kAggregation };
@@ -26,6 +28,12 @@ struct Scene {
   // fluid (random sequential addition is not one: its contact value differs
   // from Carnahan–Starling, so the collision rate would start 5-20 % off).
   double equilibrate = 5.0;
+  // init = "file": the file, the time of its frame (none: the last frame),
+  // and the temperature that sets the time unit (0 until the file is read:
+  // its own T0 for a coolgas file, else the Enskog value below).
+  std::string from;
+  std::optional<double> from_time;
+  double T0 = 0;
   // collision
   CollisionModel model = CollisionModel::kElastic;
   double r0 = 1.0;
@@ -49,8 +57,9 @@ enum class KeyType { kInteger, kFloat, kString, kFloatArray };
 // A key's value converted to its type (integers given as exact floats, 1e4, count).
 using SceneValue = std::variant<std::int64_t, double, std::string, std::vector<double>>;
 // kDefault: the key has a default (Scene{}'s member); kRequired: no default;
-// kSize: system.N, system.L, system.phi, of which a scene gives two.
-enum class KeyNeed { kDefault, kRequired, kSize };
+// kSize: system.N, system.L, system.phi, of which a scene gives two;
+// kOptional: no default, its absence has a meaning (the help says which).
+enum class KeyNeed { kDefault, kRequired, kSize, kOptional };
 
 struct SceneKey {
   const char* key;   // "table.name"
@@ -64,8 +73,10 @@ struct SceneKey {
   std::vector<std::string> choices;  // strings: the allowed values
   // Models that use the key (collision.* keys; empty: every model).
   std::vector<CollisionModel> models;
+  // Starts that use the key (system.init; empty: every start).
+  std::vector<InitialPositions> inits;
   void (*set)(Scene&, const SceneValue&);
-  std::string (*toml)(const Scene&);  // the member as a TOML value
+  std::string (*toml)(const Scene&);  // the member as a TOML value ("" for an absent kOptional key)
 };
 const std::vector<SceneKey>& scene_keys();
 
@@ -108,6 +119,11 @@ inline constexpr int kMaxSceneNesting = 16;
 // Refuses (InputError, one line saying what the scene would cost and the
 // limit) a scene whose memory exceeds `memory_bytes` or the limits above.
 void check_scene_cost(const Scene& scene, double memory_bytes);
+
+// The checks that need the box: it fits the cell grid, and the cost against
+// this machine's memory. parse_scene() makes them; a start from a file,
+// whose size is known only once the file is read, makes them then.
+void check_scene_size(const Scene& scene);
 
 // Keys a resumed run may change (run.* and output.*); others are rejected.
 bool key_changeable_on_resume(const std::string& key);

@@ -22,6 +22,7 @@
 #include "common/tsv.h"
 #include "simulate/run/checkpoint.h"
 #include "simulate/run/engine_factory.h"
+#include "simulate/start/file_start.h"
 #include "simulate/start/initial_state.h"
 #include "simulate/run/resume_point.h"
 #include "simulate/run/time_grid.h"
@@ -256,14 +257,20 @@ int drive(Driver& driver, const Scene& scene) {
 }
 
 int start_new(const SimulationRequest& req) {
-  const Scene scene = parse_scene(read_file(req.scene_path), req.scene_path, req.overrides);
+  Scene scene = parse_scene(read_file(req.scene_path), req.scene_path, req.overrides);
   const double interval = checkpoint_interval();
   const std::string out = req.output.empty() ? default_output(req.scene_path) : req.output;
   check_writable(out, req.force);
   std::unique_ptr<EngineBase> engine;
-  try {
-    engine = make_engine(scene, initial_state(scene, &g_interrupt), 0.0);
-  } catch (const SetupInterrupted&) {
+  if (scene.init == InitialPositions::kFile) {
+    FileStart start = start_from_file(scene);  // completes the scene (N, L, phi, T0)
+    if (!req.quiet) std::cerr << "coolgas-simulate: " << start.notice << "\n";
+    engine = make_engine(scene, std::move(start.particles), 0.0, {}, start.aggregates ? &*start.aggregates : nullptr);
+  } else {
+    try {
+      engine = make_engine(scene, initial_state(scene, &g_interrupt), 0.0);
+    } catch (const SetupInterrupted&) {
+    }
   }
   if (g_interrupt) {
     std::cerr << "coolgas-simulate: interrupted by signal " << int(g_interrupt) << " during set-up; nothing written\n";

@@ -40,27 +40,37 @@ void place_fcc(Particles& p, std::int64_t N, Random& rng) {
   }
 }
 
-// Maxwellian velocities, total momentum removed, rescaled to T0 exactly.
-void draw_velocities(Particles& p, double T0, Random& rng) {
-  Vec3 mean;
-  for (auto& v : p.v) {
+}  // namespace
+
+// With unit masses every product and quotient by a mass is exact, so the
+// velocities are those of the plain unit-sphere formula, bit for bit.
+void draw_velocities(Particles& p, double T0, Random& rng, const std::vector<double>* mass) {
+  const auto m = [&](std::size_t i) { return mass ? (*mass)[i] : 1.0; };
+  Vec3 momentum;
+  double total_mass = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    Vec3& v = p.v[i];
     v = {rng.normal(), rng.normal(), rng.normal()};
-    for (int d = 0; d < 3; ++d) mean[d] += v[d];
+    const double root = mass ? std::sqrt(m(i)) : 1.0;
+    for (int d = 0; d < 3; ++d) {
+      v[d] /= root;
+      momentum[d] += m(i) * v[d];
+    }
+    total_mass += m(i);
   }
-  const double n = double(p.size());
   double sum2 = 0;
-  for (auto& v : p.v) {
-    for (int d = 0; d < 3; ++d) v[d] -= mean[d] / n;
-    sum2 += dot(v, v);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    Vec3& v = p.v[i];
+    for (int d = 0; d < 3; ++d) v[d] -= momentum[d] / total_mass;
+    sum2 += m(i) * dot(v, v);
   }
-  const double scale = std::sqrt(T0 * 3.0 * n / sum2);
+  const double scale = std::sqrt(T0 * 3.0 * double(p.size()) / sum2);
   for (auto& v : p.v)
     for (int d = 0; d < 3; ++d) v[d] *= scale;
 }
 
-}  // namespace
-
 double initial_temperature(const Scene& s) {
+  if (s.T0 > 0) return s.T0;  // a start from a file (simulate/start/file_start.h)
   return unit_time_temperature(double(s.N) / (s.L * s.L * s.L), s.phi);
 }
 

@@ -4,6 +4,9 @@
 // momentum and temperature exactly T0, so that the initial mean collision
 // time is the time unit. Same scene and seed, same state, bit for bit.
 #pragma once
+#include <vector>
+
+#include "common/random.h"
 #include "simulate/engine/particles.h"
 #include "simulate/run/scene.h"
 #include "simulate/start/setup_interrupt.h"
@@ -15,7 +18,12 @@ namespace coolgas {
 // SetupInterrupted within a fraction of a second of *interrupt being set.
 Particles initial_state(const Scene& scene, InterruptFlag interrupt = nullptr);
 
-// The temperature of the initial state (per velocity component).
+// The temperature of the initial state (per velocity component): system.T0
+// once a start from a file has set it, else the Enskog value of the time unit.
 double initial_temperature(const Scene& scene);
+
+// Maxwellian velocities at temperature T0 (per component), total momentum
+// removed and rescaled to T0 exactly; `mass` null for unit masses.
+void draw_velocities(Particles& p, double T0, Random& rng, const std::vector<double>* mass = nullptr);
 
 }  // namespace coolgas

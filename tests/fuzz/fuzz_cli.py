@@ -163,6 +163,11 @@ class Corpus:
             ("--resume a text file", "--resume " + scene),
         ]:
             self.add("refused", "simulate " + what, f"{sim} {args}")
+        # Starts from a file that is not a configuration.
+        start = f"{sim} {scene} -o {self.path('from.h5')} --set system.init=file"
+        for what, path in [("missing", self.path("missing.xyz")), ("a directory", self.path("a_directory")),
+                           ("/dev/null", "/dev/null"), ("a scene", scene), ("empty", "''")]:
+            self.add("refused", "simulate from " + what, f"{start} --set system.from={path}")
 
     # Analysis tools: bad options and bad inputs.
     def tools(self, run, table):
@@ -170,7 +175,7 @@ class Corpus:
         text = self.scene_file("not a trajectory\n")
         bad_inputs = [self.path("missing.h5"), self.path("a_directory"), "/dev/null", text]
         p = self.prog
-        for tool in ["coolgas-energy", "coolgas-clusters", "coolgas-velocity", "coolgas-validate"]:
+        for tool in ["coolgas-energy", "coolgas-clusters", "coolgas-velocity", "coolgas-validate", "coolgas-convert"]:
             for b in bad_inputs:
                 self.add("refused", f"{tool} {b[-30:]}", f"{p(tool)} {b}")
         for b in bad_inputs[:2] + [run]:
@@ -193,6 +198,8 @@ class Corpus:
                                  f"{run} --time 0 -o x.png --colored 99", f"{run} --time 0 -o x.png --size 1e9",
                                  f"{run} --time 0 -o x.png --size 5", f"{run} --time 0 -o x.png --view 2d",
                                  f"{run} --time 0 -o x.png --max-points 0", f"{run} --time 0 -o x.png --thickness -1"],
+            "coolgas-convert": [f"{run} --format {f}" for f in ["pdb", "", "XYZ"]]
+            + [f"{run} --time {t}" for t in ["x", "nan", ""]] + [f"{run} --last --time 1"],
             "coolgas-smoluchowski": [f"--M {m} --times 1" for m in ["0", "1", "1e12", "1000000000000", "-5"]]
             + ["--kernel nope --times 1", "--method nope --times 1", "--times -1", "--times x", "--M 64",
                "--until-mean-mass 1e300 --M 64", "--kernel separable:0,1,1 --times 1", "--rtol -1 --times 1"],
@@ -263,6 +270,7 @@ class Corpus:
             "coolgas-velocity": f"{p('coolgas-velocity')} --bins 20000 {run}",
             "coolgas-smoluchowski": f"{p('coolgas-smoluchowski')} --kernel constant --M 4096 --times 1,2,3",
             "coolgas-validate": f"{p('coolgas-validate')} {run}",
+            "coolgas-convert": f"{p('coolgas-convert')} {run}",
             "coolgas-simulate --help": f"{p('coolgas-simulate')} --help",
         }
         for tool, cmd in commands.items():

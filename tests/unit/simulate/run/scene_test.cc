@@ -141,7 +141,7 @@ TEST(Scene, ValuesInMessagesAreOneShortLine) {
   EXPECT_EQ(e.find('\n'), std::string::npos);
   EXPECT_NE(e.find("ran\\ndom"), std::string::npos) << e;
   EXPECT_LT(e.size(), 200u) << e;
-  EXPECT_NE(e.find("is not known: use \"random\" or \"fcc\""), std::string::npos) << e;
+  EXPECT_NE(e.find("is not known: use \"random\", \"fcc\" or \"file\""), std::string::npos) << e;
 }
 
 TEST(Scene, HelpShowsEachKeysRangeAndDefaultFromTheTable) {
@@ -150,6 +150,49 @@ TEST(Scene, HelpShowsEachKeysRangeAndDefaultFromTheTable) {
   EXPECT_NE(help.find("run.t_end (float, > 0, required)"), std::string::npos) << help;
   EXPECT_NE(help.find("output.dumps_per_decade (integer, in [1, 2147483647], default 5)"), std::string::npos);
   EXPECT_NE(help.find("collision.viscoelastic_b (float, > 0, required; model viscoelastic)"), std::string::npos);
+}
+
+// A start from a file: its keys belong to init = "file" only, the size comes
+// from the file (so the scene needs none), and a resumed run's effective
+// scene, which states N, L, phi and T0, reads back without the file.
+const char* kFileScene = R"(
+[system]
+init = "file"
+from = "run.h5"
+[run]
+t_end = 100
+)";
+
+TEST(Scene, AStartFromAFileNeedsNoSizeAndOnlyItsOwnKeys) {
+  const Scene s = parse_scene(kFileScene, "s.toml", {"system.from_time=20"});
+  EXPECT_EQ(s.init, InitialPositions::kFile);
+  EXPECT_EQ(s.from, "run.h5");
+  EXPECT_EQ(s.from_time, 20.0);
+  EXPECT_EQ(s.N, 0);  // known once the file is read (simulate/start/file_start.h)
+  EXPECT_NE(error_of({"system.init=\"file\""}).find("the scene must give system.from for system.init = \"file\""),
+            std::string::npos) << error_of({"system.init=\"file\""});
+  EXPECT_NE(error_of({"system.from=\"x.h5\""}).find("system.from is set but system.init = \"random\" does not use it"),
+            std::string::npos);
+  EXPECT_NE(error_of({"system.T0=0.5"}).find("set init = \"file\""), std::string::npos);
+  EXPECT_NE(error_of({"system.equilibrate=2"}, kFileScene).find("system.equilibrate is set but system.init = \"file\""),
+            std::string::npos);
+  EXPECT_NE(error_of({"system.from=\"\""}, kFileScene).find("system.from is empty"), std::string::npos);
+  EXPECT_NE(error_of({"system.T0=0"}, kFileScene).find("system.T0"), std::string::npos);
+}
+
+TEST(Scene, TheEffectiveSceneOfAFileStartReadsBackWithoutTheFile) {
+  Scene s = parse_scene(kFileScene, "s.toml", {});
+  s.N = 2000, s.L = 17.364656928926813, s.phi = 0.20000000000000012, s.T0 = 0.04412881861832565;  // as read
+  const std::string toml = s.to_toml();
+  EXPECT_EQ(toml.find("equilibrate"), std::string::npos);  // not used by this start
+  EXPECT_EQ(toml.find("from_time"), std::string::npos);    // absent: the last frame
+  const Scene t = parse_scene(toml, "effective", {});
+  EXPECT_EQ(t.to_toml(), toml);
+  EXPECT_EQ(t.T0, s.T0);
+  EXPECT_EQ(t.L, s.L);
+  const std::string help = scene_keys_help();
+  EXPECT_NE(help.find("system.from_time (float, >= 0, optional; init \"file\")"), std::string::npos) << help;
+  EXPECT_NE(help.find("system.equilibrate (float, >= 0, default 5.0; init \"random\" or \"fcc\")"), std::string::npos);
 }
 
 }  // namespace

@@ -1,0 +1,41 @@
+#include "analyze/convert/tool.h"
+
+#include <cmath>
+#include <ostream>
+
+#include "analyze/convert/lammps_dump.h"
+#include "common/error.h"
+#include "common/extended_xyz.h"
+#include "common/trajectory/frame_reader.h"
+#include "common/version.h"
+
+namespace coolgas {
+
+namespace {
+
+XyzFrame xyz_of(const Frame& f) {
+  XyzFrame x{f.L, f.time, f.step, std::nullopt, f.position, f.velocity, f.diameter, f.mass, {}};
+  x.id.resize(f.particles());
+  for (std::size_t i = 0; i < x.id.size(); ++i) x.id[i] = f.id.empty() ? std::int64_t(i) : f.id[i];
+  return x;
+}
+
+}  // namespace
+
+void run_convert(const ConvertOptions& opt, std::ostream& out) {
+  for (double t : opt.times)
+    if (!std::isfinite(t)) throw InputError("--time " + format_number(t) + ": a time is a finite number [1/omega0]");
+  const Trajectory t(opt.input, kPosition | kVelocity | kImage | kDiameter);
+  const std::vector<std::size_t> dumps =
+      opt.last ? std::vector<std::size_t>{t.dump_times().size() - 1} : t.dumps_nearest(opt.times);
+  Provenance provenance{{"tool", "coolgas-convert"}, {"version", program_version()}};
+  for (auto& p : t.provenance()) provenance.push_back(std::move(p));
+  Frame f;
+  for (std::size_t dump : dumps) {
+    t.read(dump, f);
+    if (opt.format == ExportFormat::kXyz) write_xyz_frame(out, xyz_of(f), provenance);
+    else write_lammps_frame(out, f);
+  }
+}
+
+}  // namespace coolgas

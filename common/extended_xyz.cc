@@ -1,0 +1,224 @@
+#include "common/extended_xyz.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <istream>
+#include <map>
+#include <ostream>
+#include <sstream>
+
+#include "common/error.h"
+
+namespace coolgas {
+
+namespace {
+
+std::string quoted(std::string v) {
+  for (char& c : v)
+    if (c == '"' || c == '\n' || c == '\r') c = '\'';
+  return "\"" + v + "\"";
+}
+
+std::string xyz_key(const std::string& k) {
+  std::string out;
+  for (char c : k) out += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  return out.empty() || std::isdigit(static_cast<unsigned char>(out[0])) ? "_" + out : out;
+}
+
+}  // namespace
+
+void write_xyz_frame(std::ostream& out, const XyzFrame& f, const Provenance& provenance) {
+  const std::size_t n = f.position.size() / 3;
+  const std::string L = format_number(f.L);
+  const bool spheres = !f.diameter.empty();
+  out << n << "\nLattice=\"" << L << " 0 0 0 " << L << " 0 0 0 " << L << "\" Properties=species:S:1:pos:R:3"
+      << (f.velocity.empty() ? "" : ":velo:R:3") << (f.id.empty() ? "" : ":id:I:1")
+      << (spheres ? ":radius:R:1" : "") << (f.mass.empty() ? "" : ":mass:R:1") << " pbc=\"T T T\"";
+  if (f.time) out << " Time=" << format_number(*f.time);
+  if (f.step) out << " Step=" << *f.step;
+  for (const auto& [k, v] : provenance) out << " " << xyz_key(k) << "=" << quoted(v);
+  out << "\n";
+  for (std::size_t i = 0; i < n; ++i) {
+    out << "X";
+    for (int d = 0; d < 3; ++d) out << " " << format_number(f.position[3 * i + d]);
+    if (!f.velocity.empty())
+      for (int d = 0; d < 3; ++d) out << " " << format_number(f.velocity[3 * i + d]);
+    if (!f.id.empty()) out << " " << f.id[i];
+    if (spheres) out << " " << format_number(f.diameter[i] / 2);
+    if (!f.mass.empty()) out << " " << format_number(f.mass[i]);
+    out << "\n";
+  }
+}
+
+namespace {
+
+struct Parser {
+  std::istream& in;
+  const std::string& source;
+  long line_no = 0;
+
+  [[noreturn]] void fail(const std::string& what) const {
+    throw InputError(source + ": line " + std::to_string(line_no) + ": " + what);
+  }
+
+  bool next(std::string& line) {
+    if (!std::getline(in, line)) return false;
+    ++line_no;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    return true;
+  }
+
+  double number(std::string_view t, const char* what) const {
+    double x = 0;
+    const auto r = std::from_chars(t.data(), t.data() + t.size(), x);
+    if (r.ec != std::errc() || r.ptr != t.data() + t.size())
+      fail(std::string(what) + " '" + shown(std::string(t)) + "' is not a number");
+    return x;
+  }
+
+  // key=value, key="quoted value" or key={braced value}; a bare key is "T".
+  std::map<std::string, std::string> pairs(const std::string& s) const {
+    std::map<std::string, std::string> kv;
+    std::size_t i = 0;
+    while (i < s.size()) {
+      while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
+      if (i == s.size()) break;
+      const std::size_t k0 = i;
+      while (i < s.size() && s[i] != '=' && !std::isspace(static_cast<unsigned char>(s[i]))) ++i;
+      const std::string key = s.substr(k0, i - k0);
+      std::string value = "T";
+      if (i < s.size() && s[i] == '=') {
+        ++i;
+        const char open = i < s.size() ? s[i] : ' ';
+        if (open == '"' || open == '{') {
+          const char close = open == '"' ? '"' : '}';
+          const std::size_t end = s.find(close, i + 1);
+          if (end == std::string::npos) fail("the comment line has an unclosed " + std::string(1, open) + " after " + shown(key) + "=");
+          value = s.substr(i + 1, end - i - 1);
+          i = end + 1;
+        } else {
+          const std::size_t v0 = i;
+          while (i < s.size() && !std::isspace(static_cast<unsigned char>(s[i]))) ++i;
+          value = s.substr(v0, i - v0);
+        }
+      }
+      kv[key] = value;
+    }
+    return kv;
+  }
+
+  static std::vector<std::string> words(const std::string& s) {
+    std::istringstream ss(s);
+    std::vector<std::string> w;
+    for (std::string t; ss >> t;) w.push_back(t);
+    return w;
+  }
+};
+
+// Where each quantity sits among the columns (-1: absent).
+struct Columns {
+  std::size_t count = 0;
+  long pos = -1, velo = -1, radius = -1, diameter = -1, mass = -1;
+};
+
+Columns columns_of(const Parser& p, const std::string& properties) {
+  std::vector<std::string> f;
+  std::stringstream ss(properties);
+  for (std::string t; std::getline(ss, t, ':');) f.push_back(t);
+  if (f.size() % 3 != 0) p.fail("Properties=" + shown(properties) + " is not a list of name:type:columns");
+  Columns c;
+  for (std::size_t i = 0; i < f.size(); i += 3) {
+    const std::string& name = f[i];
+    const long at = long(c.count);
+    const double cols = p.number(f[i + 2], "the column count");
+    if (!(cols >= 1 && cols <= 1000 && cols == std::floor(cols))) p.fail("Properties=" + shown(properties) + " has a bad column count");
+    const bool real = f[i + 1] == "R";
+    auto want = [&](long* slot, double n) {
+      if (!real || cols != n)
+        p.fail("property " + shown(name) + " is " + f[i + 1] + ":" + f[i + 2] + "; expected R:" + format_number(n));
+      *slot = at;
+    };
+    if (name == "pos") want(&c.pos, 3);
+    else if (name == "velo" || name == "vel" || name == "velocities") want(&c.velo, 3);
+    else if (name == "radius") want(&c.radius, 1);
+    else if (name == "diameter") want(&c.diameter, 1);
+    else if (name == "mass" || name == "masses") want(&c.mass, 1);
+    c.count += std::size_t(cols);
+  }
+  if (c.pos < 0) p.fail("Properties=" + shown(properties) + " has no positions (pos:R:3)");
+  return c;
+}
+
+double cubic_lattice(const Parser& p, const std::string& lattice) {
+  const auto w = Parser::words(lattice);
+  if (w.size() != 9) p.fail("Lattice=\"" + shown(lattice) + "\" does not hold 9 numbers");
+  double m[9];
+  for (int i = 0; i < 9; ++i) m[i] = p.number(w[i], "a Lattice entry");
+  for (int i : {1, 2, 3, 5, 6, 7})
+    if (m[i] != 0) p.fail("Lattice=\"" + shown(lattice) + "\" is not an orthogonal box; coolgas boxes are cubes");
+  if (m[0] != m[4] || m[0] != m[8])
+    p.fail("Lattice=\"" + shown(lattice) + "\" is not a cube (edges " + format_number(m[0]) + ", " + format_number(m[4]) +
+           ", " + format_number(m[8]) + ")");
+  return m[0];
+}
+
+// One frame after its count line; nothing when the input has ended.
+XyzFrame read_frame(Parser& p, std::size_t n) {
+  std::string line;
+  if (!p.next(line)) p.fail("the file ends before the comment line");
+  const auto kv = p.pairs(line);
+  const auto get = [&](const char* k) { const auto it = kv.find(k); return it == kv.end() ? std::optional<std::string>() : it->second; };
+  XyzFrame f;
+  const auto lattice = get("Lattice");
+  if (!lattice) p.fail("no Lattice=\"L 0 0 0 L 0 0 0 L\" (the box) on the comment line: not an extended XYZ file with a box");
+  f.L = cubic_lattice(p, *lattice);
+  if (const auto pbc = get("pbc")) {
+    const auto w = Parser::words(*pbc);
+    const bool periodic = w.size() == 3 && std::all_of(w.begin(), w.end(), [](const std::string& x) { return x == "T" || x == "True"; });
+    if (!periodic) p.fail("pbc=\"" + shown(*pbc) + "\"; coolgas boxes are periodic in x, y and z (pbc=\"T T T\")");
+  }
+  if (const auto t = get("Time")) f.time = p.number(*t, "Time");
+  if (const auto t = get("T0")) f.T0 = p.number(*t, "T0");
+  const Columns c = columns_of(p, get("Properties").value_or("species:S:1:pos:R:3"));
+  f.position.resize(3 * n);
+  if (c.velo >= 0) f.velocity.resize(3 * n);
+  if (c.radius >= 0 || c.diameter >= 0) f.diameter.resize(n);
+  if (c.mass >= 0) f.mass.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!p.next(line)) p.fail("the file ends after " + std::to_string(i) + " of " + std::to_string(n) + " particles");
+    const auto w = Parser::words(line);
+    if (w.size() < c.count) p.fail("expected " + std::to_string(c.count) + " columns, got " + std::to_string(w.size()));
+    for (int d = 0; d < 3; ++d) f.position[3 * i + d] = p.number(w[c.pos + d], "a position");
+    if (c.velo >= 0)
+      for (int d = 0; d < 3; ++d) f.velocity[3 * i + d] = p.number(w[c.velo + d], "a velocity");
+    if (c.radius >= 0) f.diameter[i] = 2 * p.number(w[c.radius], "a radius");
+    if (c.diameter >= 0) f.diameter[i] = p.number(w[c.diameter], "a diameter");
+    if (c.mass >= 0) f.mass[i] = p.number(w[c.mass], "a mass");
+  }
+  return f;
+}
+
+}  // namespace
+
+XyzFrame read_xyz_frame(std::istream& in, const std::string& source, std::optional<double> time) {
+  Parser p{in, source};
+  std::optional<XyzFrame> best;
+  std::string line;
+  while (p.next(line)) {
+    const auto w = Parser::words(line);
+    if (w.empty() && best) continue;  // blank lines after the last frame
+    double n = -1;
+    if (w.size() == 1) std::from_chars(w[0].data(), w[0].data() + w[0].size(), n);
+    if (!(n >= 1 && n < 2147483648.0 && n == std::floor(n)))
+      p.fail("expected the number of particles (an extended XYZ frame starts with it), got '" + shown(line) + "'");
+    XyzFrame f = read_frame(p, std::size_t(n));
+    if (time && !f.time) p.fail("a frame has no Time=, so the frame nearest t = " + format_number(*time) + " cannot be chosen");
+    if (!best || !time || std::abs(*f.time - *time) < std::abs(*best->time - *time)) best = std::move(f);
+  }
+  if (!best) throw InputError(source + ": empty file; expected an extended XYZ frame");
+  return *best;
+}
+
+}  // namespace coolgas

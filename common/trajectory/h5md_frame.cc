@@ -1,0 +1,199 @@
+#include "common/trajectory/h5md_frame.h"
+
+#include <cmath>
+
+#include "common/error.h"
+#include "common/hdf5_file.h"
+#include "common/trajectory/layout.h"
+#include "common/tsv.h"
+
+namespace coolgas {
+namespace {
+
+struct Reader {
+  hid_t file;
+  std::string path;
+
+  [[noreturn]] void fail(const std::string& what) const { throw InputError(path + ": " + what); }
+
+  // "all" if present, else the one group of /particles.
+  std::string particle_group() const {
+    const std::string particles(layout::kParticles);
+    if (!h5::exists(file, particles) || !h5::is_group(file, particles))
+      fail("not an H5MD file with particles: no " + particles + " group");
+    const std::string all(layout::kAll);
+    if (h5::exists(file, all)) return all.substr(particles.size() + 1);
+    h5::Handle g = h5::open_group(file, particles);
+    H5G_info_t info{};
+    if (H5Gget_info(g.id(), &info) < 0 || info.nlinks == 0) fail(particles + " holds no particle group");
+    std::vector<std::string> names;
+    for (hsize_t i = 0; i < info.nlinks; ++i) {
+      char name[256] = {};
+      H5Lget_name_by_idx(g.id(), ".", H5_INDEX_NAME, H5_ITER_INC, i, name, sizeof name, H5P_DEFAULT);
+      names.emplace_back(name);
+    }
+    if (names.size() > 1) {
+      std::string list;
+      for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+      fail(particles + " holds several particle groups (" + list + "); coolgas reads 'all' or a single group");
+    }
+    return names[0];
+  }
+
+  // The value dataset of an element and whether it varies in time.
+  std::pair<std::string, bool> value_path(const std::string& element) const {
+    if (!h5::exists(file, element)) fail("missing " + element);
+    const bool varies = h5::is_group(file, element);
+    return {varies ? layout::value_of(element) : element, varies};
+  }
+
+  // Times of a time-varying element: a (F,) dataset, or a scalar step with
+  // an optional `offset` attribute (H5MD 1.1, fixed sampling).
+  std::vector<double> times(const std::string& element, std::size_t frames) const {
+    const std::string t = layout::time_of(element);
+    if (!h5::exists(file, t)) return {};
+    h5::Handle ds = h5::open_dataset(file, t);
+    std::vector<double> v = h5::read_all<double>(ds.id());
+    if (h5::shape(ds.id()).empty()) {
+      const double offset = h5::has_attr(ds.id(), "offset") ? h5::read_attr_double(ds.id(), "offset") : 0.0;
+      const double step = v.at(0);
+      v.resize(frames);
+      for (std::size_t i = 0; i < frames; ++i) v[i] = offset + double(i) * step;
+    }
+    if (v.size() < frames) fail(t + " holds " + std::to_string(v.size()) + " times for " + std::to_string(frames) + " frames");
+    v.resize(frames);
+    return v;
+  }
+
+  // Row `index` of a per-particle element (k numbers per particle), or the
+  // whole dataset when it does not vary in time; N is taken from the first read.
+  std::vector<double> per_particle(const std::string& element, std::size_t index, std::size_t frames,
+                                   std::size_t k, std::size_t* n) const {
+    const auto [value, varies] = value_path(element);
+    h5::Handle ds = h5::open_dataset(file, value);
+    auto dims = h5::shape(ds.id());
+    if (varies) {
+      if (dims.empty() || dims[0] != frames)
+        fail(value + " has " + (dims.empty() ? std::string("no") : std::to_string(dims[0])) + " frames, position has " +
+             std::to_string(frames));
+      dims.erase(dims.begin());
+    }
+    const bool fits = k == 1 ? dims.size() == 1 || (dims.size() == 2 && dims[1] == 1)
+                             : dims.size() == 2 && dims[1] == k;
+    if (!fits) fail(value + " has the wrong shape (expected " + (varies ? "frames x " : "") + "particles" +
+                    (k == 1 ? "" : " x " + std::to_string(k)) + ")");
+    if (*n == 0) *n = dims[0];
+    if (dims[0] != *n) fail(value + " holds " + std::to_string(dims[0]) + " particles, position " + std::to_string(*n));
+    std::vector<double> v(*n * k);
+    if (*n > 0) h5::read_rows(ds.id(), h5::Type::kFloat64, varies ? index : 0, varies ? 1 : dims[0], v.data());
+    return v;
+  }
+
+  // The side of a cubic periodic box: edges a vector (3) or a matrix (3 x 3),
+  // fixed or one row per frame.
+  double box_side(const std::string& group, std::size_t index, std::size_t frames) const {
+    const std::string box = layout::in_group(layout::kBox, group);
+    if (!h5::exists(file, box)) fail("missing " + box);
+    h5::Handle g = h5::open_group(file, box);
+    if (h5::has_attr(g.id(), "dimension") && h5::read_attr_int(g.id(), "dimension") != 3)
+      fail(box + " has dimension " + std::to_string(h5::read_attr_int(g.id(), "dimension")) + "; coolgas is 3D");
+    if (h5::has_attr(g.id(), "boundary"))
+      for (const std::string& b : h5::read_attr_strings(g.id(), "boundary"))
+        if (b != "periodic") fail(box + " has boundary '" + shown(b) + "'; coolgas boxes are periodic");
+    const auto [value, varies] = value_path(layout::in_group(layout::kBoxEdges, group));
+    h5::Handle ds = h5::open_dataset(file, value);
+    auto dims = h5::shape(ds.id());
+    std::size_t row = 0;
+    if (varies) {
+      if (dims.empty() || (dims[0] != frames && dims[0] != 1))
+        fail(value + " has " + (dims.empty() ? std::string("no") : std::to_string(dims[0])) + " rows, position has " +
+             std::to_string(frames) + " frames");
+      row = dims[0] == 1 ? 0 : index;
+      dims.erase(dims.begin());
+    }
+    const bool vector = dims == std::vector<hsize_t>{3}, matrix = dims == std::vector<hsize_t>{3, 3};
+    if (!vector && !matrix) fail(value + " has the wrong shape (expected 3 or 3 x 3)");
+    std::vector<double> e(dims.size() == 1 ? 3 : 9);
+    h5::read_rows(ds.id(), h5::Type::kFloat64, varies ? row : 0, varies ? 1 : dims[0], e.data());
+    const double a = e[0], b = vector ? e[1] : e[4], c = vector ? e[2] : e[8];
+    if (matrix)
+      for (int i : {1, 2, 3, 5, 6, 7})
+        if (e[i] != 0) fail(value + " is not an orthogonal box (off-diagonal " + format_number(e[i]) + ")");
+    if (a != b || a != c)
+      fail("the box is not cubic (edges " + format_number(a) + ", " + format_number(b) + ", " + format_number(c) +
+           "); coolgas boxes are cubes");
+    return a;
+  }
+
+  std::string unit_of(const std::string& element) const {
+    const auto [value, varies] = value_path(element);
+    h5::Handle ds = h5::open_dataset(file, value);
+    return h5::has_attr(ds.id(), "unit") ? h5::read_attr_string(ds.id(), "unit") : "";
+  }
+};
+
+template <class T>
+void keep(std::vector<T>& v, const std::vector<bool>& present, std::size_t k) {
+  if (v.empty()) return;
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < present.size(); ++i) {
+    if (!present[i]) continue;
+    for (std::size_t c = 0; c < k; ++c) v[out * k + c] = v[i * k + c];
+    ++out;
+  }
+  v.resize(out * k);
+}
+
+std::size_t nearest(const std::vector<double>& times, double t) {
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < times.size(); ++i)
+    if (std::abs(times[i] - t) < std::abs(times[best] - t)) best = i;
+  return best;
+}
+
+}  // namespace
+
+H5mdFrame read_h5md_frame(const std::string& path, std::optional<double> time) {
+  h5::Handle f = h5::open_file(path, h5::Mode::kReadOnly);
+  const Reader in{f.id(), path};
+  if (!h5::exists(f.id(), std::string(layout::kH5md))) in.fail("not an H5MD file: no /h5md group");
+  H5mdFrame fr;
+  fr.group = in.particle_group();
+  const std::string position = layout::in_group(layout::kPosition, fr.group);
+  const auto [value, varies] = in.value_path(position);
+  {
+    h5::Handle ds = h5::open_dataset(f.id(), value);
+    const auto dims = h5::shape(ds.id());
+    fr.frames = varies ? (dims.empty() ? 0 : dims[0]) : 1;
+  }
+  if (fr.frames == 0) in.fail(value + " holds no frames");
+  const std::vector<double> times = varies ? in.times(position, fr.frames) : std::vector<double>{};
+  fr.index = time && !times.empty() ? nearest(times, *time) : fr.frames - 1;
+  if (time && times.empty() && fr.frames > 1) in.fail(position + " has no times to pick the frame nearest t = " + format_number(*time));
+  if (!times.empty()) fr.time = times[fr.index];
+  std::size_t n = 0;
+  fr.position = in.per_particle(position, fr.index, fr.frames, 3, &n);
+  if (n == 0) in.fail(value + " holds no particles");
+  fr.length_unit = in.unit_of(position);
+  fr.L = in.box_side(fr.group, fr.index, fr.frames);
+  auto optional = [&](std::string_view element, std::size_t k) {
+    const std::string e = layout::in_group(element, fr.group);
+    return h5::exists(f.id(), e) ? in.per_particle(e, fr.index, fr.frames, k, &n) : std::vector<double>{};
+  };
+  fr.velocity = optional(layout::kVelocity, 3);
+  fr.mass = optional(layout::kMass, 1);
+  fr.diameter = optional(layout::kDiameter, 1);
+  const std::vector<double> id = optional(layout::kId, 1);
+  if (!id.empty()) {
+    std::vector<bool> present(n);
+    for (std::size_t i = 0; i < n; ++i) present[i] = id[i] != layout::kAbsentId;
+    keep(fr.position, present, 3);
+    keep(fr.velocity, present, 3);
+    keep(fr.mass, present, 1);
+    keep(fr.diameter, present, 1);
+    if (fr.position.empty()) in.fail("frame " + std::to_string(fr.index) + " holds no particle (every id is -1)");
+  }
+  return fr;
+}
+
+}  // namespace coolgas

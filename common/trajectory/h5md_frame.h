@@ -1,0 +1,39 @@
+// One frame of an H5MD 1.1 file written by any program (de Buyl et al.,
+// Comput. Phys. Commun. 185, 1546 (2014); nongnu.org/h5md/h5md.html):
+// particles/<group>/position and its box/edges, with velocity, mass,
+// diameter and id when the file has them. This is what a run can start
+// from when the file is not a coolgas trajectory (coolgas files are read
+// with frame_reader.h, which knows their completion marker).
+//
+// An element either varies in time (a group of value, time, step) or not
+// (a plain dataset); both are read. Lengths are taken as they are: the
+// file's `unit` attribute is reported, never converted (coolgas has reduced
+// units, in particle diameters).
+#pragma once
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace coolgas {
+
+struct H5mdFrame {
+  std::string group;           // the particle group read
+  std::size_t frames = 0;      // frames of its position (1 when it does not vary in time)
+  std::size_t index = 0;       // the frame read
+  std::optional<double> time;  // its time, when position has a time
+  double L = 0;                // the box side (cubic boxes only)
+  std::vector<double> position, velocity;  // 3 per particle; velocity empty when absent
+  std::vector<double> mass, diameter;      // 1 per particle; empty when absent
+  std::string length_unit;                 // position's `unit` attribute, "" when absent
+};
+
+// The frame nearest `time` (the earlier one on a tie), or the last. The
+// group is "all" when there is one, else the only group. Particles whose id
+// is -1 (H5MD's mark of an absent particle) are left out. Throws InputError
+// naming the file and what is wrong: not HDF5, no /h5md or /particles,
+// several groups, a missing or misshapen element, a box that is not cubic,
+// not periodic or not three-dimensional.
+H5mdFrame read_h5md_frame(const std::string& path, std::optional<double> time);
+
+}  // namespace coolgas

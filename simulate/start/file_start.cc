@@ -1,0 +1,144 @@
+#include "simulate/start/file_start.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "common/error.h"
+#include "common/random.h"
+#include "common/tsv.h"
+#include "simulate/start/configuration_check.h"
+#include "simulate/start/configuration_file.h"
+#include "simulate/start/enskog.h"
+#include "simulate/start/initial_state.h"
+
+namespace coolgas {
+
+namespace {
+
+// Diameters and masses as the model allows them: unit spheres for the gas
+// models, the file's aggregates for ballistic aggregation.
+void set_spheres(FileConfiguration& c, CollisionModel model, const std::string& source) {
+  const std::size_t n = c.position.size() / 3;
+  const bool aggregates = model == CollisionModel::kAggregation;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!c.mass.empty() && !(std::isfinite(c.mass[i]) && c.mass[i] > 0))
+      throw InputError(source + ": particle " + std::to_string(i) + " has mass " + format_number(c.mass[i]) +
+                       "; masses are finite and > 0");
+    if (aggregates) continue;
+    const bool unit = (c.diameter.empty() || c.diameter[i] == 1) && (c.mass.empty() || c.mass[i] == 1);
+    if (!unit)
+      throw InputError(source + ": particle " + std::to_string(i) + " has diameter " +
+                       format_number(c.diameter.empty() ? 1 : c.diameter[i]) + " and mass " +
+                       format_number(c.mass.empty() ? 1 : c.mass[i]) +
+                       "; only collision.model = \"aggregation\" has spheres other than diameter 1, mass 1");
+  }
+  if (!aggregates) {
+    c.diameter.clear();
+    c.mass.clear();
+    return;
+  }
+  if (c.diameter.empty()) {
+    c.diameter.resize(n, 1.0);
+    for (std::size_t i = 0; i < c.mass.size(); ++i) c.diameter[i] = std::cbrt(c.mass[i]);
+  }
+  if (c.mass.empty()) {
+    c.mass.resize(n);
+    for (std::size_t i = 0; i < n; ++i) c.mass[i] = c.diameter[i] * c.diameter[i] * c.diameter[i];
+  }
+}
+
+double volume_fraction(const FileConfiguration& c, std::size_t n) {
+  double v = 0;
+  for (std::size_t i = 0; i < n; ++i) v += c.diameter.empty() ? 1.0 : std::pow(c.diameter[i], 3);
+  return v * M_PI / (6 * c.L * c.L * c.L);
+}
+
+// N, L, phi of the file, checked against those the scene gives.
+void take_size(Scene& s, std::size_t n, double L, double phi, const std::string& source) {
+  const std::string leave = " (leave system.N, L and phi out: they come from the file)";
+  if (s.N > 0 && std::size_t(s.N) != n)
+    throw InputError("system.N = " + std::to_string(s.N) + " but " + source + " holds " + std::to_string(n) +
+                     " particles" + leave);
+  if (s.L > 0 && s.L != L)
+    throw InputError("system.L = " + format_number(s.L) + " but the box of " + source + " has side " +
+                     format_number(L) + leave);
+  if (s.phi > 0 && std::fabs(s.phi - phi) > 1e-9 * phi)
+    throw InputError("system.phi = " + format_number(s.phi) + " but the spheres of " + source + " fill " +
+                     format_number(phi) + " of the box" + leave);
+  s.N = std::int64_t(n);
+  s.L = L;
+  s.phi = phi;
+}
+
+std::string three_digits(double x) {
+  std::ostringstream s;
+  s.precision(3);
+  s << x;
+  return s.str();
+}
+
+// Σ m v² / (3 N): the temperature per velocity component.
+double temperature(const Particles& p, const std::vector<double>& mass) {
+  double sum = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) sum += (mass.empty() ? 1.0 : mass[i]) * dot(p.v[i], p.v[i]);
+  return sum / (3.0 * double(p.size()));
+}
+
+// Positions as they are; velocities the file's, else drawn at T0 (masses set first).
+Particles particles_of(const FileConfiguration& c, const Scene& s) {
+  const std::size_t n = c.position.size() / 3;
+  Particles p;
+  p.L = c.L;
+  p.resize(n);
+  const auto vec = [](const std::vector<double>& x, std::size_t i) { return Vec3{x[3 * i], x[3 * i + 1], x[3 * i + 2]}; };
+  for (std::size_t i = 0; i < n; ++i) p.r[i] = vec(c.position, i);
+  if (c.velocity.empty()) {
+    Random rng(std::uint64_t(s.seed));
+    draw_velocities(p, s.T0, rng, c.mass.empty() ? nullptr : &c.mass);
+  } else {
+    for (std::size_t i = 0; i < n; ++i) p.v[i] = vec(c.velocity, i);
+  }
+  return p;
+}
+
+// "starting from 'f.xyz' (extended XYZ, t = 5): N = 2000, L = 17.4, phi = 0.2;
+// velocities from the file (0.404 T0); T0 = 0.0441 (the file's)".
+std::string notice(const Scene& s, const FileConfiguration& c, const FileStart& start, bool drawn, bool own_T0) {
+  const std::vector<double> unit;
+  const double T = temperature(start.particles, start.aggregates ? start.aggregates->mass : unit);
+  const std::string velocities = drawn ? "drawn at T0" : "from the file (" + three_digits(T / s.T0) + " T0)";
+  const std::string T0 = own_T0 ? "system.T0" : c.T0 ? "the file's" : "Enskog, as for a fresh start";
+  return "starting from '" + s.from + "' (" + c.format + (c.time ? ", t = " + format_number(*c.time) : "") +
+         "): N = " + std::to_string(s.N) + ", L = " + format_number(s.L) + ", phi = " + three_digits(s.phi) +
+         "; velocities " + velocities + "; T0 = " + format_number(s.T0) + " (" + T0 + ")" +
+         (c.length_unit.empty() ? "" : "; the file's length unit '" + c.length_unit + "' is read as one diameter");
+}
+
+}  // namespace
+
+FileStart start_from_file(Scene& s) {
+  const std::string source = "system.from = '" + s.from + "'";
+  FileConfiguration c = read_configuration(s.from, s.from_time);
+  const std::size_t n = c.position.size() / 3;
+  set_spheres(c, s.model, source);
+  take_size(s, n, c.L, volume_fraction(c, n), source);
+  if (c.time) s.from_time = c.time;
+  const bool own_T0 = s.T0 > 0;
+  if (!own_T0) s.T0 = c.T0 ? *c.T0 : unit_time_temperature(double(n) / (c.L * c.L * c.L), s.phi);
+  check_scene_size(s);
+
+  FileStart start;
+  start.particles = particles_of(c, s);
+  const bool drawn = c.velocity.empty();
+  if (s.model == CollisionModel::kAggregation) {
+    AggregateState a{std::move(c.mass), std::move(c.diameter), std::vector<std::int32_t>(n)};
+    for (std::size_t i = 0; i < n; ++i) a.id[i] = std::int32_t(i);
+    start.aggregates = std::move(a);
+  }
+  check_configuration(start.particles, start.aggregates ? &*start.aggregates : nullptr, source);
+
+  start.notice = notice(s, c, start, drawn, own_T0);
+  return start;
+}
+
+}  // namespace coolgas

@@ -1,0 +1,40 @@
+// A start from a frame of a file (system.init = "file"): the configuration
+// of simulate/start/configuration_file.h made into the state at t = 0, and
+// the scene completed from it.
+//
+// - N and L come from the file (ballistic aggregates: one particle per
+//   aggregate present, ids renumbered 0..N-1 in the file's order), phi is
+//   the volume fraction of its spheres; any of N, L, phi the scene gives
+//   must agree with the file.
+// - Diameters other than 1 only for collision.model = "aggregation"
+//   (masses: the file's, else d^3; diameters: the file's, else m^(1/3)).
+// - Velocities from the file, else Maxwellian at T0 (zero total momentum,
+//   temperature exactly T0) from system.seed.
+// - T0, which sets the time unit: system.T0 if given, else a coolgas
+//   trajectory's own (its times go on in its unit) or the T0= of an
+//   extended XYZ comment line (coolgas-convert writes it), else the Enskog value
+//   of the file's density, as for a fresh start.
+// - The configuration is checked (simulate/start/configuration_check.h):
+//   an overlapping pair is named with its distance, a particle outside the
+//   box [0, L) with its position.
+#pragma once
+#include <optional>
+#include <string>
+
+#include "simulate/engine/aggregation_engine.h"
+#include "simulate/engine/particles.h"
+#include "simulate/run/scene.h"
+
+namespace coolgas {
+
+struct FileStart {
+  Particles particles;
+  std::optional<AggregateState> aggregates;  // collision.model = "aggregation"
+  std::string notice;  // one line saying what was read, for stderr
+};
+
+// Reads scene.from and completes `scene`: N, L, phi, T0 and from_time (the
+// frame's time, when the file has one). Throws InputError (one line).
+FileStart start_from_file(Scene& scene);
+
+}  // namespace coolgas

@@ -1,0 +1,116 @@
+#!/usr/bin/env python3
+"""Checks coolgas-convert's output with real readers against h5py's view of the trajectory.
+
+usage: read_exports.py xyz RUN.h5 FRAMES.xyz     ASE reads every frame: cell, pbc, time, positions
+                                                 and velocities (exactly: the XYZ numbers round-trip),
+                                                 radii = diameter/2 of the aggregates present
+       read_exports.py lammps RUN.h5 DUMP DUMP   MDAnalysis (LAMMPSDUMP, convert_units=False) reads
+                                                 the dump of the last frame: box, ids, positions and
+                                                 velocities (float32 in MDAnalysis)
+       read_exports.py h5md RUN.h5 OUT.h5md      MDAnalysis writes the last frame as H5MD 1.1 (another
+                                                 program's file for coolgas-simulate to start from)
+       read_exports.py h5md_fixed RUN.h5 OUT     h5py writes the last frame as H5MD 1.1 the other way the
+                                                 specification allows: time-independent datasets, box edges
+                                                 a vector, group "gas", and one absent particle (id -1)
+       read_exports.py h5md_bad KIND OUT         h5py writes a broken H5MD file: KIND = slab (edges 10 10 5),
+                                                 open (boundary none), groups (two particle groups)
+Exits non-zero with a message on the first mismatch; prints "ok".
+"""
+import sys
+import warnings
+
+warnings.filterwarnings("ignore")
+import h5py
+import numpy as np
+
+
+def frames(path):
+    """Per dump (time, L, positions, velocities, diameters or None) of the particles present."""
+    with h5py.File(path, "r") as f:
+        p = f["particles/all"]
+        out = []
+        for k, t in enumerate(p["position/time"][:]):
+            live = p["id/value"][k] >= 0 if "id" in p else slice(None)
+            d = p["diameter/value"][k][live] if "diameter" in p else None
+            out.append((t, p["box/edges/value"][k][0, 0], p["position/value"][k][live], p["velocity/value"][k][live], d))
+        return out
+
+
+def fail(msg):
+    sys.exit("mismatch: " + msg)
+
+
+def check_xyz(h5, xyz):
+    import ase.io
+    ref = frames(h5)
+    images = ase.io.read(xyz, index=":")
+    if len(images) != len(ref):
+        fail(f"{len(images)} XYZ frames, {len(ref)} dumps")
+    for a, (t, L, pos, vel, d) in zip(images, ref):
+        if not (np.array_equal(a.cell.array, np.diag([L, L, L])) and all(a.pbc)):
+            fail(f"cell {a.cell.array} pbc {a.pbc} at t = {t}")
+        if a.info.get("Time") != t:
+            fail(f"Time {a.info.get('Time')} != {t}")
+        if not np.array_equal(a.positions, pos) or not np.array_equal(a.arrays["velo"], vel):
+            fail(f"positions or velocities differ at t = {t}")
+        if d is not None and not np.array_equal(2 * a.arrays["radius"], d):
+            fail(f"radii differ at t = {t}")
+
+
+def check_lammps(h5, dump):
+    import MDAnalysis as mda
+    t, L, pos, vel, d = frames(h5)[-1]
+    u = mda.Universe(dump, format="LAMMPSDUMP", convert_units=False)
+    ts = u.trajectory[0]
+    if u.atoms.n_atoms != len(pos) or not np.allclose(ts.dimensions, [L, L, L, 90, 90, 90]):
+        fail(f"atoms {u.atoms.n_atoms} box {ts.dimensions}")
+    if not np.array_equal(u.atoms.ids, np.arange(1, len(pos) + 1)) and d is None:
+        fail("ids are not 1..N")
+    if not np.allclose(ts.positions, pos, rtol=1e-6, atol=1e-5) or not np.allclose(ts.velocities, vel, rtol=1e-6, atol=1e-6):
+        fail("positions or velocities differ")
+
+
+def write_h5md(h5, out):
+    import MDAnalysis as mda
+    t, L, pos, vel, d = frames(h5)[-1]
+    u = mda.Universe.empty(len(pos), trajectory=True, velocities=True)
+    u.atoms.positions, u.atoms.velocities, u.dimensions = pos, vel, [L, L, L, 90, 90, 90]
+    with mda.Writer(out, n_atoms=len(pos), velocities=True, convert_units=False) as w:
+        w.write(u)
+
+
+def h5md_group(f, name, pos, edges, boundary="periodic"):
+    f.require_group("h5md").attrs["version"] = np.array([1, 1])
+    g = f.create_group("particles/" + name)
+    g["position"] = pos
+    box = g.create_group("box")
+    box.attrs["dimension"] = 3
+    box.attrs["boundary"] = np.array([boundary.encode()] * 3)  # fixed-length strings, as numpy writes them
+    box["edges"] = edges
+    return g
+
+
+def write_h5md_fixed(h5, out):
+    t, L, pos, vel, d = frames(h5)[-1]
+    with h5py.File(out, "w") as f:
+        g = h5md_group(f, "gas", np.vstack([[np.nan, np.nan, np.nan], pos]), np.array([L, L, L]))
+        g["velocity"] = np.vstack([[0, 0, 0], vel])
+        g["id"] = np.concatenate([[-1], np.arange(len(pos))])
+
+
+def write_h5md_bad(kind, out):
+    pos = np.array([[1.0, 1, 1], [3, 3, 3]])
+    with h5py.File(out, "w") as f:
+        if kind == "slab":
+            h5md_group(f, "all", pos, np.array([10.0, 10, 5]))
+        elif kind == "open":
+            h5md_group(f, "all", pos, np.array([10.0, 10, 10]), "none")
+        else:
+            h5md_group(f, "a", pos, np.array([10.0, 10, 10]))
+            h5md_group(f, "b", pos, np.array([10.0, 10, 10]))
+
+
+mode, h5, other = sys.argv[1], sys.argv[2], sys.argv[3]
+{"xyz": check_xyz, "lammps": check_lammps, "h5md": write_h5md, "h5md_fixed": write_h5md_fixed,
+ "h5md_bad": write_h5md_bad}[mode](h5, other)
+print("ok")

@@ -1,0 +1,118 @@
+// Extended XYZ frames: what coolgas writes reads back exactly (every double
+// in its shortest round-trip form), frames are chosen by Time=, files of
+// other programs (other column orders and names) are read, and a file that
+// is not a periodic cubic extended XYZ frame is refused naming the line.
+#include "common/extended_xyz.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "common/error.h"
+#include "common/random.h"
+
+namespace coolgas {
+namespace {
+
+XyzFrame random_frame(std::size_t n, double time, bool spheres) {
+  Random rng(5);
+  XyzFrame f;
+  f.L = 17.364656928926813;
+  f.time = time;
+  f.step = 123;
+  for (std::size_t i = 0; i < 3 * n; ++i) {
+    f.position.push_back(f.L * rng.uniform());
+    f.velocity.push_back(rng.normal() * 1e-7);
+  }
+  f.position[0] = 0.0;                        // the box's lower face
+  f.position[1] = std::nextafter(f.L, 0.0);   // the largest position inside it
+  f.position[2] = 5e-324;                     // the smallest positive double
+  for (std::size_t i = 0; i < n; ++i) {
+    f.id.push_back(std::int64_t(i));
+    if (spheres) {
+      f.mass.push_back(double(1 + i));
+      f.diameter.push_back(std::cbrt(double(1 + i)));
+    }
+  }
+  return f;
+}
+
+XyzFrame read(const std::string& text, std::optional<double> time = std::nullopt) {
+  std::istringstream in(text);
+  return read_xyz_frame(in, "f.xyz", time);
+}
+
+std::string error_of(const std::string& text, std::optional<double> time = std::nullopt) {
+  try {
+    read(text, time);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ExtendedXyz, AFrameReadsBackBitForBit) {
+  for (bool spheres : {false, true}) {
+    const XyzFrame f = random_frame(200, 12.5, spheres);
+    std::ostringstream out;
+    write_xyz_frame(out, f, {{"tool", "test"}, {"input", "a \"quoted\" name"}});
+    const XyzFrame g = read(out.str());
+    EXPECT_EQ(g.L, f.L);
+    EXPECT_EQ(g.time, f.time);
+    EXPECT_EQ(g.position, f.position);  // exact equality of every double
+    EXPECT_EQ(g.velocity, f.velocity);
+    EXPECT_EQ(g.diameter, f.diameter);  // radius = d/2 halves and doubles exactly
+    EXPECT_EQ(g.mass, f.mass);
+  }
+}
+
+TEST(ExtendedXyz, TheFrameNearestTimeOrTheLastIsRead) {
+  std::ostringstream out;
+  for (double t : {0.0, 10.0, 100.0}) {
+    XyzFrame f = random_frame(5, t, false);
+    f.position[3] = t / 100;  // marks the frame
+    write_xyz_frame(out, f, {});
+  }
+  EXPECT_EQ(read(out.str()).time, 100.0);
+  EXPECT_EQ(read(out.str(), 30.0).position[3], 0.1);
+  EXPECT_EQ(read(out.str(), 55.0).time, 10.0);  // a tie goes to the earlier frame
+  EXPECT_EQ(read(out.str(), 1e9).time, 100.0);
+}
+
+TEST(ExtendedXyz, OtherProgramsColumnsAreRead) {
+  // Columns in another order, velocities as "vel", diameters, a bare key, CRLF line ends.
+  const XyzFrame f = read(
+      "2\r\nProperties=id:I:1:species:S:1:vel:R:3:pos:R:3:diameter:R:1 Lattice=\"5 0 0 0 5 0 0 0 5\" "
+      "flag Time=2.5\r\n7 Ar 0.1 0.2 0.3 1 2 3 1.5\r\n8 Ar -0.1 -0.2 -0.3 3.5 2.5 1.5 2\r\n");
+  EXPECT_EQ(f.L, 5);
+  EXPECT_EQ(f.time, 2.5);
+  EXPECT_EQ(f.position, (std::vector<double>{1, 2, 3, 3.5, 2.5, 1.5}));
+  EXPECT_EQ(f.velocity, (std::vector<double>{0.1, 0.2, 0.3, -0.1, -0.2, -0.3}));
+  EXPECT_EQ(f.diameter, (std::vector<double>{1.5, 2}));
+  // No Properties: species and positions only (the extended XYZ default).
+  const XyzFrame g = read("1\nLattice=\"4 0 0 0 4 0 0 0 4\" pbc=\"T T T\"\nX 1 2 3\n");
+  EXPECT_TRUE(g.velocity.empty());
+  EXPECT_EQ(g.position, (std::vector<double>{1, 2, 3}));
+}
+
+TEST(ExtendedXyz, BadFilesAreRefusedNamingTheLine) {
+  const std::string box = "Lattice=\"4 0 0 0 4 0 0 0 4\"";
+  EXPECT_NE(error_of("").find("empty file"), std::string::npos);
+  EXPECT_NE(error_of("hello\n").find("line 1: expected the number of particles"), std::string::npos);
+  EXPECT_NE(error_of("1\ncomment\nX 1 2 3\n").find("line 2: no Lattice="), std::string::npos);
+  EXPECT_NE(error_of("1\nLattice=\"4 0 0 0 5 0 0 0 4\"\nX 1 2 3\n").find("is not a cube (edges 4, 5, 4)"),
+            std::string::npos);
+  EXPECT_NE(error_of("1\nLattice=\"4 1 0 0 4 0 0 0 4\"\nX 1 2 3\n").find("not an orthogonal box"), std::string::npos);
+  EXPECT_NE(error_of("1\n" + box + " pbc=\"T T F\"\nX 1 2 3\n").find("periodic"), std::string::npos);
+  EXPECT_NE(error_of("2\n" + box + "\nX 1 2 3\n").find("line 3: the file ends after 1 of 2 particles"),
+            std::string::npos);
+  EXPECT_NE(error_of("1\n" + box + "\nX 1 2\n").find("line 3: expected 4 columns, got 3"), std::string::npos);
+  EXPECT_NE(error_of("1\n" + box + "\nX 1 two 3\n").find("a position 'two' is not a number"), std::string::npos);
+  EXPECT_NE(error_of("1\n" + box + " Properties=species:S:1:velo:R:3\nX 1 2 3\n").find("no positions"),
+            std::string::npos);
+  EXPECT_NE(error_of("1\n" + box + "\nX 1 2 3\n", 5.0).find("has no Time="), std::string::npos);
+}
+
+}  // namespace
+}  // namespace coolgas

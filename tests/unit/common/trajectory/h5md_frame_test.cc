@@ -1,0 +1,70 @@
+// Frames of H5MD 1.1 files that other programs write, in the shapes the
+// specification (nongnu.org/h5md/h5md.html, "Time-dependent data") allows
+// and coolgas does not write: a scalar time step with an offset, a box that
+// varies in time as a vector of edges, a length unit that is reported.
+#include "common/trajectory/h5md_frame.h"
+
+#include <gtest/gtest.h>
+
+#include "common/error.h"
+#include "common/hdf5_file.h"
+#include "tests/support/run_command.h"
+
+namespace coolgas {
+namespace {
+
+// Three frames of four particles in group "gas"; frame f has positions 0.5 i + f
+// and box side 10 + f; time = 10 + 2.5 f through a scalar step with offset.
+std::string write_file(const std::string& name) {
+  const std::string path = test::scratch_dir(name) + "/other.h5";
+  h5::Handle f = h5::open_file(path, h5::Mode::kCreateTruncate);
+  for (const char* g : {"h5md", "particles/gas/position", "particles/gas/box/edges"}) h5::create_group(f.id(), g);
+  h5::Handle value = h5::create_series(f.id(), "particles/gas/position/value", h5::Type::kFloat64, {4, 3}, 4);
+  h5::Handle edges = h5::create_series(f.id(), "particles/gas/box/edges/value", h5::Type::kFloat64, {3}, 4);
+  for (int fr = 0; fr < 3; ++fr) {
+    double pos[12], box[3] = {10.0 + fr, 10.0 + fr, 10.0 + fr};
+    for (int i = 0; i < 12; ++i) pos[i] = 0.5 * i + fr;
+    h5::append_row(value.id(), h5::Type::kFloat64, pos);
+    h5::append_row(edges.id(), h5::Type::kFloat64, box);
+  }
+  h5::write_attr(value.id(), "unit", std::string("nm"));
+  h5::Handle space(H5Screate(H5S_SCALAR));
+  h5::Handle time(H5Dcreate2(f.id(), "particles/gas/position/time", H5T_IEEE_F64LE, space.id(), H5P_DEFAULT,
+                             H5P_DEFAULT, H5P_DEFAULT));
+  const double step = 2.5;
+  H5Dwrite(time.id(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, &step);
+  h5::write_attr(time.id(), "offset", 10.0);
+  return path;
+}
+
+TEST(H5mdFrame, AScalarTimeStepAndATimeDependentBoxAreRead) {
+  const std::string path = write_file("h5md_frame_scalar_time");
+  const H5mdFrame last = read_h5md_frame(path, std::nullopt);
+  EXPECT_EQ(last.group, "gas");
+  EXPECT_EQ(last.frames, 3u);
+  EXPECT_EQ(last.index, 2u);
+  EXPECT_EQ(last.time, 15.0);
+  EXPECT_EQ(last.L, 12.0);
+  EXPECT_EQ(last.length_unit, "nm");
+  EXPECT_TRUE(last.velocity.empty());
+  const H5mdFrame near = read_h5md_frame(path, 12.0);  // times 10, 12.5, 15
+  EXPECT_EQ(near.index, 1u);
+  EXPECT_EQ(near.time, 12.5);
+  EXPECT_EQ(near.L, 11.0);
+  ASSERT_EQ(near.position.size(), 12u);
+  for (int i = 0; i < 12; ++i) EXPECT_EQ(near.position[i], 0.5 * i + 1);
+}
+
+TEST(H5mdFrame, FilesThatAreNotH5mdAreRefusedNamingWhatIsMissing) {
+  const std::string path = test::scratch_dir("h5md_frame_bad") + "/bare.h5";
+  { h5::Handle f = h5::open_file(path, h5::Mode::kCreateTruncate); }
+  try {
+    read_h5md_frame(path, std::nullopt);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("not an H5MD file: no /h5md group"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace coolgas
