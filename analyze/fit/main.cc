@@ -27,7 +27,7 @@ int main(int argc, char** argv) {
     modes->add_flag("--local-slope", slope, "smoothed local slope");
     modes->add_flag("--haff", haff, "Haff-law fit");
     modes->require_option(1);
-    app.add_option("--window", window, "fit only rows with TMIN <= t <= TMAX, as TMIN:TMAX [time]; a side may be empty")
+    app.add_option("--t-window,--window", window, "fit only rows with TMIN <= t <= TMAX, as TMIN:TMAX [time]; a side may be empty")
         ->capture_default_str();
     app.add_option("--t-column", o.columns.t, "name of the time column")->capture_default_str();
     app.add_option("--e-column", o.columns.E, "name of the energy column")->capture_default_str();
@@ -37,6 +37,7 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_flag("--curve", o.curve, "power/haff: write rows t, E, E_fit over the window, results as '# key: value' lines");
     if (coolgas::parse_command_line(app, argc, argv)) return 0;
+    coolgas::note_old_spelling(argc, argv, "--window", "--t-window");
     o.mode = power ? coolgas::FitMode::kPowerLaw : haff ? coolgas::FitMode::kHaff : coolgas::FitMode::kLocalSlope;
     o.window = coolgas::parse_window(window, "--window");
     if (!err.empty()) o.columns.err = err;

@@ -26,7 +26,8 @@ class TableReaders : public ::testing::Test {
     dir = new std::string(test::scratch_dir("table_readers"));
     const std::string run = *dir + "/run.h5";
     const auto sim = run_command(test::simulate("--set system.N=500 --set system.phi=0.2 --set run.t_end=100 "
-                                                "--set system.equilibrate=0 -o " + run + " /dev/null"));
+                                                "--set system.equilibrate=0 --set collision.model=inelastic --set collision.r0=0.1 "
+                                                "--set collision.delta=1e-4 -o " + run + " /dev/null"));
     ASSERT_EQ(sim.exit_code, 0) << sim.err;
     for (const auto& [name, command] : {std::pair{"E", bin("coolgas-energy") + " " + run},
                                         std::pair{"nm", bin("coolgas-clusters") + " " + run},
