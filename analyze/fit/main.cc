@@ -27,8 +27,11 @@ int main(int argc, char** argv) {
     modes->add_flag("--local-slope", slope, "smoothed local slope");
     modes->add_flag("--haff", haff, "Haff-law fit");
     modes->require_option(1);
-    app.add_option("--t-window,--window", window, "fit only rows with TMIN <= t <= TMAX, as TMIN:TMAX [time]; a side may be empty")
-        ->capture_default_str();
+    auto* window_opt = app.add_option("--t-window,--window", window,
+                                      "fit only rows with TMIN <= t <= TMAX, as TMIN:TMAX [time]; a side may be empty.\n"
+                                      "--power without it: E from where it decays no faster than t^-3/2 (past Haff's\n"
+                                      "law) to the finite-size crossover t = 0.1 L^(5/2) (L from the table), other\n"
+                                      "columns over t > 0; stderr says which");
     app.add_option("--t-column", o.columns.t, "name of the time column")->capture_default_str();
     app.add_option("--e-column", o.columns.E, "name of the energy column")->capture_default_str();
     app.add_option("--err-column", err, "name of the column of standard errors of E (default: <E>_err if usable)");
@@ -39,7 +42,8 @@ int main(int argc, char** argv) {
     if (coolgas::parse_command_line(app, argc, argv)) return 0;
     coolgas::note_old_spelling(argc, argv, "--window", "--t-window");
     o.mode = power ? coolgas::FitMode::kPowerLaw : haff ? coolgas::FitMode::kHaff : coolgas::FitMode::kLocalSlope;
-    o.window = coolgas::parse_window(window, "--window");
+    o.window = coolgas::parse_window(window, "--t-window");
+    o.auto_window = window_opt->count() == 0;
     if (!err.empty()) o.columns.err = err;
     o.columns.weights = !no_weights;
     coolgas::write_fit_table(o, std::cout);
