@@ -4,7 +4,8 @@ documented example cannot rot. Usage: readme_commands.py SOURCE_DIR BIN_DIR SCRA
 Commands are taken from the Markdown code blocks: a fenced ```sh block is one
 script; each line of an indented block is one command. Each runs with /bin/sh
 in SCRATCH_DIR, where build/bin links to BIN_DIR, BIN_DIR is on PATH and
-GNUTERM=dumb (gnuplot without a display), and must exit 0. Small inputs stand
+GNUTERM=dumb (gnuplot without a display), pipelines links to the source's
+pipelines/, and must exit 0. Small inputs stand
 in where a command names files it does not make itself:
   runs/L<L>_s1.h5  tiny real runs (phi = 0.208, r0 = 0.1, delta = 1e-4, to
                    t = 1e5) of L = 12, 16 and, under the name L68, L = 20.
@@ -22,6 +23,7 @@ SKIPPED = {
     "make -C pipelines/demo -j2": "the demo pipeline: about 30 minutes (the recipes run at SCALE=tiny in tests/cli/pipeline_test.cc)",
     "make -C pipelines/demo reanalyze": "needs an archive of demo runs; tests/cli/pipeline_test.cc runs reanalyze from the tiny runs",
     "make -C pipelines/paper": "the paper scale: core-years on a cluster (srun)",
+    "sbatch pipelines/cluster/paper.sbatch": "needs a Slurm cluster (its shell is checked with sh -n below)",
     "make -C pipelines/accuracy": "minutes of simulation (QUICK=1: a minute); its recipes are plain coolgas commands tested elsewhere",
 }
 
@@ -76,6 +78,9 @@ def main():
     link = os.path.join(scratch, "build", "bin")
     if not os.path.exists(link):
         os.symlink(bin_dir, link)
+    if not os.path.exists(os.path.join(scratch, "pipelines")):
+        os.symlink(os.path.join(source, "pipelines"), os.path.join(scratch, "pipelines"))
+    subprocess.run(["sh", "-n", os.path.join(source, "pipelines/cluster/paper.sbatch")], check=True)
     make_runs(bin_dir, scratch)
     env = dict(os.environ, PATH=bin_dir + os.pathsep + os.environ["PATH"], GNUTERM="dumb")
     failed = ran = 0
