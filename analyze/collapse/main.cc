@@ -34,8 +34,8 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     auto* window_opt = app.add_option("--t-window", t_window,
                                       "use only rows with TMIN <= t <= TMAX [1/omega0], as TMIN:TMAX. --optimize\n"
-                                      "without it: t from where every table decays no faster than t^-3/2 (past\n"
-                                      "Haff's law); stderr says which");
+                                      "without it: t from where every table is past Haff's law (falls as t^-1, or\n"
+                                      "back to t^-3/2 if it fell faster); stderr says which");
     app.add_option("--eta-window", eta_window, "fit f(x) ~ x^-eta over XMIN <= x <= XMAX, as XMIN:XMAX");
     app.add_option("--t-column", o.columns.t, "name of the time column")->capture_default_str();
     app.add_option("--e-column", o.columns.E, "name of the energy column")->capture_default_str();
