@@ -106,6 +106,21 @@ TEST_F(TimeConventions, VelocitySeriesKeepsADumpWhoseTailCannotBeFitted) {
   EXPECT_EQ(rows, 2);
 }
 
+// The canonical pipe without a window fits the scaling window's rule
+// (analyze/curves/scaling_window.h) and says so: it ends at the finite-size
+// crossover 0.1 L^(5/2) = 121.6 of this box (L = 17.14).
+TEST_F(TimeConventions, TheCanonicalPipeFitsTheScalingWindowWithANote) {
+  const auto r = run_command(bin("coolgas-energy") + " " + run() + " | " + bin("coolgas-fit") + " --power -");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("no --t-window: fitting t = "), std::string::npos) << r.err;
+  std::istringstream in(r.out);
+  const Table fit = read_table(in, "stdout");
+  EXPECT_GT(fit.column_values("t_min")[0], 1);  // past the flat start
+  EXPECT_LE(fit.column_values("t_max")[0], 0.1 * std::pow(std::cbrt(2000 * M_PI / 6 / 0.208), 2.5));
+  EXPECT_GT(fit.column_values("theta")[0], 1);  // a cooling gas, not the flat start (theta near 0)
+  EXPECT_LT(fit.column_values("theta")[0], 2);
+}
+
 TEST_F(TimeConventions, OldSpellingsStillWorkWithANote) {
   const std::string energy = bin("coolgas-energy") + " " + run() + " | ";
   const auto old_spelling = run_command(energy + bin("coolgas-fit") + " --power --window 10:1000 -");
