@@ -14,7 +14,7 @@ CMAKE_FLAGS = -DCMAKE_BUILD_TYPE=Release $(if $(filter 1,$(NATIVE)),-DCOOLGAS_NA
 DEBIAN_PACKAGES := cmake make g++ pkg-config git \
   libhdf5-dev hdf5-tools libfftw3-dev libgsl-dev libeigen3-dev \
   libgtest-dev libcli11-dev libtoml11-dev \
-  gnuplot-nox python3 python3-h5py python3-mdanalysis python3-ase
+  gnuplot-nox python3 python3-h5py python3-mdanalysis python3-ase python3-pandas
 
 PREFIX ?= /usr/local
 

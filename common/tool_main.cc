@@ -10,8 +10,11 @@
 #include <iostream>
 #include <new>
 #include <streambuf>
+#include <string>
+#include <vector>
 
 #include "common/error.h"
+#include "common/version.h"
 
 namespace coolgas {
 
@@ -93,7 +96,19 @@ int run_body(const std::string& tool, const std::function<int()>& body) {
 
 }  // namespace
 
+std::vector<std::string>& old_spelling_notes() {
+  static std::vector<std::string> notes;
+  return notes;
+}
+
+// The running tool's name, for notes and the usage line (set by run_tool).
+std::string& tool_name() {
+  static std::string name = "coolgas";
+  return name;
+}
+
 int run_tool(const std::string& tool, const std::function<int()>& body) {
+  tool_name() = tool;
   std::signal(SIGXFSZ, SIG_IGN);
   std::signal(SIGPIPE, SIG_DFL);
   // Never destroyed: std::cout is flushed at exit after function-local
@@ -108,10 +123,15 @@ int run_tool(const std::string& tool, const std::function<int()>& body) {
     report(tool, "error", std::string("cannot write stdout: ") + std::strerror(err));
     if (code == kExitOk) code = kExitFailure;
   }
+  // Old spellings are noted only when the run worked: an error stays one line.
+  if (code == kExitOk)
+    for (const auto& text : old_spelling_notes()) report(tool, "note", text);
   return code;
 }
 
 bool parse_command_line(CLI::App& app, int argc, char** argv) {
+  app.name(tool_name());
+  app.set_version_flag("--version", tool_name() + " " + program_version(), "print the program version and commit");
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
@@ -122,5 +142,18 @@ bool parse_command_line(CLI::App& app, int argc, char** argv) {
   }
   return false;
 }
+
+void note_old_spelling(int argc, char** argv, const std::string& old_name, const std::string& new_name) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == old_name || a.rfind(old_name + "=", 0) == 0) {
+      old_spelling_notes().push_back(old_name + " is the old spelling of " + new_name +
+                                     " and goes away in the next version");
+      return;
+    }
+  }
+}
+
+void note(const std::string& text) { report(tool_name(), "note", text); }
 
 }  // namespace coolgas

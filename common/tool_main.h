@@ -26,9 +26,19 @@ namespace coolgas {
 //   kMaxMessageChars characters (common/error.h).
 int run_tool(const std::string& tool, const std::function<int()>& body);
 
-// Parses the command line with CLI11. Returns true when --help was asked for
-// (the help is printed; the tool then exits 0); a bad option or value
-// becomes an InputError (one line, exit code 2).
+// Parses the command line with CLI11. Returns true when --help or --version
+// was asked for (printed; the tool then exits 0); a bad option or value
+// becomes an InputError (one line, exit code 2). Every tool gets --version
+// ("<tool> <version> (<commit>)"), and its usage line names the tool bare.
 bool parse_command_line(CLI::App& app, int argc, char** argv);
+
+// An old option spelling that still works for one version: if argv uses
+// `old_name` (the option must accept both names), a note on stderr at the
+// end of a successful run says to use `new_name`. Call after parse_command_line.
+void note_old_spelling(int argc, char** argv, const std::string& old_name, const std::string& new_name);
+
+// "<tool>: note: <text>" on stderr: something the user should know that is
+// not an error (a time snapped to a dump, a fit left out).
+void note(const std::string& text);
 
 }  // namespace coolgas

@@ -20,11 +20,13 @@ std::string format_number(double x) {
 TsvWriter::TsvWriter(std::ostream& out, const std::string& tool, const Provenance& provenance,
                      const std::vector<std::string>& columns)
     : out_(out), ncol_(columns.size()) {
+  // The column line comes first and bare, so that readers which take the
+  // first line as names (numpy.genfromtxt(names=True), gnuplot's column
+  // names) and those that skip '#' lines first (pandas comment='#') agree.
+  for (std::size_t i = 0; i < columns.size(); ++i) out_ << (i ? "\t" : "") << columns[i];
+  out_ << "\n# format: coolgas-table " << kTableFormat << "\n";
   out_ << "# tool: " << tool << "\n# version: " << program_version() << "\n";
   for (const auto& [k, v] : provenance) out_ << "# " << k << ": " << v << "\n";
-  out_ << "#";
-  for (std::size_t i = 0; i < columns.size(); ++i) out_ << (i ? "\t" : " ") << columns[i];
-  out_ << "\n";
 }
 
 void TsvWriter::row(const std::vector<double>& values) {
@@ -91,8 +93,8 @@ std::string trim(std::string s) {
 }
 
 // Header comments before the first data row: "key: value" lines are
-// provenance; the first other line names the columns; later ones (such as a
-// block's "# t = 10") are ignored.
+// provenance; in a version 1 table the first other comment names the
+// columns; later ones (such as a block's "# t = 10") are ignored.
 void read_header_line(Table& t, const std::string& text) {
   const auto colon = text.find(':');
   if (colon != std::string::npos) {
@@ -100,6 +102,17 @@ void read_header_line(Table& t, const std::string& text) {
   } else if (t.columns.empty()) {
     t.columns = split_fields(text);
   }
+}
+
+// A column line that is a number is a table without one (the data came first).
+void read_column_line(Table& t, const std::vector<std::string>& names, const std::string& where) {
+  double x = 0;
+  const std::string& first = names.front();
+  const auto res = std::from_chars(first.data(), first.data() + first.size(), x);
+  if (res.ec == std::errc() && res.ptr == first.data() + first.size())
+    throw InputError(where + ": no column line (expected tab-separated column names before the data, got '" +
+                     first + "')");
+  t.columns = names;
 }
 
 }  // namespace
@@ -121,11 +134,14 @@ Table read_table(std::istream& in, const std::string& source) {
       if (t.rows.empty()) read_header_line(t, line.substr(1));
       continue;
     }
-    if (t.columns.empty()) throw InputError(source + ": no header (expected '# column names' before data)");
-    if (!t.rows.empty() && blank_run > 0) ++block;
-    blank_run = 0;
     const std::string where = source + ":" + std::to_string(lineno);
     auto fields = split_fields(line);
+    if (t.columns.empty()) {  // format 2: the first line that is not a comment names the columns
+      read_column_line(t, fields, where);
+      continue;
+    }
+    if (!t.rows.empty() && blank_run > 0) ++block;
+    blank_run = 0;
     if (fields.size() != t.columns.size())
       throw InputError(where + ": " + std::to_string(fields.size()) + " fields, expected " +
                        std::to_string(t.columns.size()) + " (one per column)");

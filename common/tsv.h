@@ -1,14 +1,16 @@
 // TSV tables: the format every analysis tool writes to stdout and reads from
 // a path or "-" (see data-schema/tsv-tables.md).
 //
-//   # tool: coolgas-energy            <- provenance: "# key: value" lines
+//   t<TAB>E<TAB>E_over_E0             <- the column names, the first line, bare
+//   # format: coolgas-table 2         <- provenance: "# key: value" lines
+//   # tool: coolgas-energy
 //   # version: 0.1.0 (abc123)
 //   # input: run.h5
-//   # t<TAB>E<TAB>E_over_E0           <- first comment without ':': column names
 //   0.01<TAB>1.5<TAB>1
 //
 // Blank lines separate blocks (gnuplot's "index"); a comment line after the
-// header is ignored by the reader. Numbers are written in the shortest form
+// first row is ignored by the reader. The reader also takes format 1 tables,
+// whose column line was the first comment without ':'. Numbers are written in the shortest form
 // that reads back to the same double.
 #pragma once
 #include <cstddef>
@@ -19,6 +21,9 @@
 #include <vector>
 
 namespace coolgas {
+
+// The table format version written (data-schema/tsv-tables.md).
+inline constexpr int kTableFormat = 2;
 
 using Provenance = std::vector<std::pair<std::string, std::string>>;
 

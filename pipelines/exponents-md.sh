@@ -15,5 +15,5 @@ echo "|---|---|---|---|---|---|"
 awk -F '\t' '
   function num(v) { return v ~ /^[-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?$/ }
   function show(v, e) { if (!num(v)) return v; s = sprintf("%.3f", v); if (num(e) && e > 0) s = s " ± " sprintf("%.3f", e); return s }
-  /^#/ || NF == 0 { next }
+  FNR == 1 || /^#/ || NF == 0 { next }
   { printf "| %s | %s | %s | %s | %s | %s |\n", $1, $2, show($3, $4), show($5, $6), $7, $8 }' "$tsv"

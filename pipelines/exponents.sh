@@ -19,7 +19,9 @@ value() { sh "$here/tsv-value.sh" "$@"; }
 # Column $2 of table $1 in the row whose t is nearest $3.
 at_time() {
   awk -F '\t' -v want="$2" -v t="$3" '
-    /^#/ { line = substr($0, 3); if (index(line, ":") == 0 && !header) { n = split(line, names, "\t"); for (i = 1; i <= n; i++) { if (names[i] == want) col = i; if (names[i] == "t") tc = i } header = 1 } next }
+    function names(line) { n = split(line, name, "\t"); for (i = 1; i <= n; i++) { if (name[i] == want) col = i; if (name[i] == "t") tc = i } header = 1 }
+    /^#/ { line = substr($0, 3); if (index(line, ":") == 0 && !header) names(line); next }
+    NF > 0 && !header { names($0); next }
     NF > 0 { d = $tc - t; if (d < 0) d = -d; if (best == "" || d < best) { best = d; v = $col } }
     END { print v }' "$1"
 }
@@ -34,7 +36,7 @@ before_crossover() {  # t L what
 # Local slope -d ln E / d ln t of an E(t) table over the quarter decade from t.
 local_slope() {  # table t
   awk -F '\t' -v t0="$2" '
-    /^#/ || NF == 0 || $1 <= 0 { next }
+    FNR == 1 || /^#/ || NF == 0 || $1 <= 0 { next }
     $1 >= t0 && !a { ta = $1; ea = $2; a = 1 }
     $1 >= t0 * 1.778 && !b { tb = $1; eb = $2; b = 1 }
     END { if (a && b) printf "%.3g", -log(eb / ea) / log(tb / ta); else print "nan" }' "$1"
@@ -59,16 +61,17 @@ row() {
 }
 
 collapse=$tables/collapse.tsv
+printf 'quantity\tfigure\tmeasured\terror\tpaper\tpaper_error\tdeviation\tregime\n'
+printf '# format: coolgas-table 2\n'
 printf '# tool: pipelines/exponents.sh\n'
 printf '# version: %s\n' "$(value "$collapse" version '#')"
 # The program that made the runs (it may be older than the analysis, e.g. on reanalysis).
 printf '# simulator_version: %s\n' "$(sed -n 's/^# simulator_version: //p' "$tables"/energy_*.tsv | sort -u | paste -sd ';' -)"
 printf '# date: %s\n' "$(date -u +%Y-%m-%d)"
 printf '# late_time: %s\n' "$late"
-printf '# quantity\tfigure\tmeasured\terror\tpaper\tpaper_error\tdeviation\tregime\n'
 
 # Fig. 1: the collapse spans both sides of the crossover x ~ 1 when it reaches x < 0.1 and x > 1.
-xr=$(awk -F '\t' '!/^#/ && NF > 0 { if (lo == "" || $1 < lo) lo = $1; if ($1 > hi) hi = $1 } END { printf "%.3g %.3g", lo, hi }' "$collapse")
+xr=$(awk -F '\t' 'FNR > 1 && !/^#/ && NF > 0 { if (lo == "" || $1 < lo) lo = $1; if ($1 > hi) hi = $1 } END { printf "%.3g %.3g", lo, hi }' "$collapse")
 xlo=${xr% *} xhi=${xr#* }
 if awk "BEGIN { exit !($xlo < 0.1 && $xhi > 1) }"; then reg=yes; else reg="no: the scaled data span x = $xlo to $xhi, not both x < 0.1 and x > 1"; fi
 row "theta, collapse E L^(z theta) vs t/L^z" 1 "$(value "$collapse" theta '#')" "$(value "$collapse" theta_err '#')" 1.2 0 "$reg"

@@ -66,7 +66,7 @@ void run_clusters(const ClustersOptions& opt, std::ostream& final_out) {
   MassHistogram hist(opt.bins_per_decade, traj.particles());
   ClusterLabeller labeller;
   Frame frame;
-  for (std::size_t dump : traj.dumps_nearest(opt.times)) {
+  for (std::size_t dump : traj.dumps_nearest(opt.times, opt.exact_time)) {
     traj.read(dump, frame);
     hist.clear();
     if (traj.aggregates()) {

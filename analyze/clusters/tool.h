@@ -14,6 +14,7 @@ struct ClustersOptions {
   bool series = false;        // one row per dump instead of N(m) blocks
   bool scaled = false;        // N(m) blocks with only t, x = m/M_avg, y = N M_avg^2 (paper Fig. 3)
   std::vector<double> times;  // dumps nearest these times; empty = all dumps
+  bool exact_time = false;  // --exact-time: refuse a time no dump has
 };
 
 // Writes the table for opt to out. InputError on bad input.

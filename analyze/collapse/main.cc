@@ -32,14 +32,17 @@ int main(int argc, char** argv) {
     app.add_option("--min-overlap", o.search.min_overlap_decades,
                    "pairs of curves overlapping by less than this many decades of x are penalised")
         ->capture_default_str();
-    app.add_option("--t-window", t_window, "use only rows with TMIN <= t <= TMAX [1/omega0], as TMIN:TMAX")
-        ->capture_default_str();
+    auto* window_opt = app.add_option("--t-window", t_window,
+                                      "use only rows with TMIN <= t <= TMAX [1/omega0], as TMIN:TMAX. --optimize\n"
+                                      "without it: t from where every table is past Haff's law (falls as t^-1, or\n"
+                                      "back to t^-3/2 if it fell faster); stderr says which");
     app.add_option("--eta-window", eta_window, "fit f(x) ~ x^-eta over XMIN <= x <= XMAX, as XMIN:XMAX");
     app.add_option("--t-column", o.columns.t, "name of the time column")->capture_default_str();
     app.add_option("--e-column", o.columns.E, "name of the energy column")->capture_default_str();
     app.add_flag("--summary", o.summary, "write one row: theta theta_err z z_err quality [eta eta_err]");
     if (coolgas::parse_command_line(app, argc, argv)) return 0;
     o.t_window = coolgas::parse_window(t_window, "--t-window");
+    o.auto_window = o.optimize && window_opt->count() == 0;
     if (!eta_window.empty()) o.eta_window = coolgas::parse_window(eta_window, "--eta-window");
     coolgas::write_collapse_table(o, std::cout);
     return 0;

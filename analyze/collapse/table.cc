@@ -6,7 +6,9 @@
 
 #include "analyze/collapse/quality.h"
 #include "analyze/collapse/tail.h"
+#include "analyze/curves/scaling_window.h"
 #include "common/error.h"
+#include "common/tool_main.h"
 #include "common/tsv.h"
 
 namespace coolgas {
@@ -15,10 +17,31 @@ namespace {
 constexpr const char* kTool = "coolgas-collapse";
 
 // The tables grouped by L, in increasing L: a deterministic block order for gnuplot's index.
-std::vector<SizeEnsemble> load_sizes(const CollapseOptions& o) {
+// The collapse spans the finite-size crossover on purpose, so the default
+// window (analyze/curves/scaling_window.h) has only its start: the latest t
+// at which a table leaves Haff's law.
+Window default_window(const std::vector<Table>& tables, const FitColumns& columns) {
+  Window w;
+  for (const auto& table : tables) {
+    const auto start = past_haff(table, columns, finite_size_crossover(table));
+    if (!start)
+      throw InputError(table.source + ": --optimize needs --t-window TMIN: here: " + columns.E +
+                       "(t) does not leave Haff's law (t^-1, then no steeper than t^-3/2) before the finite-size "
+                       "crossover 0.1 L^(5/2)");
+    w.lo = std::max(w.lo.value_or(0.0), *start);
+  }
+  note("--optimize without --t-window: collapsing t >= " + format_number(*w.lo) +
+       " (every table past Haff's law there: t^-1 to t^-3/2)");
+  return w;
+}
+
+std::vector<SizeEnsemble> load_sizes(CollapseOptions& o) {
   if (o.inputs.empty()) throw InputError("no E(t) tables given (usage: coolgas-collapse TABLE...)");
+  std::vector<Table> tables;
+  for (const auto& path : o.inputs) tables.push_back(read_table(path));
+  if (o.auto_window) o.t_window = default_window(tables, o.columns);
   std::vector<ScalingCurve> curves;
-  for (const auto& path : o.inputs) curves.push_back(make_scaling_curve(read_table(path), o.columns, o.t_window));
+  for (const auto& table : tables) curves.push_back(make_scaling_curve(table, o.columns, o.t_window));
   return group_by_size(curves);
 }
 
@@ -84,7 +107,8 @@ void write_summary(const Results& r, const Provenance& p, std::ostream& out) {
 
 }  // namespace
 
-void write_collapse_table(const CollapseOptions& o, std::ostream& out) {
+void write_collapse_table(const CollapseOptions& options, std::ostream& out) {
+  CollapseOptions o = options;  // the default window, once chosen, goes into the provenance
   if (!(o.search.min_overlap_decades >= 0))
     throw InputError("--min-overlap " + format_number(o.search.min_overlap_decades) + " is not allowed; it must be >= 0");
   const auto sizes = load_sizes(o);

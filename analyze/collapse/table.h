@@ -18,6 +18,7 @@ struct CollapseOptions {
   bool optimize = false;
   CollapseSearch search;
   Window t_window;                  // rows used, in unscaled t
+  bool auto_window = false;         // --optimize without --t-window: from where every table is past Haff's law
   std::optional<Window> eta_window; // fit f(x) ~ x^-eta over this x window
   bool summary = false;             // one row of results instead of the curves
 };

@@ -27,8 +27,11 @@ int main(int argc, char** argv) {
     modes->add_flag("--local-slope", slope, "smoothed local slope");
     modes->add_flag("--haff", haff, "Haff-law fit");
     modes->require_option(1);
-    app.add_option("--window", window, "fit only rows with TMIN <= t <= TMAX, as TMIN:TMAX [time]; a side may be empty")
-        ->capture_default_str();
+    auto* window_opt = app.add_option("--t-window,--window", window,
+                                      "fit only rows with TMIN <= t <= TMAX, as TMIN:TMAX [time]; a side may be empty.\n"
+                                      "--power without it: E past Haff's law (from where it falls as t^-1, or back to\n"
+                                      "t^-3/2 if it fell faster) to the finite-size crossover t = 0.1 L^(5/2) (L from\n"
+                                      "the table); other columns: t > 0; stderr says which");
     app.add_option("--t-column", o.columns.t, "name of the time column")->capture_default_str();
     app.add_option("--e-column", o.columns.E, "name of the energy column")->capture_default_str();
     app.add_option("--err-column", err, "name of the column of standard errors of E (default: <E>_err if usable)");
@@ -37,8 +40,10 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_flag("--curve", o.curve, "power/haff: write rows t, E, E_fit over the window, results as '# key: value' lines");
     if (coolgas::parse_command_line(app, argc, argv)) return 0;
+    coolgas::note_old_spelling(argc, argv, "--window", "--t-window");
     o.mode = power ? coolgas::FitMode::kPowerLaw : haff ? coolgas::FitMode::kHaff : coolgas::FitMode::kLocalSlope;
-    o.window = coolgas::parse_window(window, "--window");
+    o.window = coolgas::parse_window(window, "--t-window");
+    o.auto_window = window_opt->count() == 0;
     if (!err.empty()) o.columns.err = err;
     o.columns.weights = !no_weights;
     coolgas::write_fit_table(o, std::cout);

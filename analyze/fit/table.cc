@@ -1,5 +1,6 @@
 #include "analyze/fit/table.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <ostream>
@@ -7,6 +8,8 @@
 #include "analyze/fit/haff.h"
 #include "analyze/fit/local_slope.h"
 #include "analyze/curves/power_law.h"
+#include "analyze/curves/scaling_window.h"
+#include "common/tool_main.h"
 #include "common/tsv.h"
 
 namespace coolgas {
@@ -65,11 +68,28 @@ void write_local_slope(const Table& table, const FitOptions& o, std::ostream& ou
   FitColumns unweighted = o.columns;
   unweighted.weights = false;
   const auto slopes = local_slope(select_fit_data(table, unweighted, o.window, 3), o.smooth_decades);
-  Provenance p = fit_provenance(table, FitOptions{o.input, o.mode, unweighted, o.window, o.smooth_decades, false},
+  Provenance p = fit_provenance(table, FitOptions{o.input, o.mode, unweighted, o.window, false, o.smooth_decades, false},
                                 "local-slope");
   p.emplace_back("smooth_decades", format_number(o.smooth_decades));
   TsvWriter w(out, kTool, p, {o.columns.t, "slope"});
   for (const auto& s : slopes) w.row({s.t, s.slope});
+}
+
+// Without --t-window a power law of the energy is fitted over the scaling
+// window's rule; of any other column (M_max, L_t, N(m)) over t > 0.
+FitOptions with_default_window(const Table& table, FitOptions o) {
+  if (o.columns.E == "E" || o.columns.E == "E_over_E0") {
+    const ChosenWindow c = scaling_window(table, o.columns);
+    note(c.rule);
+    o.window = c.window;
+    return o;
+  }
+  const auto t = table.column_values(o.columns.t);
+  if (std::any_of(t.begin(), t.end(), [](double x) { return !(x > 0); })) {
+    o.window = Window{std::nextafter(0.0, 1.0), std::nullopt};
+    note("no --t-window: fitting " + o.columns.t + " > 0 (a power law has no point at " + o.columns.t + " <= 0)");
+  }
+  return o;
 }
 
 }  // namespace
@@ -77,7 +97,9 @@ void write_local_slope(const Table& table, const FitOptions& o, std::ostream& ou
 void write_fit_table(const FitOptions& options, std::ostream& out) {
   const Table table = read_table(options.input);
   switch (options.mode) {
-    case FitMode::kPowerLaw: write_power_law(table, options, out); break;
+    case FitMode::kPowerLaw:
+      write_power_law(table, options.auto_window ? with_default_window(table, options) : options, out);
+      break;
     case FitMode::kHaff: write_haff(table, options, out); break;
     case FitMode::kLocalSlope: write_local_slope(table, options, out); break;
   }

@@ -15,6 +15,7 @@ struct FitOptions {
   FitMode mode = FitMode::kPowerLaw;
   FitColumns columns;
   Window window;
+  bool auto_window = false;      // no --t-window given: --power picks its window (analyze/curves/scaling_window.h)
   double smooth_decades = 0.25;  // local slope: half width of the smoothing window
   bool curve = false;            // power/Haff: write t, E, E_fit rows instead of one result row
 };

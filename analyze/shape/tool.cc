@@ -96,7 +96,7 @@ void run_shape(const ShapeOptions& opt, std::ostream& final_out) {
   TsvWriter out(os, "coolgas-shape", provenance(traj, opt, fit), columns(opt.table));
   ClusterShapes shapes;
   Frame frame;
-  for (std::size_t dump : traj.dumps_nearest(opt.times)) {
+  for (std::size_t dump : traj.dumps_nearest(opt.times, opt.exact_time)) {
     traj.read(dump, frame);
     const std::vector<ClusterShape> s =
         traj.aggregates() ? aggregate_shapes(frame.mass) : shapes.of_particles(cluster_grid_of_dump(frame.L, traj.path(), frame.dump), frame.position);

@@ -18,6 +18,7 @@ struct ShapeOptions {
   std::string fit_mass = "10:"; // mass window of the d_f fit, "lo:hi" [particles]
   std::int64_t min_mass = 10;   // --clusters: smallest cluster listed [particles]
   std::vector<double> times;    // dumps nearest these times; empty = all dumps
+  bool exact_time = false;  // --exact-time: refuse a time no dump has
 };
 
 void run_shape(const ShapeOptions& opt, std::ostream& out);

@@ -58,13 +58,14 @@ void define(CLI::App& app, Raw& r) {
   app.add_option("--convention", r.convention, "time convention: half | paper")->capture_default_str();
   app.add_option("--initial", o.initial, "mono, or a TSV (path or -) with columns m, N [, dm]")
       ->capture_default_str();
-  app.add_option("--times", o.times, "write N(m,t) at these times (comma-separated)")->delimiter(',');
+  app.add_option("--time,--times", o.times, "write N(m,t) at these times (repeatable, or comma-separated)")
+      ->delimiter(',');
   r.t_end_opt = app.add_option("--t-end", r.t_end, "end time");
   r.until_opt = app.add_option("--until-mean-mass", r.until, "stop when the mean mass M1/M0 reaches this value");
   app.add_flag("--series", o.series, "write the series t M0 M1 M2 M_avg M_max largest_fraction instead");
   app.add_option("--series-file", o.series_file, "also write the series to this file");
   app.add_option("--series-t-min", o.series_t_min, "first non-zero series time")->capture_default_str();
-  app.add_option("--series-per-decade", o.series_per_decade, "series rows per decade of time")
+  app.add_option("--per-decade,--series-per-decade", o.series_per_decade, "series rows per decade of time")
       ->capture_default_str();
   app.add_option("--bins-per-decade", o.bins_per_decade, "logarithmic mass bins per decade")->capture_default_str();
   app.add_option("--volume", o.volume, "system volume V for M_max (V particles at c_1(0) = 1)")
@@ -101,6 +102,8 @@ int smoluchowski_main(int argc, char** argv, std::ostream& out, std::ostream& er
   Raw r;
   define(app, r);
   if (parse_command_line(app, argc, argv)) return kExitOk;
+  note_old_spelling(argc, argv, "--times", "--time");
+  note_old_spelling(argc, argv, "--series-per-decade", "--per-decade");
   if (r.accuracy) {
     write_accuracy_table(out, r.accuracy_quick ? AccuracyScope::Quick : AccuracyScope::Full);
     return kExitOk;

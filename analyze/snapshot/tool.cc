@@ -48,7 +48,7 @@ void run_snapshot(const SnapshotToolOptions& o, std::ostream& os) {
   const PictureFormat format = picture_format(o.output);
   Trajectory traj(o.input, kPosition);
   Frame frame;
-  traj.read(traj.nearest_dump(o.time), frame);
+  traj.read(traj.dump_at(o.time, o.exact_time), frame);
   const SnapshotScene scene = traj.aggregates() ? make_aggregate_scene(frame.L, frame.position, frame.mass, frame.id, o.scene)
                                                 : make_scene(cluster_grid(o, frame), frame.position, o.scene);
   const PlotOptions plot{.title = title(o, frame),

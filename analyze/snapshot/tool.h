@@ -13,6 +13,7 @@ namespace coolgas {
 struct SnapshotToolOptions {
   std::string input;
   double time = 0;  // the dump nearest this time is drawn
+  bool exact_time = false;  // --exact-time: refuse a time no dump has
   std::string output;
   SnapshotOptions scene;
   int size_px = 900;

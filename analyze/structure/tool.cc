@@ -117,7 +117,7 @@ void run_structure(const StructureOptions& opt, std::ostream& final_out) {
   check(opt);
   const bool velocity = opt.table != StructureTable::kSpectrum;
   Trajectory traj(opt.input, velocity ? (kPosition | kVelocity) : kPosition);
-  const std::vector<std::size_t> dumps = traj.dumps_nearest(opt.times);
+  const std::vector<std::size_t> dumps = traj.dumps_nearest(opt.times, opt.exact_time);
   if (dumps.empty()) throw InputError(opt.input + ": the trajectory holds no dumps");
   Frame frame;
   traj.read(dumps.front(), frame);

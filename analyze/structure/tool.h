@@ -17,6 +17,7 @@ struct StructureOptions {
   double peak_fraction = 0.1;        // the cut of the low-k peak (growing_length.h)
   int direct_shells = 1;             // shells checked against the exact sum over particles (0: none)
   std::vector<double> times;         // dumps nearest these times; empty = all dumps
+  bool exact_time = false;  // --exact-time: refuse a time no dump has
 };
 
 // Writes the table for opt to out. InputError on bad input; nothing is

@@ -22,7 +22,8 @@ int main(int argc, char** argv) {
         "  default   one block per dump: t [1/omega0], y, Phi, Phi_err (Poisson), minus_ln_Phi = -ln Phi;\n"
         "            empty bins omitted; each block starts '# t = ...; v_rms = ...; kappa = ...; beta = ...'\n"
         "  --tail    one block per dump: the fitted points: t, y, minus_ln_Phi, minus_ln_Phi_err, fit = c y^beta\n"
-        "  --series  one row per dump: t, v_rms, kappa, kappa_err, beta, beta_err, tail_points"};
+        "  --series  one row per dump: t, v_rms, kappa, kappa_err, beta, beta_err, tail_points (beta and\n"
+        "            beta_err nan, with a note on stderr, in a dump whose tail has too few bins to fit)"};
     app.add_option("trajectory", o.input, "trajectory file (H5MD, written by coolgas-simulate)")->required();
     auto* tail_flag = app.add_flag("--tail", tail, "write the tail points and the fit instead of Phi");
     app.add_flag("--series", series, "one row per dump: v_rms, kappa, beta")->excludes(tail_flag);
@@ -31,7 +32,11 @@ int main(int argc, char** argv) {
     app.add_option("--tail-from", o.tail_from, "fit beta over y >= this [dimensionless]")->capture_default_str();
     app.add_option("--min-count", o.min_count, "fit only bins with at least this many samples (+y and -y)")
         ->capture_default_str();
-    app.add_option("--time", o.times, "analyse only the dump nearest this time [1/omega0] (repeatable)");
+    app.add_option("--time", o.times,
+                   "analyse only the dump nearest this time [1/omega0] (repeatable, or a comma-separated list;\n"
+                   "a time no dump has is snapped to the nearest, with a note on stderr)")
+        ->delimiter(',');
+    app.add_flag("--exact-time", o.exact_time, "refuse a --time that no dump has instead of snapping it");
     if (coolgas::parse_command_line(app, argc, argv)) return 0;
     o.table = tail     ? coolgas::VelocityTable::kTail
               : series ? coolgas::VelocityTable::kSeries

@@ -8,6 +8,7 @@
 #include "analyze/velocity/distribution.h"
 #include "analyze/velocity/tail.h"
 #include "common/error.h"
+#include "common/tool_main.h"
 #include "common/tsv.h"
 
 namespace coolgas {
@@ -81,10 +82,14 @@ void write_tail(TsvWriter& out, double t, const std::vector<TailPoint>& pts, con
   }
 }
 
+std::string no_tail_text(const Trajectory& traj, const Frame& f, const VelocityOptions& o, std::size_t points) {
+  return traj.path() + ": dump at t = " + format_number(f.time) + ": only " + std::to_string(points) +
+         " tail bins with y >= " + format_number(o.tail_from) + " and >= " + format_number(o.min_count) +
+         " samples (3 needed to fit beta)";
+}
+
 [[noreturn]] void no_tail(const Trajectory& traj, const Frame& f, const VelocityOptions& o, std::size_t points) {
-  throw InputError(traj.path() + ": dump at t = " + format_number(f.time) + ": only " + std::to_string(points) +
-                   " tail bins with y >= " + format_number(o.tail_from) + " and >= " + format_number(o.min_count) +
-                   " samples (3 needed to fit beta); lower --tail-from or --min-count, or use wider bins");
+  throw InputError(no_tail_text(traj, f, o, points) + "; lower --tail-from or --min-count, or use wider bins");
 }
 
 }  // namespace
@@ -98,13 +103,13 @@ void run_velocity(const VelocityOptions& opt, std::ostream& final_out) {
   Trajectory traj(opt.input, kVelocity);
   TsvWriter out(os, "coolgas-velocity", provenance(traj, opt), columns(opt.table));
   Frame frame;
-  for (std::size_t dump : traj.dumps_nearest(opt.times)) {
+  for (std::size_t dump : traj.dumps_nearest(opt.times, opt.exact_time)) {
     traj.read(dump, frame);
     const SpeedMoments m = speed_moments(frame.velocity);
     hist.fill(frame.velocity, m.v_rms);
     const auto pts = tail_points(hist, opt.tail_from, opt.min_count);
     const auto fit = fit_tail(pts);
-    if (opt.table != VelocityTable::kPhi && !fit) no_tail(traj, frame, opt, pts.size());
+    if (opt.table == VelocityTable::kTail && !fit) no_tail(traj, frame, opt, pts.size());
     switch (opt.table) {
       case VelocityTable::kPhi:
         out.block(summary(frame.time, m, fit, opt.tail_from));
@@ -115,7 +120,10 @@ void run_velocity(const VelocityOptions& opt, std::ostream& final_out) {
         write_tail(out, frame.time, pts, *fit);
         break;
       case VelocityTable::kSeries:
-        out.row({frame.time, m.v_rms, m.kappa, m.kappa_err, fit->beta, fit->beta_err, double(fit->points)});
+        // v_rms and kappa need no tail: a dump whose tail is too thin keeps its row, beta NaN.
+        if (!fit) note(no_tail_text(traj, frame, opt, pts.size()) + "; beta is nan in that row");
+        out.row({frame.time, m.v_rms, m.kappa, m.kappa_err, fit ? fit->beta : NAN, fit ? fit->beta_err : NAN,
+                 double(fit ? fit->points : pts.size())});
         break;
     }
   }

@@ -22,6 +22,7 @@ struct VelocityOptions {
   double tail_from = 1.5;     // fit the tail for y >= tail_from
   double min_count = 25;      // fit only bins with at least this many samples (both signs)
   std::vector<double> times;  // dumps nearest these times; empty = all dumps
+  bool exact_time = false;  // --exact-time: refuse a time no dump has
 };
 
 void run_velocity(const VelocityOptions& opt, std::ostream& out);

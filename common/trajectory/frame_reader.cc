@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "common/error.h"
+#include "common/tool_main.h"
 #include "common/trajectory/layout.h"
 #include "common/trajectory/run_parameters.h"
 
@@ -113,12 +114,23 @@ std::size_t Trajectory::nearest_dump(double t) const {
   return best;
 }
 
-std::vector<std::size_t> Trajectory::dumps_nearest(const std::vector<double>& times) const {
+std::size_t Trajectory::dump_at(double t, bool exact) const {
+  const std::size_t d = nearest_dump(t);
+  if (times_.empty() || std::abs(times_[d] - t) <= 1e-9 * std::max(std::abs(t), 1.0)) return d;
+  const std::string what = "--time " + format_number(t) + ": no dump at that time, the nearest is t = " +
+                           format_number(times_[d]) + " (" + std::to_string(times_.size()) + " dumps, t = " +
+                           format_number(times_.front()) + " to " + format_number(times_.back()) + ")";
+  if (exact) throw InputError(path_ + ": " + what);
+  note(what + "; using it (--exact-time refuses instead)");
+  return d;
+}
+
+std::vector<std::size_t> Trajectory::dumps_nearest(const std::vector<double>& times, bool exact) const {
   std::vector<std::size_t> dumps;
   if (times.empty()) {
     for (std::size_t i = 0; i < times_.size(); ++i) dumps.push_back(i);
   } else {
-    for (double t : times) dumps.push_back(nearest_dump(t));
+    for (double t : times) dumps.push_back(dump_at(t, exact));
   }
   return dumps;
 }

@@ -59,8 +59,12 @@ class Trajectory {
   const std::vector<double>& dump_times() const { return times_; }
   // Index of the dump whose time is nearest t (the earlier one on a tie).
   std::size_t nearest_dump(double t) const;
-  // The dumps nearest each of `times` in the order given; all dumps if `times` is empty.
-  std::vector<std::size_t> dumps_nearest(const std::vector<double>& times) const;
+  // The dumps nearest each of `times` in the order given; all dumps if `times`
+  // is empty. A time no dump has (to 1e-9, relative) is snapped to the
+  // nearest dump with a note on stderr naming both, or, with `exact`
+  // (--exact-time), refused (InputError).
+  std::vector<std::size_t> dumps_nearest(const std::vector<double>& times, bool exact = false) const;
+  std::size_t dump_at(double t, bool exact) const;  // one of them
 
   // Reads dump `dump` into `frame` (its buffers are reused). Non-finite
   // numbers in a double element are an InputError naming dump and particle.

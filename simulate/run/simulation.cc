@@ -19,6 +19,7 @@
 #include "common/trajectory/h5md_writer.h"
 #include "common/output_file.h"
 #include "common/progress.h"
+#include "simulate/run/run_eta.h"
 #include "common/tsv.h"
 #include "simulate/run/checkpoint.h"
 #include "simulate/run/engine_factory.h"
@@ -166,7 +167,9 @@ class Driver {
 
   bool advance_to(double t) {
     while (true) {
+      const auto slice_start = clock::now();
       const RunStatus status = engine_.run_until(t, kEventsPerSlice, &g_interrupt);
+      busy_seconds_ += std::chrono::duration<double>(clock::now() - slice_start).count();
       if (status == RunStatus::kInterrupted) return false;
       if (std::chrono::duration<double>(clock::now() - last_checkpoint_).count() >= interval_) checkpoint();
       show_progress();
@@ -182,18 +185,19 @@ class Driver {
     return kExitInterrupted;
   }
 
+  // Rates and the ETA count only the seconds spent in the engine
+  // (simulate/run/run_eta.h), not those of dumps and checkpoints.
   void show_progress() {
+    const double t = engine_.now(), coll = double(engine_.counters().collisions);
+    eta_.add({t, coll, busy_seconds_});
     if (!progress_.due()) return;
-    const double t = engine_.now(), secs = progress_.elapsed();
-    const double coll = double(engine_.counters().collisions);
-    // The stops are log-spaced, so progress is measured in log(1 + t).
-    const double done = std::log1p(t) / std::log1p(scene_.t_end);
-    const double eta = done > 0 ? secs * (1 - done) / done : 0;
+    const double left = eta_.seconds_left(scene_.t_end);
     std::ostringstream s;
     s.precision(3);
-    s << "t = " << t << " / " << scene_.t_end << "  collisions " << coll << " (" << coll / std::max(secs, 1e-9)
-      << "/s)  E/E0 = " << engine_.observables().kinetic_energy / e0_ << "  ETA ~"
-      << Progress::format_duration(eta);
+    s << "t = " << t << " / " << scene_.t_end << "  collisions " << coll << " (" << eta_.collision_rate()
+      << "/s)  E/E0 = " << engine_.observables().kinetic_energy / e0_ << "  ETA ";
+    if (std::isfinite(left)) s << "~" << Progress::format_duration(left);
+    else s << "?";
     progress_.show(s.str());
   }
 
@@ -202,7 +206,8 @@ class Driver {
     std::ostringstream s;
     s.precision(3);
     const double n = double(engine_.counters().collisions - c0);
-    s << "done: t = " << engine_.now() << ", " << n << " collisions in " << progress_.elapsed() << " s";
+    s << "done: t = " << engine_.now() << ", " << n << " collisions in " << progress_.elapsed() << " s ("
+      << n / std::max(busy_seconds_, 1e-9) << "/s in the engine, dumps excluded)";
     progress_.show(s.str());
   }
 
@@ -212,6 +217,8 @@ class Driver {
   std::string path_;
   double e0_;
   Progress progress_;
+  RunEta eta_{scene_.L};
+  double busy_seconds_ = 0;  // wall seconds inside the engine (no dumps, no checkpoints)
   double interval_;
   clock::time_point last_checkpoint_;
   double written_ = -1;    // the file holds every output up to this time
@@ -268,7 +275,12 @@ int start_new(const SimulationRequest& req) {
     engine = make_engine(scene, std::move(start.particles), 0.0, {}, start.aggregates ? &*start.aggregates : nullptr);
   } else {
     try {
-      engine = make_engine(scene, initial_state(scene, &g_interrupt), 0.0);
+      Progress setup(!req.quiet);  // placement and equilibration take seconds to minutes at large N
+      const auto report = [&](const std::string& line, bool phase) {
+        if (phase || setup.due())
+          setup.show("set-up (" + Progress::format_duration(setup.elapsed()) + "): " + line);
+      };
+      engine = make_engine(scene, initial_state(scene, &g_interrupt, report), 0.0);
     } catch (const SetupInterrupted&) {
     }
   }

@@ -69,12 +69,19 @@ void draw_velocities(Particles& p, double T0, Random& rng, const std::vector<dou
     for (int d = 0; d < 3; ++d) v[d] *= scale;
 }
 
+constexpr std::int64_t kEquilibrationSlice = 1 << 18;  // events between progress updates
+
 double initial_temperature(const Scene& s) {
   if (s.T0 > 0) return s.T0;  // a start from a file (simulate/start/file_start.h)
   return unit_time_temperature(double(s.N) / (s.L * s.L * s.L), s.phi);
 }
 
-Particles initial_state(const Scene& s, InterruptFlag interrupt) {
+Particles initial_state(const Scene& s, InterruptFlag interrupt, const SetupReport& report) {
+  const auto say = [&](const std::string& line, bool phase) {
+    if (report) report(line, phase);
+  };
+  say("placing " + std::to_string(s.N) + (s.init == InitialPositions::kRandom ? " particles at random" : " particles on FCC"),
+      true);
   Particles p;
   p.L = s.L;
   // Positions first, the other arrays only after the placement: its search
@@ -91,10 +98,17 @@ Particles initial_state(const Scene& s, InterruptFlag interrupt) {
     // only they coexist with the engine: this is the set-up's memory peak.
     std::vector<Vec3> relaxed;
     {
+      say("equilibrating: " + format_number(s.equilibrate) + " elastic collision times", true);
       Engine<ElasticRule> melt(std::move(p), ElasticRule{}, 0.0);
-      if (melt.run_until(s.equilibrate, std::numeric_limits<std::int64_t>::max(), interrupt) ==
-          RunStatus::kInterrupted)
-        throw SetupInterrupted();
+      // In slices, for the progress line (slicing a run changes nothing: the engine contract).
+      RunStatus status = RunStatus::kEventBudget;
+      while (status == RunStatus::kEventBudget) {
+        status = melt.run_until(s.equilibrate, kEquilibrationSlice, interrupt);
+        if (status == RunStatus::kInterrupted) throw SetupInterrupted();
+        say("equilibrating: t = " + format_number(std::round(melt.now() * 100) / 100) + " / " +
+                format_number(s.equilibrate) + " elastic collision times",
+            false);
+      }
       relaxed = melt.release_positions();
     }
     p = Particles();

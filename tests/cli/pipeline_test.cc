@@ -44,7 +44,10 @@ struct Judged {
 std::map<std::string, Judged> read_exponents(const std::string& path) {
   std::ifstream in(path);
   std::map<std::string, Judged> rows;
-  for (std::string line; std::getline(in, line);) {
+  std::string line;
+  std::getline(in, line);  // the column line (data-schema/tsv-tables.md)
+  EXPECT_EQ(line.substr(0, 16), "quantity\tfigure\t");
+  while (std::getline(in, line)) {
     if (line.empty() || line[0] == '#') continue;
     std::vector<std::string> cells;
     std::stringstream ss(line);

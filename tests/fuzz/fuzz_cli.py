@@ -188,7 +188,7 @@ class Corpus:
             + [f"{run} --tail-from {v}" for v in ["0", "-1", "nan"]]
             + [f"{run} --min-count {v}" for v in ["0", "-5"]] + [f"{run} --tail --series"],
             "coolgas-clusters": [f"{run} --bins-per-decade {v}" for v in ["0", "-1", "x"]] + [f"{run} --series --scaled"],
-            "coolgas-fit": [f"--power --window {w} {table}" for w in ["x:y", "5:1", "1e300:1e301", "::"]]
+            "coolgas-fit": [f"--power --t-window {w} {table}" for w in ["x:y", "5:1", "1e300:1e301", "::"]]
             + [f"--local-slope --smooth {s} {table}" for s in ["0", "-1", "nan"]]
             + [f"--power --t-column nope {table}", "--power --haff " + table, table],
             "coolgas-collapse": [f"--bootstrap {b} --optimize {table} {table}" for b in ["-1", "1000000000"]]
@@ -200,9 +200,9 @@ class Corpus:
                                  f"{run} --time 0 -o x.png --max-points 0", f"{run} --time 0 -o x.png --thickness -1"],
             "coolgas-convert": [f"{run} --format {f}" for f in ["pdb", "", "XYZ"]]
             + [f"{run} --time {t}" for t in ["x", "nan", ""]] + [f"{run} --last --time 1"],
-            "coolgas-smoluchowski": [f"--M {m} --times 1" for m in ["0", "1", "1e12", "1000000000000", "-5"]]
-            + ["--kernel nope --times 1", "--method nope --times 1", "--times -1", "--times x", "--M 64",
-               "--until-mean-mass 1e300 --M 64", "--kernel separable:0,1,1 --times 1", "--rtol -1 --times 1"],
+            "coolgas-smoluchowski": [f"--M {m} --time 1" for m in ["0", "1", "1e12", "1000000000000", "-5"]]
+            + ["--kernel nope --time 1", "--method nope --time 1", "--time -1", "--time x", "--M 64",
+               "--until-mean-mass 1e300 --M 64", "--kernel separable:0,1,1 --time 1", "--rtol -1 --time 1"],
         }
         for tool, args in options.items():
             for a in args:
@@ -268,7 +268,7 @@ class Corpus:
             "coolgas-collapse": f"{p('coolgas-collapse')} {table}",
             "coolgas-clusters": f"{p('coolgas-clusters')} {run}",
             "coolgas-velocity": f"{p('coolgas-velocity')} --bins 20000 {run}",
-            "coolgas-smoluchowski": f"{p('coolgas-smoluchowski')} --kernel constant --M 4096 --times 1,2,3",
+            "coolgas-smoluchowski": f"{p('coolgas-smoluchowski')} --kernel constant --M 4096 --time 1,2,3",
             "coolgas-validate": f"{p('coolgas-validate')} {run}",
             "coolgas-convert": f"{p('coolgas-convert')} {run}",
             "coolgas-simulate --help": f"{p('coolgas-simulate')} --help",

@@ -46,6 +46,26 @@ TEST(Tsv, ABlockCommentBeforeTheFirstRowIsNotTheColumnLine) {
   EXPECT_EQ(t.row_block, (std::vector<int>{0, 1}));
 }
 
+// data-schema/tsv-tables.md, format 2: the bare column line first, then the
+// format line, the tool and its version, then the provenance.
+TEST(Tsv, TheColumnLineComesFirstThenTheFormatAndProvenance) {
+  std::ostringstream out;
+  TsvWriter(out, "coolgas-test", {{"L", "16"}}, {"t", "E"}).row({1, 2});
+  const std::string s = out.str();
+  EXPECT_EQ(s.substr(0, s.find("# tool:")), "t\tE\n# format: coolgas-table 2\n") << s;
+  EXPECT_NE(s.find("# L: 16\n1\t2\n"), std::string::npos) << s;
+}
+
+// Tables written before format 2 named their columns in the first comment
+// without ':'; they stay readable.
+TEST(Tsv, ReadsFormatOneTables) {
+  std::istringstream in("# tool: old\n# L: 16\n# t\tE\n1\t2\n\n\n# t = 10\n3\t4\n");
+  Table t = read_table(in, "mem");
+  EXPECT_EQ(t.columns, (std::vector<std::string>{"t", "E"}));
+  EXPECT_EQ(t.rows.size(), 2u);
+  EXPECT_EQ(t.get("L").value(), "16");
+}
+
 TEST(Tsv, RejectsEmptyRaggedNonNumericAndNaN) {
   auto read = [](const std::string& s) {
     std::istringstream in(s);
@@ -56,7 +76,8 @@ TEST(Tsv, RejectsEmptyRaggedNonNumericAndNaN) {
   EXPECT_THROW(read("# a\tb\n1\tx\n"), InputError);
   EXPECT_THROW(read("# a\tb\n1\tnan\n"), InputError);
   EXPECT_THROW(read("# a\tb\n1\tinf\n"), InputError);
-  EXPECT_THROW(read("1\t2\n"), InputError);
+  EXPECT_THROW(read("1\t2\n"), InputError);     // no column line
+  EXPECT_THROW(read("a\tb\n1\t2\n3\n"), InputError);  // format 2, ragged
   try {
     read("# a\tb\n1\t2\n1\tnan\n");
   } catch (const InputError& e) {

@@ -1,0 +1,138 @@
+// One command-line convention across the programs (README, "Analysis
+// tools"): --version everywhere, usage lines with the bare program name, a
+// --time that no dump has snapped with a note (or refused with
+// --exact-time), a --series row kept with NaN where its fit is impossible,
+// and old option spellings accepted with a note.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "common/tsv.h"
+#include "common/version.h"
+#include "tests/support/cli_checks.h"
+#include "tests/support/run_command.h"
+#include "tests/support/simulate_cli.h"
+
+namespace coolgas {
+namespace {
+
+using test::bin;
+using test::run_command;
+
+const char* const kPrograms[] = {"coolgas-simulate", "coolgas-validate",  "coolgas-energy",    "coolgas-fit",
+                                 "coolgas-collapse", "coolgas-clusters",  "coolgas-velocity",  "coolgas-snapshot",
+                                 "coolgas-shape",    "coolgas-structure", "coolgas-smoluchowski"};
+
+TEST(Conventions, EveryProgramPrintsItsVersionAndCommit) {
+  for (const std::string program : kPrograms) {
+    const auto r = run_command(bin(program) + " --version");
+    EXPECT_EQ(r.exit_code, 0) << program << r.err;
+    EXPECT_EQ(r.out, program + " " + program_version() + "\n");  // version.h: "0.1.0 (<commit>)"
+  }
+}
+
+TEST(Conventions, UsageLinesNameTheProgramBare) {
+  for (const std::string program : kPrograms) {
+    const auto r = run_command(bin(program) + " --help");
+    EXPECT_EQ(r.exit_code, 0) << program;
+    EXPECT_NE(r.out.find("Usage: " + program + " "), std::string::npos) << r.out.substr(0, 400);
+  }
+}
+
+// A real run (N = 2000 to t = 1e4): dumps at 5 per decade, so t = 3000 and
+// t = 1e6 are not dump times, t = 1000 is.
+class TimeConventions : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir = new std::string(test::scratch_dir("conventions"));
+    const auto sim = run_command(test::simulate(
+        "--set system.N=2000 --set system.phi=0.208 --set run.t_end=1e4 --set system.equilibrate=0 "
+        "--set collision.model=inelastic --set collision.r0=0.1 --set collision.delta=1e-4 -o " + *dir +
+        "/run.h5 /dev/null"));
+    ASSERT_EQ(sim.exit_code, 0) << sim.err;
+  }
+  static std::string run() { return *dir + "/run.h5"; }
+  static inline std::string* dir = nullptr;
+};
+
+TEST_F(TimeConventions, ATimeNoDumpHasIsSnappedWithANoteOrRefused) {
+  for (const std::string tool : {"coolgas-clusters", "coolgas-velocity", "coolgas-shape", "coolgas-structure"}) {
+    SCOPED_TRACE(tool);
+    const auto snapped = run_command(bin(tool) + " " + run() + " --series --time 3000");
+    EXPECT_EQ(snapped.exit_code, 0) << snapped.err;
+    EXPECT_NE(snapped.err.find("--time 3000: no dump at that time, the nearest is t = 2511.88"), std::string::npos)
+        << snapped.err;
+    const auto beyond = run_command(bin(tool) + " " + run() + " --series --time 1e6");
+    EXPECT_NE(beyond.err.find("the nearest is t = 10000"), std::string::npos) << beyond.err;
+    const auto exact = run_command(bin(tool) + " " + run() + " --series --time 1000");
+    EXPECT_EQ(exact.err, "");  // a dump's own time: no note
+    test::expect_one_error_line(run_command(bin(tool) + " " + run() + " --series --exact-time --time 3000"),
+                                "no dump at that time");
+  }
+  const auto snap = run_command(bin("coolgas-snapshot") + " " + run() + " --time 3000 --exact-time -o " + *dir +
+                                "/never.png");
+  test::expect_one_error_line(snap, "the nearest is t = 2511.88");
+}
+
+TEST_F(TimeConventions, TimeListsAreRepeatedOrCommaSeparated) {
+  const auto commas = run_command(bin("coolgas-clusters") + " " + run() + " --series --time 10,1000");
+  const auto repeated = run_command(bin("coolgas-clusters") + " " + run() + " --series --time 10 --time 1000");
+  EXPECT_EQ(commas.exit_code, 0) << commas.err;
+  EXPECT_EQ(commas.out, repeated.out);
+  std::istringstream in(commas.out);
+  EXPECT_EQ(read_table(in, "stdout").column_values("t"), (std::vector<double>{10, 1000}));
+}
+
+// --min-count 1e6 leaves no tail bin in any dump of 2000 particles: every
+// row stays, with v_rms and kappa, beta NaN and one note per dump.
+TEST_F(TimeConventions, VelocitySeriesKeepsADumpWhoseTailCannotBeFitted) {
+  const auto r = run_command(bin("coolgas-velocity") + " " + run() + " --series --min-count 1e6 --time 0,1000");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(test::line_count(r.err), 2) << r.err;
+  EXPECT_NE(r.err.find("beta is nan in that row"), std::string::npos) << r.err;
+  int rows = 0;
+  std::istringstream in(r.out);
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#' || line[0] == 't') continue;
+    double t, v_rms, kappa, kappa_err;
+    char beta[8] = {};
+    ASSERT_EQ(std::sscanf(line.c_str(), "%lf %lf %lf %lf %7s", &t, &v_rms, &kappa, &kappa_err, beta), 5) << line;
+    EXPECT_GT(v_rms, 0);
+    EXPECT_STREQ(beta, "nan");
+    ++rows;
+  }
+  EXPECT_EQ(rows, 2);
+}
+
+// The canonical pipe without a window fits the scaling window's rule
+// (analyze/curves/scaling_window.h) and says so: it ends at the finite-size
+// crossover 0.1 L^(5/2) = 121.6 of this box (L = 17.14).
+TEST_F(TimeConventions, TheCanonicalPipeFitsTheScalingWindowWithANote) {
+  const auto r = run_command(bin("coolgas-energy") + " " + run() + " | " + bin("coolgas-fit") + " --power -");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("no --t-window: fitting t = "), std::string::npos) << r.err;
+  std::istringstream in(r.out);
+  const Table fit = read_table(in, "stdout");
+  EXPECT_GT(fit.column_values("t_min")[0], 1);  // past the flat start
+  EXPECT_LE(fit.column_values("t_max")[0], 0.1 * std::pow(std::cbrt(2000 * M_PI / 6 / 0.208), 2.5));
+  EXPECT_GT(fit.column_values("theta")[0], 1);  // a cooling gas, not the flat start (theta near 0)
+  EXPECT_LT(fit.column_values("theta")[0], 2);
+}
+
+TEST_F(TimeConventions, OldSpellingsStillWorkWithANote) {
+  const std::string energy = bin("coolgas-energy") + " " + run() + " | ";
+  const auto old_spelling = run_command(energy + bin("coolgas-fit") + " --power --window 10:1000 -");
+  const auto new_spelling = run_command(energy + bin("coolgas-fit") + " --power --t-window 10:1000 -");
+  EXPECT_EQ(old_spelling.exit_code, 0) << old_spelling.err;
+  EXPECT_EQ(old_spelling.out, new_spelling.out);
+  EXPECT_NE(old_spelling.err.find("--window is the old spelling of --t-window"), std::string::npos);
+  EXPECT_EQ(new_spelling.err, "");
+  const auto smol = run_command(bin("coolgas-smoluchowski") + " --kernel constant --M 64 --times 1");
+  EXPECT_EQ(smol.exit_code, 0) << smol.err;
+  EXPECT_NE(smol.err.find("--times is the old spelling of --time"), std::string::npos) << smol.err;
+}
+
+}  // namespace
+}  // namespace coolgas
