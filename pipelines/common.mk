@@ -186,7 +186,7 @@ $(TABLES)/energy_param_%.tsv: $$(call param_runs,$$*)
 	$(BIN)/coolgas-energy $^ > $@
 
 $(TABLES)/fit_size_Lmax.tsv: $(TABLES)/energy_size_L$(L_MAX).tsv $(call knob,theta,$(THETA_WINDOW))
-	$(BIN)/coolgas-fit --power --window $(THETA_WINDOW) $< > $@
+	$(BIN)/coolgas-fit --power --t-window $(THETA_WINDOW) $< > $@
 
 # E(t) of each run alone: the collapse resamples whole runs for its errors
 # (a jackknife over seeds; one table per L would treat times as independent).
@@ -221,7 +221,7 @@ param_window = $(or $(PARAM_FIT_WINDOW_$(1)),$(PARAM_FIT_WINDOW))
 # (the knob files are written now, while make reads this file)
 PARAM_FIT_KNOBS := $(foreach p,$(PARAM_SETS),$(call knob,param_fit_$(p),$(call param_window,$(p))))
 $(TABLES)/fit_param_%.tsv: $(TABLES)/energy_param_%.tsv $(KNOBS)/param_fit_%.txt
-	$(BIN)/coolgas-fit --power --window $(call param_window,$*) $< > $@
+	$(BIN)/coolgas-fit --power --t-window $(call param_window,$*) $< > $@
 
 $(OUT)/fig2_energy_parameters.png: $(PARAM_TABLES) $(PARAM_FITS) $(PLOTS)/fig2_energy_parameters.gp
 	for o in $@ $(@:.png=.pdf); do gnuplot -e "phi_tables='$(call panel_tables,phi,$(PARAM_PHIS))'; phis='$(PARAM_PHIS)'; \
@@ -243,7 +243,7 @@ $(TABLES)/nm_gas.tsv: $(SNAP_RUN) $(call knob,nm_times,$(NM_TIMES))
 $(TABLES)/fit_nm_gas.tsv: $(SNAP_RUN) $(call knob,nm_fit,$(lastword $(NM_TIMES)) $(NM_FIT_WINDOW))
 	@mkdir -p $(@D)
 	$(BIN)/coolgas-clusters $< --time $(lastword $(NM_TIMES)) \
-	  | $(BIN)/coolgas-fit --power --t-column m --e-column N --no-weights --window $(NM_FIT_WINDOW) - > $@
+	  | $(BIN)/coolgas-fit --power --t-column m --e-column N --no-weights --t-window $(NM_FIT_WINDOW) - > $@
 
 ifeq ($(BA),1)
 BA_SNAP := $(lastword $(BA_RUNS))
@@ -275,11 +275,11 @@ $(TABLES)/mmax_%.tsv: $(RUNS)/%.h5
 	$(BIN)/coolgas-clusters $< --series > $@
 
 $(TABLES)/fit_mmax_%.tsv: $(TABLES)/mmax_%.tsv $(call knob,mmax_fit,$(MMAX_FIT_WINDOW))
-	$(BIN)/coolgas-fit --power --t-column t --e-column M_max --no-weights --window $(MMAX_FIT_WINDOW) $< > $@
+	$(BIN)/coolgas-fit --power --t-column t --e-column M_max --no-weights --t-window $(MMAX_FIT_WINDOW) $< > $@
 
 # Aggregates grow from the start and outgrow small boxes early: their own window.
 $(TABLES)/fit_mmax_ba_%.tsv: $(TABLES)/mmax_ba_%.tsv $(call knob,ba_mmax_fit,$(BA_MMAX_FIT_WINDOW))
-	$(BIN)/coolgas-fit --power --t-column t --e-column M_max --no-weights --window $(BA_MMAX_FIT_WINDOW) $< > $@
+	$(BIN)/coolgas-fit --power --t-column t --e-column M_max --no-weights --t-window $(BA_MMAX_FIT_WINDOW) $< > $@
 
 $(OUT)/fig4_largest_mass.png: $(MMAX_GAS) $(MMAX_BA) $(subst mmax_,fit_mmax_,$(MMAX_GAS) $(MMAX_BA)) \
     $(PLOTS)/fig4_largest_mass.gp
@@ -315,7 +315,7 @@ $(OUT)/fig5_velocity.png: $(TABLES)/phi_early.tsv $(TABLES)/phi_late.tsv $(TABLE
 # ---- Smoluchowski equation (paper Eqs. 3-4) beside the simulated gas
 # Volume = N of the snapshot run (c_1(0) = 1), so its M_max is that of a system
 # of the same size.
-SMOL_ARGS = --kernel ballistic --M $(SMOL_M) --t-end $(SMOL_T_END) --times $(SMOL_TIMES)
+SMOL_ARGS = --kernel ballistic --M $(SMOL_M) --t-end $(SMOL_T_END) --time $(SMOL_TIMES)
 $(TABLES)/smoluchowski_nm.tsv: $(TABLES)/mmax_$(notdir $(basename $(SNAP_RUN))).tsv $(call knob,smoluchowski,$(SMOL_ARGS))
 	$(LAUNCH) $(BIN)/coolgas-smoluchowski $(SMOL_ARGS) --volume $$($(VALUE) $< N '#') \
 	  --series-file $(TABLES)/smoluchowski_series.tsv > $@
@@ -324,7 +324,7 @@ $(TABLES)/smoluchowski_nm.tsv: $(TABLES)/mmax_$(notdir $(basename $(SNAP_RUN))).
 $(TABLES)/smoluchowski_series.tsv: $(TABLES)/smoluchowski_nm.tsv
 	@test -f $@ || { echo "$@ missing: remove $< and rerun"; exit 1; }
 $(TABLES)/fit_smoluchowski_%.tsv: $(TABLES)/smoluchowski_series.tsv $(call knob,smoluchowski_fit,$(SMOL_FIT_WINDOW))
-	$(BIN)/coolgas-fit --power --t-column t --e-column $* --no-weights --window $(SMOL_FIT_WINDOW) $< > $@
+	$(BIN)/coolgas-fit --power --t-column t --e-column $* --no-weights --t-window $(SMOL_FIT_WINDOW) $< > $@
 
 $(OUT)/smoluchowski.png: $(TABLES)/smoluchowski_nm.tsv $(TABLES)/smoluchowski_series.tsv \
     $(TABLES)/fit_smoluchowski_M_max.tsv $(TABLES)/fit_smoluchowski_M_avg.tsv $(TABLES)/nm_gas.tsv \
@@ -339,7 +339,7 @@ $(TABLES)/energy_ba_%.tsv: $(RUNS)/ba_%.h5
 	@mkdir -p $(@D)
 	$(BIN)/coolgas-energy $< > $@
 $(TABLES)/fit_energy_ba_%.tsv: $(TABLES)/energy_ba_%.tsv $(call knob,ba_theta_fit,$(BA_THETA_WINDOW))
-	$(BIN)/coolgas-fit --power --window $(BA_THETA_WINDOW) $< > $@
+	$(BIN)/coolgas-fit --power --t-window $(BA_THETA_WINDOW) $< > $@
 
 # ---- The growing length: S(k, t), its dynamic-scaling collapse, L_t(t) and L_C(t)
 # with their fits, d_f(t) (pipelines/structure.mk; the scale file names the runs

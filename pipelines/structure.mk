@@ -32,9 +32,9 @@ $(TABLES)/lt_%.tsv: $(RUNS)/%.h5
 	$(BIN)/coolgas-structure --series $< > $@
 # L_t = A t^{1/z}: coolgas-fit's E = A t^-theta with theta = -1/z.
 $(TABLES)/fit_lt_%.tsv: $(TABLES)/lt_%.tsv $(LT_FIT_KNOB)
-	$(BIN)/coolgas-fit --power --window $(LT_FIT_WINDOW) --e-column L_t --no-weights $< > $@
+	$(BIN)/coolgas-fit --power --t-window $(LT_FIT_WINDOW) --e-column L_t --no-weights $< > $@
 $(TABLES)/fit_lc_%.tsv: $(TABLES)/lt_%.tsv $(LT_FIT_KNOB)
-	$(BIN)/coolgas-fit --power --window $(LT_FIT_WINDOW) --e-column L_C --no-weights $< > $@
+	$(BIN)/coolgas-fit --power --t-window $(LT_FIT_WINDOW) --e-column L_C --no-weights $< > $@
 $(TABLES)/shape_%.tsv: $(RUNS)/%.h5
 	@mkdir -p $(@D)
 	$(BIN)/coolgas-shape --series $< > $@

@@ -144,15 +144,15 @@ TEST(Pipeline, TinyPipelineRunsEndToEndAndIsIncremental) {
   // A changed fit window reruns that fit and what uses it, and no simulation.
   auto dry = run_command(make_command(out, "-n THETA_WINDOW=20:200"));
   ASSERT_EQ(dry.exit_code, 0) << dry.err;
-  EXPECT_NE(dry.out.find("coolgas-fit --power --window 20:200"), std::string::npos) << dry.out;
+  EXPECT_NE(dry.out.find("coolgas-fit --power --t-window 20:200"), std::string::npos) << dry.out;
   EXPECT_EQ(dry.out.find("coolgas-simulate"), std::string::npos) << dry.out;
   EXPECT_EQ(dry.out.find("coolgas-collapse"), std::string::npos) << dry.out;
   // So does the growing length's fit window: both length fits, the figure and
   // the table, and neither a simulation nor coolgas-structure.
   auto lt_dry = run_command(make_command(out, "-n LT_FIT_WINDOW=20:800"));
   ASSERT_EQ(lt_dry.exit_code, 0) << lt_dry.err;
-  EXPECT_NE(lt_dry.out.find("--window 20:800 --e-column L_t"), std::string::npos) << lt_dry.out;
-  EXPECT_NE(lt_dry.out.find("--window 20:800 --e-column L_C"), std::string::npos) << lt_dry.out;
+  EXPECT_NE(lt_dry.out.find("--t-window 20:800 --e-column L_t"), std::string::npos) << lt_dry.out;
+  EXPECT_NE(lt_dry.out.find("--t-window 20:800 --e-column L_C"), std::string::npos) << lt_dry.out;
   EXPECT_EQ(lt_dry.out.find("coolgas-structure"), std::string::npos) << lt_dry.out;
   EXPECT_EQ(lt_dry.out.find("coolgas-simulate"), std::string::npos) << lt_dry.out;
   // (make -n recorded the new windows; the default ones come back with a refit.)
