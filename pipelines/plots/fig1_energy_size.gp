@@ -29,7 +29,7 @@ set xlabel "t  [initial mean collision times 1/{/Symbol w}_0]"
 set ylabel "E(t)  [m {/Symbol s}^2 {/Symbol w}_0^2 per particle]"
 plot for [i = 1 : n] word(tables, i) using 1:($1 > 0 ? $2 : NaN) with linespoints ls i pi 6 title sprintf("L = %d", Lof(i)), \
      [fit_lo:fit_hi] fit_A * x**(-fit_theta) with lines lw 3 dt 1 lc rgb "black" \
-       title sprintf("fit t^{-{/Symbol q}} at L = %d: {/Symbol q} = %.3f ± %.3f", Lof(n), fit_theta, fit_err)
+       title sprintf("fit t^{-{/Symbol q}} at L = %d: {/Symbol q} = %.3f ± %.1g", Lof(n), fit_theta, fit_err)
 
 # (b) collapse with the fitted exponents
 set key top right
