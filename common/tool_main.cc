@@ -12,6 +12,7 @@
 #include <streambuf>
 
 #include "common/error.h"
+#include "common/interrupt.h"
 
 namespace coolgas {
 
@@ -82,6 +83,9 @@ int run_body(const std::string& tool, const std::function<int()>& body) {
   } catch (const WriteError& e) {
     report(tool, "error", e.what());
     return kExitWrite;
+  } catch (const Interrupted& e) {
+    std::cerr << one_line(tool + ": " + e.what()) << "\n";
+    return kExitInterrupted;
   } catch (const std::bad_alloc&) {
     report(tool, "error", "out of memory (the input asks for more than this machine has)");
     return kExitFailure;
