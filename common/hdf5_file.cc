@@ -132,6 +132,30 @@ Handle fapl_v110() {
   return fapl;
 }
 
+// Paged aggregation: no metadata block smaller than a page straddles a page
+// boundary. A SIGKILL can cut a write() between two pages of the page cache
+// (never inside one), so an object header the writer rewrites at every
+// append is then always whole on disk: a straddling one could be left torn,
+// its checksum wrong, and the dataset unreadable for good.
+constexpr hsize_t kFilePageBytes = 4096;
+Handle fcpl_paged() {
+  Handle fcpl(check(H5Pcreate(H5P_FILE_CREATE), "file creation property list"));
+  check_status(H5Pset_file_space_strategy(fcpl.id(), H5F_FSPACE_STRATEGY_PAGE, true, 1), "file space strategy");
+  check_status(H5Pset_file_space_page_size(fcpl.id(), kFilePageBytes), "file space page size");
+  return fcpl;
+}
+
+// A SWMR reader retries a block whose checksum is wrong, as the writer may be
+// rewriting it. HDF5's default (100 attempts, doubling delays of up to 36 s)
+// waits an hour on a block a killed writer left torn; 30 attempts wait about
+// a second in all, far longer than any live write takes.
+constexpr unsigned kSwmrReadAttempts = 30;
+Handle fapl_swmr_read() {
+  Handle fapl(check(H5Pcreate(H5P_FILE_ACCESS), "file access property list"));
+  check_status(H5Pset_metadata_read_attempts(fapl.id(), kSwmrReadAttempts), "metadata read attempts");
+  return fapl;
+}
+
 // A writer killed during SWMR writing leaves the superblock's "open for
 // writing" flags set, and HDF5 then refuses to open the file for writing.
 // This is the property h5clear -s sets; it clears them on open.
@@ -150,7 +174,8 @@ hid_t open_existing(const std::string& path, Mode mode) {
   const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (id >= 0) return id;
   // Being written, or left by a killed writer: only a SWMR reader may open it.
-  return H5Fopen(path.c_str(), H5F_ACC_RDONLY | H5F_ACC_SWMR_READ, H5P_DEFAULT);
+  Handle fapl = fapl_swmr_read();
+  return H5Fopen(path.c_str(), H5F_ACC_RDONLY | H5F_ACC_SWMR_READ, fapl.id());
 }
 
 }  // namespace
@@ -160,7 +185,8 @@ Handle open_file(const std::string& path, Mode mode) {
   hid_t id = H5I_INVALID_HID;
   if (mode == Mode::kCreateExclusive || mode == Mode::kCreateTruncate) {
     Handle fapl = fapl_v110();
-    id = H5Fcreate(path.c_str(), mode == Mode::kCreateExclusive ? H5F_ACC_EXCL : H5F_ACC_TRUNC, H5P_DEFAULT,
+    Handle fcpl = fcpl_paged();
+    id = H5Fcreate(path.c_str(), mode == Mode::kCreateExclusive ? H5F_ACC_EXCL : H5F_ACC_TRUNC, fcpl.id(),
                    fapl.id());
   } else {
     id = open_existing(path, mode);

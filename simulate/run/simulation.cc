@@ -276,15 +276,20 @@ int start_new(const SimulationRequest& req) {
   const std::string tmp = out + ".partial";
   H5mdWriter writer = H5mdWriter::create(tmp, parameters_of(scene), true);
   Driver driver(scene, *engine, writer, out, req.quiet, interval);
+  // The checkpoint (replacing an old run's at once) is in place before the
+  // trajectory: from the moment the file exists, resume is exact from any
+  // stop. (A kill between the two renames leaves an old run's file, if any,
+  // beside this run's checkpoint: the same physics and seed, as the
+  // checkpoint's check of the physics ensures, so the same t = 0 state.)
   try {
     driver.start();
-    remove_checkpoint(out);
+    driver.checkpoint();
     writer.rename(out);  // errors from here on name the real output
   } catch (...) {
     std::filesystem::remove(tmp);
+    remove_checkpoint(out);
     throw;
   }
-  driver.checkpoint();  // from here on, resume is exact from any stop
   return drive(driver, scene);
 }
 
