@@ -303,6 +303,10 @@ int resume(const SimulationRequest& req) {
   ResumePoint rp = read_resume_point(req.resume);
   const Scene scene = parse_scene(rp.scene_toml, req.resume + ":/parameters/scene", req.overrides);
   if (rp.time >= scene.t_end) {
+    // Killed after its last dump, the file still has the killed writer's
+    // "open for writing" flags: opening it to append and closing it clears
+    // them, so that every program reads it.
+    H5mdWriter::reopen(req.resume);
     std::cerr << "coolgas-simulate: '" << req.resume << "' already reached run.t_end = " << scene.t_end
               << "; nothing to do (extend it with --set run.t_end=...)\n";
     return kExitOk;
