@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "common/error.h"
+#include "common/memory.h"
 
 namespace coolgas::h5 {
 namespace {
@@ -131,6 +132,30 @@ Handle fapl_v110() {
   return fapl;
 }
 
+// Paged aggregation: no metadata block smaller than a page straddles a page
+// boundary. A SIGKILL can cut a write() between two pages of the page cache
+// (never inside one), so an object header the writer rewrites at every
+// append is then always whole on disk: a straddling one could be left torn,
+// its checksum wrong, and the dataset unreadable for good.
+constexpr hsize_t kFilePageBytes = 4096;
+Handle fcpl_paged() {
+  Handle fcpl(check(H5Pcreate(H5P_FILE_CREATE), "file creation property list"));
+  check_status(H5Pset_file_space_strategy(fcpl.id(), H5F_FSPACE_STRATEGY_PAGE, true, 1), "file space strategy");
+  check_status(H5Pset_file_space_page_size(fcpl.id(), kFilePageBytes), "file space page size");
+  return fcpl;
+}
+
+// A SWMR reader retries a block whose checksum is wrong, as the writer may be
+// rewriting it. HDF5's default (100 attempts, doubling delays of up to 36 s)
+// waits an hour on a block a killed writer left torn; 30 attempts wait about
+// a second in all, far longer than any live write takes.
+constexpr unsigned kSwmrReadAttempts = 30;
+Handle fapl_swmr_read() {
+  Handle fapl(check(H5Pcreate(H5P_FILE_ACCESS), "file access property list"));
+  check_status(H5Pset_metadata_read_attempts(fapl.id(), kSwmrReadAttempts), "metadata read attempts");
+  return fapl;
+}
+
 // A writer killed during SWMR writing leaves the superblock's "open for
 // writing" flags set, and HDF5 then refuses to open the file for writing.
 // This is the property h5clear -s sets; it clears them on open.
@@ -149,7 +174,8 @@ hid_t open_existing(const std::string& path, Mode mode) {
   const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (id >= 0) return id;
   // Being written, or left by a killed writer: only a SWMR reader may open it.
-  return H5Fopen(path.c_str(), H5F_ACC_RDONLY | H5F_ACC_SWMR_READ, H5P_DEFAULT);
+  Handle fapl = fapl_swmr_read();
+  return H5Fopen(path.c_str(), H5F_ACC_RDONLY | H5F_ACC_SWMR_READ, fapl.id());
 }
 
 }  // namespace
@@ -159,7 +185,8 @@ Handle open_file(const std::string& path, Mode mode) {
   hid_t id = H5I_INVALID_HID;
   if (mode == Mode::kCreateExclusive || mode == Mode::kCreateTruncate) {
     Handle fapl = fapl_v110();
-    id = H5Fcreate(path.c_str(), mode == Mode::kCreateExclusive ? H5F_ACC_EXCL : H5F_ACC_TRUNC, H5P_DEFAULT,
+    Handle fcpl = fcpl_paged();
+    id = H5Fcreate(path.c_str(), mode == Mode::kCreateExclusive ? H5F_ACC_EXCL : H5F_ACC_TRUNC, fcpl.id(),
                    fapl.id());
   } else {
     id = open_existing(path, mode);
@@ -284,7 +311,11 @@ void write_attr(hid_t obj, const std::string& name, const std::vector<std::int32
   check_status(H5Awrite(a.id(), H5T_NATIVE_INT32, values.data()), "write attribute '" + name + "'");
 }
 
-bool has_attr(hid_t obj, const std::string& name) { return H5Aexists(obj, name.c_str()) > 0; }
+bool has_attr(hid_t obj, const std::string& name) {
+  const htri_t found = H5Aexists(obj, name.c_str());
+  if (found < 0) fail("look up attribute '" + name + "'");  // a damaged attribute table is not "missing"
+  return found > 0;
+}
 
 H5T_class_t attr_class(hid_t obj, const std::string& name) {
   Handle a = open_attr(obj, name);
@@ -433,10 +464,45 @@ void read_rows(hid_t dataset, Type type, hsize_t first, hsize_t count_rows, void
   check_status(H5Dread(dataset, mem_type(type), mspace.id(), fspace.id(), H5P_DEFAULT, out), "read rows");
 }
 
+namespace {
+
+// The dataset's path in its file, for messages.
+std::string name_of(hid_t dataset) {
+  const ssize_t n = H5Iget_name(dataset, nullptr, 0);
+  if (n <= 0) return "(unnamed)";
+  std::string s(std::size_t(n) + 1, '\0');
+  H5Iget_name(dataset, s.data(), s.size());
+  s.resize(std::size_t(n));
+  return s;
+}
+
+// Dimensions [from, end) as "(a, b, c)" of the whole shape.
+std::string shape_text(const std::vector<hsize_t>& dims) {
+  std::string s = "(";
+  for (std::size_t k = 0; k < dims.size(); ++k) s += (k ? ", " : "") + std::to_string(dims[k]);
+  return s + ")";
+}
+
+// The values of dims[from..]: counted in double, as a damaged or hostile
+// file may declare a shape whose product overflows; refused (InputError)
+// when they would not fit in this machine's memory, before any allocation.
+std::size_t values_to_read(hid_t dataset, const std::vector<hsize_t>& dims, std::size_t from, std::size_t value_size) {
+  double n = 1;
+  for (std::size_t k = from; k < dims.size(); ++k) n *= double(dims[k]);
+  const double memory = physical_memory_bytes();
+  if (n * double(value_size) > memory)
+    throw InputError("dataset '" + name_of(dataset) + "' of shape " + shape_text(dims) + " would need " +
+                     bytes_text(n * double(value_size)) + " to read" + (from ? " one row" : "") +
+                     "; this machine has " + bytes_text(memory) + " (a damaged file?)");
+  return static_cast<std::size_t>(n);
+}
+
+}  // namespace
+
 template <class T>
 std::vector<T> read_all(hid_t dataset) {
   auto dims = shape(dataset);
-  const hsize_t n = std::accumulate(dims.begin(), dims.end(), hsize_t{1}, std::multiplies<>());
+  const std::size_t n = values_to_read(dataset, dims, 0, sizeof(T));
   std::vector<T> v(static_cast<std::size_t>(n));
   if (n == 0) return v;
   if (dims.empty()) {
@@ -450,8 +516,7 @@ std::vector<T> read_all(hid_t dataset) {
 template <class T>
 std::vector<T> read_row(hid_t dataset, hsize_t row) {
   auto dims = shape(dataset);
-  const hsize_t n = std::accumulate(dims.begin() + 1, dims.end(), hsize_t{1}, std::multiplies<>());
-  std::vector<T> v(static_cast<std::size_t>(n));
+  std::vector<T> v(values_to_read(dataset, dims, 1, sizeof(T)));
   read_rows(dataset, type_of<T>(), row, 1, v.data());
   return v;
 }

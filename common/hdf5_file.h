@@ -83,7 +83,7 @@ void write_attr(hid_t obj, const std::string& name, const std::vector<std::strin
 void write_attr(hid_t obj, const std::string& name, double value);
 void write_attr(hid_t obj, const std::string& name, std::int64_t value);
 void write_attr(hid_t obj, const std::string& name, const std::vector<std::int32_t>& values);
-bool has_attr(hid_t obj, const std::string& name);
+bool has_attr(hid_t obj, const std::string& name);  // Error if the attribute table cannot be read
 H5T_class_t attr_class(hid_t obj, const std::string& name);  // H5T_INTEGER, H5T_FLOAT, H5T_STRING, ...
 std::string read_attr_string(hid_t obj, const std::string& name);
 double read_attr_double(hid_t obj, const std::string& name);
@@ -113,6 +113,8 @@ void resize_rows(hid_t dataset, hsize_t n);
 // Reads rows [first, first+count) of a dataset into a flat buffer.
 void read_rows(hid_t dataset, Type type, hsize_t first, hsize_t count, void* out);
 
+// Both refuse (InputError naming the dataset and its shape) a read that would
+// not fit in this machine's memory, before allocating anything.
 template <class T>
 std::vector<T> read_all(hid_t dataset);
 // Reads row `row` of a dataset of shape (F, inner...) as a flat vector.

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "common/error.h"
+#include "common/interrupt.h"
 #include "common/version.h"
 
 namespace coolgas {
@@ -85,6 +86,9 @@ int run_body(const std::string& tool, const std::function<int()>& body) {
   } catch (const WriteError& e) {
     report(tool, "error", e.what());
     return kExitWrite;
+  } catch (const Interrupted& e) {
+    std::cerr << one_line(tool + ": " + e.what()) << "\n";
+    return kExitInterrupted;
   } catch (const std::bad_alloc&) {
     report(tool, "error", "out of memory (the input asks for more than this machine has)");
     return kExitFailure;

@@ -20,7 +20,9 @@ namespace coolgas {
 //   default action is restored even if the parent ignored it;
 // - SIGXFSZ is ignored, so a file-size limit (`ulimit -f`) makes the write
 //   fail with EFBIG (reported) instead of killing the process;
-// - InputError -> "<tool>: error: <what>" and exit code 2, std::bad_alloc ->
+// - InputError -> "<tool>: error: <what>" and exit code 2; Interrupted
+//   (common/interrupt.h: SIGINT/SIGTERM in a tool that watches for them) ->
+//   "<tool>: interrupted by SIGINT <where>" and exit code 3; std::bad_alloc ->
 //   "out of memory" and exit 1, any other std::exception -> "<tool>:
 //   internal error: <what>" and exit 1; every message is one line of at most
 //   kMaxMessageChars characters (common/error.h).

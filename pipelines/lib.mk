@@ -24,7 +24,10 @@ numeric_sort = $(shell printf '%s\n' $(1) | sort -g)
 # An interrupted run (wall-time limit, pre-emption, Ctrl-C) leaves NAME.h5.part,
 # which the next make continues with --resume when it is newer than the scene;
 # only a .part that cannot be resumed (exit code 2: unreadable, no complete
-# dump) starts over. The wall time is then that of the last part.
+# dump) starts over. The wall time is then that of the last part. The run's
+# checkpoint moves with it (NAME.h5.checkpoint: extending run.t_end with
+# --resume NAME.h5 continues exactly), so no stale NAME.h5.part.checkpoint
+# is left, nor an older run's NAME.h5.checkpoint.
 define simulate
 @mkdir -p $(@D)
 $(LAUNCH) sh $(PIPE)timed-run.sh $(basename $@).wall_s sh -c '\
@@ -32,4 +35,5 @@ $(LAUNCH) sh $(PIPE)timed-run.sh $(basename $@).wall_s sh -c '\
     "$$0" --resume "$$1.part" --quiet; rc=$$?; [ $$rc -eq 2 ] || exit $$rc; \
   fi; exec "$$0" "$$2" -o "$$1.part" --force --quiet' $(BIN)/coolgas-simulate $@ $<
 mv $@.part $@
+if [ -f $@.part.checkpoint ]; then mv -f $@.part.checkpoint $@.checkpoint; else rm -f $@.checkpoint; fi
 endef

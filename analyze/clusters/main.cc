@@ -5,10 +5,12 @@
 
 #include "analyze/clusters/tool.h"
 #include "common/error.h"
+#include "common/interrupt.h"
 #include "common/tool_main.h"
 
 int main(int argc, char** argv) {
   return coolgas::run_tool("coolgas-clusters", [&] {
+    coolgas::watch_interrupts();  // its loops stop at SIGINT/SIGTERM: exit code 3
     coolgas::ClustersOptions opt;
     CLI::App app{
         "Clusters of a coolgas trajectory, by the definition of Pathak et al. (2014): the box of side L is cut\n"

@@ -10,6 +10,7 @@
 #include "analyze/clusters/mass_distribution.h"
 #include "common/trajectory/frame_reader.h"
 #include "common/error.h"
+#include "common/interrupt.h"
 #include "common/tsv.h"
 
 namespace coolgas {
@@ -66,8 +67,10 @@ void run_clusters(const ClustersOptions& opt, std::ostream& final_out) {
   MassHistogram hist(opt.bins_per_decade, traj.particles());
   ClusterLabeller labeller;
   Frame frame;
-  for (std::size_t dump : traj.dumps_nearest(opt.times, opt.exact_time)) {
-    traj.read(dump, frame);
+  const std::vector<std::size_t> dumps = traj.dumps_nearest(opt.times, opt.exact_time);
+  for (std::size_t i = 0; i < dumps.size(); ++i) {
+    throw_if_interrupted(i, dumps.size(), "dumps");
+    traj.read(dumps[i], frame);
     hist.clear();
     if (traj.aggregates()) {
       for (double m : frame.mass) hist.add(std::llround(m));

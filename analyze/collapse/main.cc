@@ -5,10 +5,12 @@
 
 #include "analyze/collapse/table.h"
 #include "common/error.h"
+#include "common/interrupt.h"
 #include "common/tool_main.h"
 
 int main(int argc, char** argv) {
   return coolgas::run_tool("coolgas-collapse", [&] {
+    coolgas::watch_interrupts();  // its loops stop at SIGINT/SIGTERM: exit code 3
     coolgas::CollapseOptions o;
     std::string t_window = ":", eta_window;
     CLI::App app{

@@ -11,6 +11,7 @@
 
 #include "analyze/collapse/quality.h"
 #include "common/error.h"
+#include "common/interrupt.h"
 #include "common/tsv.h"
 
 namespace coolgas {
@@ -40,6 +41,7 @@ Minimum simplex(const Problem& problem, double theta0, double z0) {
   gsl_vector_view x = gsl_vector_view_array(start, 2), s = gsl_vector_view_array(step, 2);
   gsl_multimin_fminimizer_set(m.get(), &f, &x.vector, &s.vector);
   for (int iter = 0; iter < 2000; ++iter) {
+    throw_if_interrupted("during the search for theta and z; no table written");
     if (gsl_multimin_fminimizer_iterate(m.get()) != GSL_SUCCESS) break;
     if (gsl_multimin_test_size(gsl_multimin_fminimizer_size(m.get()), 1e-7) == GSL_SUCCESS) break;
   }
@@ -96,6 +98,12 @@ double sum_of_squares(const std::vector<double>& v) {
   return ss;
 }
 
+std::size_t total_runs(const std::vector<SizeEnsemble>& sizes) {
+  std::size_t n = 0;
+  for (const auto& s : sizes) n += s.runs.size();
+  return n;
+}
+
 // The stratified delete-one jackknife over runs (optimize.h).
 void jackknife_runs(const std::vector<SizeEnsemble>& sizes, const Minimum& best, double min_overlap, CollapseFit& fit) {
   double var_theta = 0, var_z = 0;
@@ -104,6 +112,7 @@ void jackknife_runs(const std::vector<SizeEnsemble>& sizes, const Minimum& best,
     const std::size_t n = sizes[s].runs.size();
     std::vector<double> thetas, zs;
     for (std::size_t r = 0; r < n; ++r) {
+      throw_if_interrupted(std::size_t(fit.replicas), total_runs(sizes), "jackknife replicas");
       std::vector<std::size_t> keep;
       for (std::size_t k = 0; k < n; ++k)
         if (k != r) keep.push_back(k);
@@ -128,6 +137,7 @@ void bootstrap(const std::vector<ScalingCurve>& curves, const Minimum& best, con
   gsl_rng_set(rng.get(), static_cast<unsigned long>(search.seed));
   std::vector<double> thetas, zs;
   for (int b = 0; b < search.bootstrap; ++b) {
+    throw_if_interrupted(std::size_t(b), std::size_t(search.bootstrap), "bootstrap replicas");
     const auto replica =
         fit.kind == BootstrapKind::kErrors ? perturb(curves, rng.get()) : resample_rows(curves, rng.get());
     const Minimum m = minimise(replica, best.theta, best.z, search.min_overlap_decades);

@@ -5,10 +5,12 @@
 
 #include "analyze/shape/tool.h"
 #include "common/error.h"
+#include "common/interrupt.h"
 #include "common/tool_main.h"
 
 int main(int argc, char** argv) {
   return coolgas::run_tool("coolgas-shape", [&] {
+    coolgas::watch_interrupts();  // its loops stop at SIGINT/SIGTERM: exit code 3
     coolgas::ShapeOptions opt;
     bool series = false, clusters = false;
     CLI::App app{

@@ -7,6 +7,7 @@
 #include "analyze/shape/mass_radius.h"
 #include "common/trajectory/frame_reader.h"
 #include "common/error.h"
+#include "common/interrupt.h"
 #include "common/tsv.h"
 
 namespace coolgas {
@@ -96,8 +97,10 @@ void run_shape(const ShapeOptions& opt, std::ostream& final_out) {
   TsvWriter out(os, "coolgas-shape", provenance(traj, opt, fit), columns(opt.table));
   ClusterShapes shapes;
   Frame frame;
-  for (std::size_t dump : traj.dumps_nearest(opt.times, opt.exact_time)) {
-    traj.read(dump, frame);
+  const std::vector<std::size_t> dumps = traj.dumps_nearest(opt.times, opt.exact_time);
+  for (std::size_t i = 0; i < dumps.size(); ++i) {
+    throw_if_interrupted(i, dumps.size(), "dumps");
+    traj.read(dumps[i], frame);
     const std::vector<ClusterShape> s =
         traj.aggregates() ? aggregate_shapes(frame.mass) : shapes.of_particles(cluster_grid_of_dump(frame.L, traj.path(), frame.dump), frame.position);
     write_frame(out, opt, frame.time, s, mass_radius(s, opt.bins_per_decade, fit));

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "common/error.h"
+#include "common/interrupt.h"
 #include "common/tsv.h"
 
 namespace coolgas::smoluchowski {
@@ -88,7 +89,12 @@ void Integrator::step(double t_limit) {
 }
 
 void Integrator::advance_to(double t) {
-  while (t_ < t) step(t);
+  while (t_ < t) {
+    if (interrupted())
+      throw Interrupted(interrupt_signal(), "at t = " + format_number(t_) + " of a solution to t = " + format_number(t) +
+                                                "; the rows written so far are complete");
+    step(t);
+  }
 }
 
 void Integrator::reset(double t, const std::vector<double>& c) {

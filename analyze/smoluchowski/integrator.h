@@ -37,7 +37,8 @@ class Integrator {
 
   // One adaptive step that does not pass t_limit.
   void step(double t_limit);
-  // Steps until time() == t exactly (t >= time()).
+  // Steps until time() == t exactly (t >= time()); Interrupted
+  // (common/interrupt.h) between two steps once SIGINT/SIGTERM arrived.
   void advance_to(double t);
   // Replaces the state (used to go back and refine a crossing time).
   void reset(double t, const std::vector<double>& c);

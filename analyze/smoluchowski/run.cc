@@ -9,6 +9,7 @@
 #include "analyze/smoluchowski/kernel.h"
 #include "analyze/smoluchowski/solve.h"
 #include "common/error.h"
+#include "common/interrupt.h"
 #include "common/tsv.h"
 
 namespace coolgas::smoluchowski {
@@ -198,6 +199,13 @@ class LeakWatch {
   bool warned_ = false;
 };
 
+// Between two steps, so every row written so far is whole; only the table's
+// '# end' line is missing (data-schema/tsv-tables.md).
+[[noreturn]] void stop_interrupted(double t_user) {
+  throw Interrupted(interrupt_signal(), "at t = " + format_number(t_user) +
+                                            "; the rows written so far are complete, the '# end' line is missing");
+}
+
 }  // namespace
 
 RunSummary run(const RunOptions& o, std::ostream& out, std::ostream& warn) {
@@ -220,6 +228,7 @@ RunSummary run(const RunOptions& o, std::ostream& out, std::ostream& warn) {
   bool reached = false;
   for (const auto& cp : schedule(o, tables.wants_series(), t_stop)) {
     while (it.time() < cp.t && !reached) {
+      if (interrupted()) stop_interrupted(it.time() / f);
       const double t_a = it.time();
       const auto c_a = it.state();
       it.step(cp.t);

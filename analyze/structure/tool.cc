@@ -9,6 +9,7 @@
 #include "analyze/structure/growing_length.h"
 #include "common/trajectory/frame_reader.h"
 #include "common/error.h"
+#include "common/interrupt.h"
 #include "common/tsv.h"
 
 namespace coolgas {
@@ -126,6 +127,7 @@ void run_structure(const StructureOptions& opt, std::ostream& final_out) {
   TsvWriter out(os, "coolgas-structure", provenance(traj, opt, n, frame.L), columns(opt.table));
   FrameStructure fs(n);
   for (std::size_t i = 0; i < dumps.size(); ++i) {
+    throw_if_interrupted(i, dumps.size(), "dumps");
     if (i > 0) traj.read(dumps[i], frame);
     const auto weights = frame_weights(traj, frame);
     const Weights w = weights_of(weights, frame.particles());

@@ -5,10 +5,12 @@
 
 #include "analyze/velocity/tool.h"
 #include "common/error.h"
+#include "common/interrupt.h"
 #include "common/tool_main.h"
 
 int main(int argc, char** argv) {
   return coolgas::run_tool("coolgas-velocity", [&] {
+    coolgas::watch_interrupts();  // its loops stop at SIGINT/SIGTERM: exit code 3
     coolgas::VelocityOptions o;
     bool tail = false, series = false;
     CLI::App app{

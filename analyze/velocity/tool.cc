@@ -8,6 +8,7 @@
 #include "analyze/velocity/distribution.h"
 #include "analyze/velocity/tail.h"
 #include "common/error.h"
+#include "common/interrupt.h"
 #include "common/tool_main.h"
 #include "common/tsv.h"
 
@@ -103,8 +104,10 @@ void run_velocity(const VelocityOptions& opt, std::ostream& final_out) {
   Trajectory traj(opt.input, kVelocity);
   TsvWriter out(os, "coolgas-velocity", provenance(traj, opt), columns(opt.table));
   Frame frame;
-  for (std::size_t dump : traj.dumps_nearest(opt.times, opt.exact_time)) {
-    traj.read(dump, frame);
+  const std::vector<std::size_t> dumps = traj.dumps_nearest(opt.times, opt.exact_time);
+  for (std::size_t i = 0; i < dumps.size(); ++i) {
+    throw_if_interrupted(i, dumps.size(), "dumps");
+    traj.read(dumps[i], frame);
     const SpeedMoments m = speed_moments(frame.velocity);
     hist.fill(frame.velocity, m.v_rms);
     const auto pts = tail_points(hist, opt.tail_from, opt.min_count);

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "common/error.h"
+#include "common/memory.h"
 #include "common/tool_main.h"
 #include "common/trajectory/layout.h"
 #include "common/trajectory/run_parameters.h"
@@ -101,6 +102,12 @@ void Trajectory::check_element(const std::string& element, hsize_t per_particle)
                      (per_particle == 1 ? ")" : " x 3)"));
   const auto n = static_cast<std::int64_t>(dims[1]);
   if (n < 1) throw InputError(path_ + ": " + element + "/value holds no particles");
+  // Checked before a frame's buffers are sized by it (a damaged file may declare any shape).
+  const double bytes = double(n) * double(per_particle) * 8, memory = physical_memory_bytes();
+  if (n > kMaxStoredParticles || bytes > memory)
+    throw InputError(path_ + ": " + element + "/value holds rows of " + std::to_string(n) + " particles (" +
+                     bytes_text(bytes) + " per dump); a trajectory holds at most " +
+                     std::to_string(kMaxStoredParticles) + " (32-bit ids), and this machine has " + bytes_text(memory));
   if (n_ != 0 && n != n_)
     throw InputError(path_ + ": " + element + "/value has " + std::to_string(n) + " particles, other elements " +
                      std::to_string(n_));
@@ -223,7 +230,7 @@ Provenance Trajectory::provenance() const {
   Provenance p{{"input", path_}};
   const std::string parameters(layout::kParameters);
   if (!h5::exists(file_.id(), parameters)) return p;
-  const RunParameters run = read_parameters(h5::open_group(file_.id(), parameters).id(), path_);
+  const RunParameters run = read_file_parameters(file_.id(), path_);
   p.emplace_back("seed", std::to_string(run.seed));
   for (auto& entry : physics_provenance(run)) p.push_back(std::move(entry));
   return p;

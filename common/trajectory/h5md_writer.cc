@@ -119,7 +119,7 @@ H5mdWriter H5mdWriter::reopen(const std::string& path) {
   const hid_t f = w.file_.id();
   if (!h5::exists(f, std::string(kRestartTime)))
     throw InputError("'" + path + "' is not a coolgas trajectory (no /restart)");
-  const RunParameters p = read_parameters(h5::open_group(f, std::string(kParameters)).id(), path);
+  const RunParameters p = read_file_parameters(f, path);
   w.n_ = p.N;
   w.box_ = p.L;
   w.layout_ = layout_of(f);

@@ -2,6 +2,7 @@
 
 #include "common/error.h"
 #include "common/hdf5_file.h"
+#include "common/memory.h"
 #include "common/trajectory/layout.h"
 
 namespace coolgas {
@@ -17,18 +18,34 @@ struct Reader {
     throw InputError("cannot resume from '" + path + "': " + what);
   }
 
-  // Row `row` of an element's value, which must hold `per_row` numbers.
+  // Row `row` of an element's value, whose rows must have the shape `inner`
+  // ({N, 3} or {N}): checked before anything is read, so a file that
+  // declares a huge shape allocates nothing.
   template <class T>
-  std::vector<T> row(std::string_view element, hsize_t row, std::size_t per_row) const {
+  std::vector<T> row(std::string_view element, hsize_t row, const std::vector<hsize_t>& inner) const {
     const std::string value = value_of(element);
     if (!h5::exists(file, value)) fail("missing " + value);
     h5::Handle ds = h5::open_dataset(file, value);
     const auto dims = h5::shape(ds.id());
     if (dims.empty() || dims[0] <= row) fail(value + " has no row for the last complete dump");
-    std::vector<T> v = h5::read_row<T>(ds.id(), row);
-    if (v.size() != per_row)
-      fail(value + " holds " + std::to_string(v.size()) + " numbers per dump, expected " + std::to_string(per_row));
-    return v;
+    if (std::vector<hsize_t>(dims.begin() + 1, dims.end()) != inner)
+      fail(value + " has shape " + shape_text(dims) + ", but /parameters/N = " + std::to_string(inner[0]) +
+           " asks for rows of shape " + shape_text(inner));
+    return h5::read_row<T>(ds.id(), row);
+  }
+
+  static std::string shape_text(const std::vector<hsize_t>& dims) {
+    std::string s = "(";
+    for (std::size_t k = 0; k < dims.size(); ++k) s += (k ? ", " : "") + std::to_string(dims[k]);
+    return s + ")";
+  }
+
+  // The last dump's arrays, N times `bytes_per_particle`, must fit in memory.
+  void check_memory(std::int64_t N, double bytes_per_particle) const {
+    const double need = double(N) * bytes_per_particle, have = physical_memory_bytes();
+    if (need > have)
+      fail("/parameters/N = " + std::to_string(N) + " particles need " + bytes_text(need) +
+           " for the last dump alone; this machine has " + bytes_text(have));
   }
 
   std::int64_t counter(std::string_view dataset, hsize_t row) const {
@@ -58,8 +75,9 @@ ResumeFrame read_resume_frame(const std::string& path) {
   const Reader in{f.id(), path};
   if (!h5::exists(f.id(), std::string(kParameters))) in.fail("missing " + std::string(kParameters));
   ResumeFrame r;
-  r.params = read_parameters(h5::open_group(f.id(), std::string(kParameters)).id(), path);
-  if (r.params.N < 1) in.fail("/parameters/N = " + std::to_string(r.params.N) + " is not positive");
+  r.params = read_file_parameters(f.id(), path);
+  r.aggregates = layout_of(f.id()) == Layout::kAggregation;
+  in.check_memory(r.params.N, 3 * 8 + 3 * 8 + 3 * 4 + (r.aggregates ? 4 + 8 + 8 : 0));
   const auto last_time = last_dump_time(f.id());
   if (!last_time) in.fail("it holds no complete dump");
   const hsize_t last = complete_dumps(f.id()) - 1;  // rows after it belong to an interrupted burst
@@ -67,15 +85,14 @@ ResumeFrame read_resume_frame(const std::string& path) {
   r.collisions = in.counter(kRestartCollisions, last);
   r.below_delta = in.counter(kRestartBelowDelta, last);
   r.particles = static_cast<std::size_t>(r.params.N);
-  const std::size_t n = r.particles;
-  r.position = in.row<double>(kPosition, last, 3 * n);
-  r.velocity = in.row<double>(kVelocity, last, 3 * n);
-  r.image = in.row<std::int32_t>(kImage, last, 3 * n);
-  r.aggregates = layout_of(f.id()) == Layout::kAggregation;
+  const auto n = static_cast<hsize_t>(r.particles);
+  r.position = in.row<double>(kPosition, last, {n, 3});
+  r.velocity = in.row<double>(kVelocity, last, {n, 3});
+  r.image = in.row<std::int32_t>(kImage, last, {n, 3});
   if (r.aggregates) {
-    r.id = in.row<std::int32_t>(kId, last, n);
-    r.mass = in.row<double>(kMass, last, n);
-    r.diameter = in.row<double>(kDiameter, last, n);
+    r.id = in.row<std::int32_t>(kId, last, {n});
+    r.mass = in.row<double>(kMass, last, {n});
+    r.diameter = in.row<double>(kDiameter, last, {n});
     in.check_aggregates(r);
   }
   return r;

@@ -29,9 +29,7 @@ std::vector<double> read_doubles(hid_t file, const std::string& path, const std:
 
 RunInfo read_run_info(const std::string& path) {
   h5::Handle f = h5::open_file(path, h5::Mode::kReadOnly);
-  if (!h5::exists(f.id(), std::string(layout::kParameters))) not_a_trajectory(path, std::string(layout::kParameters));
-  h5::Handle g = h5::open_group(f.id(), std::string(layout::kParameters));
-  RunInfo info{path, read_parameters(g.id(), path)};
+  RunInfo info{path, read_file_parameters(f.id(), path)};
   const RunParameters& p = info.params;
   if (!(p.L > 0) || p.N <= 0)
     throw InputError(path + ": /parameters has N = " + std::to_string(p.N) + ", L = " + format_number(p.L) +

@@ -5,6 +5,7 @@
 #include "common/error.h"
 #include "common/hdf5_file.h"
 #include "common/trajectory/collision_models.h"
+#include "common/trajectory/layout.h"
 
 // The table names only the fields a row needs; the others keep their member
 // defaults on purpose. GCC 12 warns about that even so.
@@ -37,7 +38,7 @@ bool present_for(const RunParameters& p, const ParameterField& f) {
   return !is_model_specific(f) || model_uses(p.model, f.name);
 }
 
-void read_field(hid_t g, const std::string& path, const ParameterField& f, RunParameters& p) {
+void read_field_unchecked(hid_t g, const std::string& path, const ParameterField& f, RunParameters& p) {
   const std::string name(f.name);
   if (!h5::has_attr(g, name)) throw InputError(path + ": not a coolgas trajectory: missing /parameters attribute '" + name + "'");
   if (h5::attr_class(g, name) != class_of(f.member))
@@ -49,6 +50,24 @@ void read_field(hid_t g, const std::string& path, const ParameterField& f, RunPa
                         [&](std::string RunParameters::*m) { p.*m = h5::read_attr_string(g, name); },
                         [&](std::optional<double> RunParameters::*m) { p.*m = h5::read_attr_double(g, name); }},
              f.member);
+}
+
+// A damaged attribute (its header or value unreadable) is the file's
+// problem, named with the field, not an internal error.
+void read_field(hid_t g, const std::string& path, const ParameterField& f, RunParameters& p) {
+  try {
+    read_field_unchecked(g, path, f, p);
+  } catch (const h5::Error& e) {
+    throw InputError(path + ": /parameters attribute '" + std::string(f.name) + "' cannot be read: the file is damaged" +
+                     (e.cause.empty() ? "" : " (" + e.cause + ")"));
+  }
+}
+
+// N bounds every array a reader allocates: ids are 32-bit.
+void check_particle_count(const RunParameters& p, const std::string& path) {
+  if (p.N < 1 || p.N > kMaxStoredParticles)
+    throw InputError(path + ": /parameters/N = " + std::to_string(p.N) + " is out of range: a trajectory holds 1 to " +
+                     std::to_string(kMaxStoredParticles) + " particles (32-bit ids)");
 }
 
 }  // namespace
@@ -117,7 +136,21 @@ RunParameters read_parameters(hid_t g, const std::string& path) {
   }
   for (const ParameterField& f : run_parameter_fields())
     if (f.name != "model" && present_for(p, f)) read_field(g, path, f, p);
+  check_particle_count(p, path);
   return p;
+}
+
+RunParameters read_file_parameters(hid_t file, const std::string& path) {
+  const std::string group(layout::kParameters);
+  if (!h5::exists(file, group)) throw InputError(path + ": not a coolgas trajectory: missing " + group);
+  h5::Handle g;
+  try {
+    g = h5::open_group(file, group);
+  } catch (const h5::Error& e) {
+    throw InputError(path + ": " + group + " cannot be opened: the file is damaged" +
+                     (e.cause.empty() ? "" : " (" + e.cause + ")"));
+  }
+  return read_parameters(g.id(), path);
 }
 
 std::optional<std::string> physics_difference(const RunParameters& a, const RunParameters& b) {

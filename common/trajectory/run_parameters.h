@@ -61,7 +61,15 @@ void write_parameters(hid_t group, const RunParameters& p);
 // missing or of the wrong type, or the model is unknown. A model-specific
 // attribute of a model that does not use it (version 2 wrote r0 = 1 for
 // viscoelastic files) is ignored.
+// A damaged attribute is an InputError naming it; N must lie in
+// [1, kMaxStoredParticles], so no reader allocates for an absurd N.
 RunParameters read_parameters(hid_t group, const std::string& path);
+// The same from the file's /parameters group (InputError if it is missing or
+// cannot be opened).
+RunParameters read_file_parameters(hid_t file, const std::string& path);
+
+// The most particles a trajectory holds: particle ids are 32-bit integers.
+inline constexpr std::int64_t kMaxStoredParticles = 2147483647;
 
 // The first field of role kPhysics in which a and b differ, e.g.
 // "L = 32 vs 48" or "viscoelastic_b = 0.1 vs 0.9"; nothing if none does.

@@ -1,7 +1,5 @@
 #include "simulate/run/scene.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -12,6 +10,7 @@
 #include <toml.hpp>
 
 #include "common/error.h"
+#include "common/memory.h"
 #include "common/tsv.h"
 #include "simulate/engine/cell_grid.h"
 
@@ -379,22 +378,9 @@ std::string about(double x) {
   return s.str();
 }
 
-// Bytes with a decimal unit: "180 TB".
-std::string bytes_text(double b) {
-  const char* units[] = {"B", "kB", "MB", "GB", "TB", "PB", "EB"};
-  int u = 0;
-  while (b >= 1000 && u < 6) b /= 1000, ++u;
-  return about(b) + " " + units[u];
-}
-
 // Points of the log grid 10^(k/per_decade) in [t_min, t_end], about.
 double grid_points(const Scene& s, int per_decade) {
   return std::max(0.0, double(per_decade) * std::log10(s.t_end / s.t_min)) + 1;
-}
-
-double physical_memory() {
-  const long pages = sysconf(_SC_PHYS_PAGES), size = sysconf(_SC_PAGE_SIZE);
-  return pages > 0 && size > 0 ? double(pages) * double(size) : kInf;
 }
 
 }  // namespace
@@ -402,7 +388,7 @@ double physical_memory() {
 void check_scene_size(const Scene& s) {
   const std::string box = check_box_fits_grid(s.L, 1.0);
   if (!box.empty()) throw InputError(box);
-  check_scene_cost(s, physical_memory());
+  check_scene_cost(s, physical_memory_bytes());
 }
 
 void check_scene_cost(const Scene& s, double memory_bytes) {

@@ -4,17 +4,19 @@
 
 #include <chrono>
 #include <cmath>
-#include <csignal>
 #include <cstdlib>
 #include <memory>
 #include <optional>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 
 #include "common/error.h"
+#include "common/interrupt.h"
 #include "common/trajectory/collision_models.h"
 #include "common/trajectory/h5md_writer.h"
 #include "common/output_file.h"
@@ -31,17 +33,6 @@
 namespace coolgas {
 
 namespace {
-
-volatile std::sig_atomic_t g_interrupt = 0;
-extern "C" void on_signal(int sig) { g_interrupt = sig; }
-
-void install_signal_handlers() {
-  struct sigaction sa {};
-  sa.sa_handler = on_signal;
-  sigemptyset(&sa.sa_mask);
-  sigaction(SIGINT, &sa, nullptr);
-  sigaction(SIGTERM, &sa, nullptr);
-}
 
 // Events between progress and checkpoint checks: small enough for a lively
 // display, large enough that the check costs nothing.
@@ -64,12 +55,21 @@ double checkpoint_interval() {
   return v;
 }
 
-std::string read_file(const std::string& path) {
-  std::ifstream f(path);
-  if (!f) throw InputError("cannot read scene '" + path + "' (missing or unreadable)");
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
+// The scene's text. A directory opens like a file on Linux and reads as
+// nothing, an empty scene, so it is refused by name; at most one byte more
+// than a scene may hold is read (parse_scene refuses that), so a device such
+// as /dev/zero cannot fill the memory.
+std::string read_scene_file(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError("scene '" + shown(path) + "' is a directory; give a scene file (TOML)");
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw InputError("cannot read scene '" + shown(path) + "': " + std::strerror(errno));
+  std::string text(kMaxSceneBytes + 1, '\0');
+  f.read(text.data(), std::streamsize(text.size()));
+  if (f.bad()) throw InputError("cannot read scene '" + shown(path) + "': " + std::strerror(errno));
+  text.resize(std::size_t(f.gcount()));
+  return text;
 }
 
 ObservableRow row_of(const Observables& o) {
@@ -168,7 +168,7 @@ class Driver {
   bool advance_to(double t) {
     while (true) {
       const auto slice_start = clock::now();
-      const RunStatus status = engine_.run_until(t, kEventsPerSlice, &g_interrupt);
+      const RunStatus status = engine_.run_until(t, kEventsPerSlice, interrupt_flag());
       busy_seconds_ += std::chrono::duration<double>(clock::now() - slice_start).count();
       if (status == RunStatus::kInterrupted) return false;
       if (std::chrono::duration<double>(clock::now() - last_checkpoint_).count() >= interval_) checkpoint();
@@ -180,7 +180,7 @@ class Driver {
   int finish_interrupted() {
     writer_.flush();
     checkpoint();
-    std::cerr << "\ncoolgas-simulate: interrupted by signal " << int(g_interrupt) << " at t = " << engine_.now()
+    std::cerr << "\ncoolgas-simulate: interrupted by " << signal_name(interrupt_signal()) << " at t = " << engine_.now()
               << "; checkpoint written, continue with --resume\n";
     return kExitInterrupted;
   }
@@ -264,7 +264,7 @@ int drive(Driver& driver, const Scene& scene) {
 }
 
 int start_new(const SimulationRequest& req) {
-  Scene scene = parse_scene(read_file(req.scene_path), req.scene_path, req.overrides);
+  Scene scene = parse_scene(read_scene_file(req.scene_path), req.scene_path, req.overrides);
   const double interval = checkpoint_interval();
   const std::string out = req.output.empty() ? default_output(req.scene_path) : req.output;
   check_writable(out, req.force);
@@ -280,12 +280,12 @@ int start_new(const SimulationRequest& req) {
         if (phase || setup.due())
           setup.show("set-up (" + Progress::format_duration(setup.elapsed()) + "): " + line);
       };
-      engine = make_engine(scene, initial_state(scene, &g_interrupt, report), 0.0);
+      engine = make_engine(scene, initial_state(scene, interrupt_flag(), report), 0.0);
     } catch (const SetupInterrupted&) {
     }
   }
-  if (g_interrupt) {
-    std::cerr << "coolgas-simulate: interrupted by signal " << int(g_interrupt) << " during set-up; nothing written\n";
+  if (interrupted()) {
+    std::cerr << "coolgas-simulate: interrupted by " << signal_name(interrupt_signal()) << " during set-up; nothing written\n";
     return kExitInterrupted;
   }
   // Write the first dump to a temporary name and move it into place only
@@ -295,15 +295,20 @@ int start_new(const SimulationRequest& req) {
   const std::string tmp = out + ".partial";
   H5mdWriter writer = H5mdWriter::create(tmp, parameters_of(scene), true);
   Driver driver(scene, *engine, writer, out, req.quiet, interval);
+  // The checkpoint (replacing an old run's at once) is in place before the
+  // trajectory: from the moment the file exists, resume is exact from any
+  // stop. (A kill between the two renames leaves an old run's file, if any,
+  // beside this run's checkpoint: the same physics and seed, as the
+  // checkpoint's check of the physics ensures, so the same t = 0 state.)
   try {
     driver.start();
-    remove_checkpoint(out);
+    driver.checkpoint();
     writer.rename(out);  // errors from here on name the real output
   } catch (...) {
     std::filesystem::remove(tmp);
+    remove_checkpoint(out);
     throw;
   }
-  driver.checkpoint();  // from here on, resume is exact from any stop
   return drive(driver, scene);
 }
 
@@ -317,6 +322,10 @@ int resume(const SimulationRequest& req) {
   ResumePoint rp = read_resume_point(req.resume);
   const Scene scene = parse_scene(rp.scene_toml, req.resume + ":/parameters/scene", req.overrides);
   if (rp.time >= scene.t_end) {
+    // Killed after its last dump, the file still has the killed writer's
+    // "open for writing" flags: opening it to append and closing it clears
+    // them, so that every program reads it.
+    H5mdWriter::reopen(req.resume);
     std::cerr << "coolgas-simulate: '" << req.resume << "' already reached run.t_end = " << scene.t_end
               << "; nothing to do (extend it with --set run.t_end=...)\n";
     return kExitOk;
@@ -347,7 +356,7 @@ int resume(const SimulationRequest& req) {
 int run_simulation(const SimulationRequest& req) {
   // Installed first, so a signal during set-up is noticed (a shell starts
   // background jobs with SIGINT ignored, and the default would leave no message).
-  install_signal_handlers();
+  watch_interrupts();
   return req.resume.empty() ? start_new(req) : resume(req);
 }
 

@@ -61,9 +61,10 @@ while [ "$k" -lt "$runs" ]; do
     note="resumed"
   fi
   ok_valid=0 ok_resume=0 ok_same=0
-  $validate "$out" >"$dir/validate.out" 2>&1 && ok_valid=1
+  # (time limits: a reader that hangs on a damaged file is a failure too)
+  timeout 60 $validate "$out" >"$dir/validate.out" 2>&1 && ok_valid=1
   [ "$ok_valid" = 1 ] || cp "$out" "$dir/failed-validate-$k.h5"
-  $sim --resume "$out" >/dev/null 2>"$dir/resume.err" && ok_resume=1
+  timeout 120 $sim --resume "$out" >/dev/null 2>"$dir/resume.err" && ok_resume=1
   [ "$ok_resume" = 1 ] || cp "$dir/resume.err" "$dir/failed-resume-$k.err"
   h5diff -q "$dir/whole.h5" "$out" >/dev/null 2>&1 && ok_same=1
   validated=$((validated + ok_valid)) resumed=$((resumed + ok_resume)) identical=$((identical + ok_same))

@@ -2,7 +2,8 @@
 // SIGINT, SIGTERM or SIGKILL at several moments and resumed to the end holds
 // every dump and observable bit for bit as the uninterrupted run; the dump
 // grid does not change the trajectory; set-up stops at once on a signal; a
-// damaged checkpoint is refused with one line.
+// damaged checkpoint, damaged /parameters and absurd particle counts are
+// refused with one line (exit code 2) before anything is allocated.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -196,6 +197,80 @@ TEST(ResumeCliDamage, ADamagedCheckpointIsRefusedWithOneLine) {
   test::expect_refused_with_one_line(test::run_command(test::simulate("--resume " + out + " --set run.t_end=20")),
                                      "ends early");
   EXPECT_EQ(test::run_command(test::bin("coolgas-validate") + " " + out).exit_code, 0);
+}
+
+// A finished short run to damage; its checkpoint is removed, so --resume reads the trajectory itself.
+std::string short_run(const std::string& dir) {
+  const std::string out = dir + "/run.h5";
+  EXPECT_EQ(test::run_command(test::simulate(write_scene(dir) + " -o " + out + " --set run.t_end=10")).exit_code, 0);
+  std::filesystem::remove(out + ".checkpoint");
+  return out;
+}
+
+// Overwrites the 4 bytes at the first `signature` of an HDF5 structure in the file.
+void overwrite_signature(const std::string& path, const std::string& signature) {
+  std::fstream f(path, std::ios::in | std::ios::out | std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  const auto at = bytes.find(signature);
+  ASSERT_NE(at, std::string::npos) << signature;
+  f.seekp(std::streamoff(at));
+  f.write("\xff\xff\xff\xff", 4);
+}
+
+std::string resume_to_20(const std::string& path) {
+  return test::simulate("--resume " + path + " --set run.t_end=20");
+}
+
+// The run parameters are attributes of /parameters: the strings live in the
+// global heap (signature GCOL), the attribute table in a fractal heap (FHDB,
+// the only one in the file). Either damaged, the reader names the first
+// field it cannot read (the model, read first) instead of an HDF5 error.
+TEST(ResumeCliDamage, DamagedParametersAreOneLineNamingTheField) {
+  const std::string dir = test::scratch_dir("resume_damaged_parameters");
+  const std::string run = short_run(dir);
+  for (const char* signature : {"GCOL", "FHDB"}) {
+    const std::string copy = dir + "/damaged_" + signature + ".h5";
+    std::filesystem::copy_file(run, copy);
+    overwrite_signature(copy, signature);
+    test::expect_refused_with_one_line(test::run_command(resume_to_20(copy)),
+                                       "/parameters attribute 'model' cannot be read: the file is damaged", signature);
+  }
+}
+
+// Stored particle counts that would need terabytes: refused by the reader's
+// checks (N against 32-bit ids, the memory, the datasets' shapes) before
+// anything is allocated, instead of "out of memory" or the kernel's OOM killer.
+TEST(ResumeCliDamage, AHugeStoredParticleCountIsRefusedBeforeAnyAllocation) {
+  const std::string dir = test::scratch_dir("resume_huge_n");
+  const std::string run = short_run(dir);
+  const auto with_n = [&](std::int64_t n) {
+    const std::string copy = dir + "/N" + std::to_string(n) + ".h5";
+    std::filesystem::copy_file(run, copy);
+    h5::Handle f = h5::open_file(copy, h5::Mode::kReadWrite);
+    h5::write_attr(h5::open_group(f.id(), "/parameters").id(), "N", n);
+    return copy;
+  };
+  test::expect_refused_with_one_line(test::run_command(resume_to_20(with_n(1000000000000))),
+                                     "/parameters/N = 1000000000000 is out of range");
+  // In range for 32-bit ids, but 120 GB for the last dump alone (or, on a
+  // machine that large, not the datasets' shape): refused either way.
+  test::expect_refused_with_one_line(test::run_command(resume_to_20(with_n(2000000000))),
+                                     "/parameters/N = 2000000000");
+  // A position dataset declaring 10^12 particles per dump (chunked: it takes no space on disk).
+  const std::string copy = dir + "/huge_dataset.h5";
+  std::filesystem::copy_file(run, copy);
+  {
+    h5::Handle f = h5::open_file(copy, h5::Mode::kReadWrite);
+    const std::string value = "/particles/all/position/value";
+    const hsize_t frames = h5::shape(h5::open_dataset(f.id(), value).id())[0];
+    ASSERT_GE(H5Ldelete(f.id(), value.c_str(), H5P_DEFAULT), 0);
+    const hsize_t dims[3] = {frames, 1000000000000ULL, 3}, chunk[3] = {1, 4096, 3};
+    h5::Handle space(H5Screate_simple(3, dims, nullptr)), dcpl(H5Pcreate(H5P_DATASET_CREATE));
+    H5Pset_chunk(dcpl.id(), 3, chunk);
+    h5::Handle ds(H5Dcreate2(f.id(), value.c_str(), H5T_IEEE_F64LE, space.id(), H5P_DEFAULT, dcpl.id(), H5P_DEFAULT));
+    ASSERT_TRUE(ds.valid());
+  }
+  test::expect_refused_with_one_line(test::run_command(resume_to_20(copy)), "1000000000000, 3)");
 }
 
 }  // namespace

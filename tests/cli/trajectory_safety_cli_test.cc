@@ -13,6 +13,7 @@
 #include "common/error.h"
 #include "common/hdf5_file.h"
 #include "tests/support/run_command.h"
+#include "tests/support/simulate_cli.h"
 
 namespace coolgas {
 namespace {
@@ -100,6 +101,26 @@ TEST_F(TrajectorySafety, ToolsReadAFileWhileItIsWrittenAndASecondWriterIsRefused
   EXPECT_NE(r.out.find("resume=2"), std::string::npos) << r.out << r.err;
   EXPECT_NE(r.err.find("is being written by another coolgas-simulate"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+}
+
+// A run killed after a dump leaves the killed writer's "open for writing"
+// flags in its file; a --resume that has nothing left to do (its t_end is
+// that dump) still clears them, so that programs that are not SWMR readers
+// (h5dump, h5diff, MDAnalysis) open the file.
+TEST_F(TrajectorySafety, AResumeWithNothingToDoClosesAKilledRunsFileProperly) {
+  const std::string out = dir + "/killed.h5";
+  run_command("(" + bin("coolgas-simulate") + " " + scene + " -q -o " + out + " --set run.t_end=1e8 & p=$!; sleep 1; " +
+              "kill -KILL $p; wait $p)");
+  const hid_t plain = H5Fopen(out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_LT(plain, 0) << "the killed writer left no flags: nothing to test";
+  const auto times = dump_times(out);
+  const auto r = run_command(bin("coolgas-simulate") + " -q --resume " + out + " --set run.t_end=" +
+                             test::format_exact(times.back()));
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("nothing to do"), std::string::npos) << r.err;
+  h5::Handle reopened(H5Fopen(out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
+  EXPECT_TRUE(reopened.valid());
+  EXPECT_EQ(dump_times(out), times);
 }
 
 // ulimit -f stands for a full disk or quota: SIGXFSZ is ignored, so the write

@@ -155,6 +155,8 @@ class Corpus:
         for what, args in [
             ("missing scene", self.path("missing.toml")),
             ("scene is a directory", self.path("a_directory")),
+            ("scene unreadable (read fails)", "/proc/self/mem"),
+            ("scene /dev/zero", "/dev/zero"),
             ("scene and --resume", f"{scene} --resume {scene}"),
             ("nothing", ""),
             ("--resume missing", "--resume " + self.path("missing.h5")),
@@ -252,6 +254,27 @@ class Corpus:
         fault("L_nan", set_attr("L", np.nan))
         fault("L_tiny", set_attr("L", 2.0))
         fault("L_huge", set_attr("L", 3e9))
+
+        # Absurd particle counts: refused before anything is allocated.
+        fault("N_1e12", set_attr("N", np.int64(10**12)))
+        fault("N_2e9", set_attr("N", np.int64(2 * 10**9)))
+
+        def huge_position_rows(f):
+            frames = f[pos].shape[0]
+            del f[pos]
+            f.create_dataset(pos, shape=(frames, 10**12, 3), dtype="f8", chunks=(1, 4096, 3))
+        fault("position_rows_of_1e12", huge_position_rows)
+
+        # Damaged bytes: the global heap of the /parameters strings, the
+        # fractal heap of the /parameters attribute table.
+        for signature in [b"GCOL", b"FHDB"]:
+            path = self.path(f"corrupt_{signature.decode()}.h5")
+            data = bytearray(open(run, "rb").read())
+            at = data.find(signature)
+            data[at:at + 4] = b"\xff" * 4
+            open(path, "wb").write(data)
+            self.add("refused", f"--resume damaged {signature.decode()}",
+                     f"{self.prog('coolgas-simulate')} -q --resume {path} --set run.t_end=4", watch=path)
 
         def nan_velocity(f):
             v = f["particles/all/velocity/value"][-1]

@@ -12,11 +12,12 @@
 
 namespace coolgas::test {
 
-inline void write_gas_file(const std::string& path, bool nan_at_position = false, bool nan_at_velocity = false) {
-  const std::int64_t n = 3000;
+// (n, L: a larger gas of the same kind, for tests that need long work.)
+inline void write_gas_file(const std::string& path, bool nan_at_position = false, bool nan_at_velocity = false,
+                           std::int64_t n = 3000, double L = 25) {
   RunParameters p;
   p.N = n;
-  p.L = 25;
+  p.L = L;
   p.seed = 9;
   H5mdWriter w = H5mdWriter::create(path, p, true);
   Random rng(9);

@@ -1,0 +1,43 @@
+#include "common/interrupt.h"
+
+namespace coolgas {
+
+namespace {
+
+volatile std::sig_atomic_t g_signal = 0;
+
+extern "C" void record_signal(int sig) { g_signal = sig; }
+
+}  // namespace
+
+Interrupted::Interrupted(int signal, const std::string& where)
+    : std::runtime_error("interrupted by " + signal_name(signal) + " " + where), signal(signal) {}
+
+void watch_interrupts() {
+  struct sigaction sa {};
+  sa.sa_handler = record_signal;
+  sa.sa_flags = SA_RESTART;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
+}
+
+InterruptFlag interrupt_flag() { return &g_signal; }
+
+int interrupt_signal() { return g_signal; }
+
+void throw_if_interrupted(std::size_t done, std::size_t total, const char* units) {
+  if (interrupted())
+    throw Interrupted(interrupt_signal(), "after " + std::to_string(done) + " of " + std::to_string(total) + " " +
+                                              units + "; no table written");
+}
+
+std::string signal_name(int signal) {
+  switch (signal) {
+    case SIGINT: return "SIGINT";
+    case SIGTERM: return "SIGTERM";
+    default: return "signal " + std::to_string(signal);
+  }
+}
+
+}  // namespace coolgas
