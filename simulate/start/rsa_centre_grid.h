@@ -62,7 +62,8 @@ class CentreGrid {
   void prefetch_near(std::size_t cell) const {
     const int cx = int(cell % std::size_t(n_)), cy = int(cell / std::size_t(n_) % std::size_t(n_)),
               cz = int(cell / (std::size_t(n_) * std::size_t(n_)));
-    // The cells beside the row through `cell` (its own column shares their lines' neighbours).
+    // Each row's cells x-1 and x+1 only: its middle cell lies between them in
+    // memory (16-byte slots), on one of the two cache lines they bring.
     for_each_neighbour_cell(n_, 0.0, {cx, cy, cz}, [&](const NeighbourCell& nb) {
       if (nb.offset.x != 0) __builtin_prefetch(&first_[std::size_t(nb.index)]);
     });
