@@ -58,12 +58,23 @@ include $(PIPE)lib.mk
 # ---------------------------------------------------------------- runs
 # Run names: size_L<L>_s<seed> (Fig. 1), param_phi<phi>_r<r0>_d<delta>_s<seed>
 # (Fig. 2), snap_s<seed> (Figs. 3-5), ba_phi<phi>_s<seed> (aggregation).
-# A size run's end time is SIZE_T_END unless SIZE_T_END_L<L> is set.
+# A size run's end time is SIZE_T_END unless SIZE_T_END_L<L> is set; a Fig. 2
+# run's box side is PARAM_L unless PARAM_L_<set> is set (e.g.
+# PARAM_L_phi0.052_r0.1_d1e-4: dilute gases cluster later and need larger boxes).
 size_t_end = $(or $(SIZE_T_END_L$(1)),$(SIZE_T_END))
 param_name = phi$(1)_r$(2)_d$(3)
+param_l = $(or $(PARAM_L_$(1)),$(PARAM_L))
 PARAM_SETS := $(sort $(foreach p,$(PARAM_PHIS),$(call param_name,$(p),$(R0),$(DELTA))) \
                      $(foreach r,$(PARAM_R0S),$(call param_name,$(PHI),$(r),$(DELTA))) \
                      $(foreach d,$(PARAM_DELTAS),$(call param_name,$(PHI),$(R0),$(d))))
+# The snapshot run of Figs. 3-5 is the paper's gas; when Fig. 2 has that gas in
+# the same box, to the same end time and with the same seed, it is the same
+# trajectory: that Fig. 2 run adds the snapshot times to its dumps and serves
+# both (SNAP_TWIN is its name), instead of being simulated twice.
+BASE_SET := $(call param_name,$(PHI),$(R0),$(DELTA))
+SNAP_TWIN := $(if $(and $(filter $(BASE_SET),$(PARAM_SETS)),$(filter $(SNAP_L),$(call param_l,$(BASE_SET))),$(filter \
+  $(SNAP_T_END),$(PARAM_T_END)),$(filter $(SNAP_SEED),$(PARAM_SEEDS))),param_$(BASE_SET)_s$(SNAP_SEED))
+param_output = $(PARAM_OUTPUT)$(if $(filter $(SNAP_TWIN),param_$(1)_s$(2)),$(newline)dump_times = [$(SNAP_DUMP_TIMES)])
 
 # $(call gas_scene,NAME,L,phi,r0,delta,t_end,seed,OUTPUT)
 define gas_scene
@@ -113,10 +124,12 @@ ifeq ($(ARCHIVE),)
 $(foreach L,$(SIZE_L),$(foreach s,$(SIZE_SEEDS),$(call keep,$(SCENES)/size_L$(L)_s$(s).toml,$(call \
   gas_scene,size_L$(L)_s$(s),$(L),$(PHI),$(R0),$(DELTA),$(call size_t_end,$(L)),$(s),$(ENERGY_OUTPUT)))))
 $(foreach p,$(PARAM_SETS),$(foreach s,$(PARAM_SEEDS),$(call keep,$(SCENES)/param_$(p)_s$(s).toml,$(call \
-  gas_scene,param_$(p)_s$(s),$(PARAM_L),$(call field,phi,x_$(p)),$(call field,r,x_$(p)),$(call \
-  field,d,x_$(p)),$(PARAM_T_END),$(s),$(PARAM_OUTPUT)))))
+  gas_scene,param_$(p)_s$(s),$(call param_l,$(p)),$(call field,phi,x_$(p)),$(call field,r,x_$(p)),$(call \
+  field,d,x_$(p)),$(PARAM_T_END),$(s),$(call param_output,$(p),$(s))))))
+ifeq ($(SNAP_TWIN),)
 $(call keep,$(SCENES)/snap_s$(SNAP_SEED).toml,$(call \
   gas_scene,snap_s$(SNAP_SEED),$(SNAP_L),$(PHI),$(R0),$(DELTA),$(SNAP_T_END),$(SNAP_SEED),$(SNAP_OUTPUT)))
+endif
 ifeq ($(BA),1)
 $(foreach p,$(BA_PHIS),$(call keep,$(SCENES)/ba_phi$(p)_s$(BA_SEED).toml,$(call \
   ba_scene,ba_phi$(p)_s$(BA_SEED),$(BA_L),$(p),$(BA_T_END),$(BA_SEED),$(BA_OUTPUT))))
@@ -124,7 +137,7 @@ endif
 
 size_runs = $(foreach s,$(SIZE_SEEDS),$(RUNS)/size_L$(1)_s$(s).h5)
 param_runs = $(foreach s,$(PARAM_SEEDS),$(RUNS)/param_$(1)_s$(s).h5)
-SNAP_RUN := $(RUNS)/snap_s$(SNAP_SEED).h5
+SNAP_RUN := $(RUNS)/$(or $(SNAP_TWIN),snap_s$(SNAP_SEED)).h5
 BA_RUNS := $(if $(filter 1,$(BA)),$(foreach p,$(BA_PHIS),$(RUNS)/ba_phi$(p)_s$(BA_SEED).h5))
 
 # One run: its scene in, its trajectory out (and its wall time in NAME.wall_s).
@@ -145,7 +158,7 @@ PARAM_R0S := $(sort $(foreach p,$(PARAM_SETS),$(if $(and $(filter $(PHI),$(call 
 PARAM_DELTAS := $(sort $(foreach p,$(PARAM_SETS),$(if $(and $(filter $(PHI),$(call field,phi,x_$(p))),$(filter \
   $(R0),$(call field,r,x_$(p)))),$(call field,d,x_$(p)))))
 param_runs = $(sort $(wildcard $(RUNS)/param_$(1)_s*.h5))
-SNAP_RUN := $(firstword $(sort $(wildcard $(RUNS)/snap_s*.h5)))
+SNAP_RUN := $(firstword $(sort $(wildcard $(RUNS)/snap_s*.h5)) $(wildcard $(RUNS)/param_$(BASE_SET)_s$(SNAP_SEED).h5))
 BA_RUNS := $(sort $(wildcard $(RUNS)/ba_phi*.h5))
 BA_PHIS := $(foreach f,$(BA_RUNS),$(call field,phi,$(f)))
 BA := $(if $(BA_RUNS),1,0)
@@ -264,7 +277,7 @@ $(OUT)/fig3_clusters.png: $(TABLES)/snapshot_gas.png $(TABLES)/nm_gas.tsv $(TABL
 
 # ---- Fig. 4: largest cluster M_max(t), gas for each phi of Fig. 2 and the snapshot run, BA
 # (the Fig. 2 run at PHI is the snapshot run's twin when both use one box: left out)
-MMAX_PHIS := $(if $(filter $(SNAP_L),$(PARAM_L)),$(filter-out $(PHI),$(PARAM_PHIS)),$(PARAM_PHIS))
+MMAX_PHIS := $(if $(filter $(SNAP_L),$(call param_l,$(BASE_SET))),$(filter-out $(PHI),$(PARAM_PHIS)),$(PARAM_PHIS))
 MMAX_GAS_RUNS := $(SNAP_RUN) $(foreach p,$(MMAX_PHIS),$(firstword $(call param_runs,$(call param_name,$(p),$(R0),$(DELTA)))))
 mmax_table = $(TABLES)/mmax_$(notdir $(basename $(1))).tsv
 MMAX_GAS := $(foreach r,$(MMAX_GAS_RUNS),$(call mmax_table,$(r)))
@@ -363,7 +376,7 @@ EXPONENT_INPUTS := $(TABLES)/collapse.tsv $(TABLES)/fit_size_Lmax.tsv $(TABLES)/
   $(foreach r,$(STRUCTURE_GAS),$(TABLES)/lt_$(r).tsv $(TABLES)/fit_lt_$(r).tsv $(TABLES)/fit_lc_$(r).tsv)
 $(OUT)/exponents.tsv: $(EXPONENT_INPUTS) $(BA_FITS) $(PIPE)tsv-value.sh $(PIPE)exponents.sh
 	sh $(PIPE)exponents.sh $(TABLES) $(notdir $(basename $(SNAP_RUN))) "$(lastword $(PHI_LATE_TIMES))" \
-	  $(L_MAX) $(SNAP_L) $(PARAM_L) "$(PARAM_SETS)" "$(BA_FITS)" "$(STRUCTURE_GAS)" > $@
+	  $(L_MAX) $(SNAP_L) "$(PARAM_SETS)" "$(BA_FITS)" "$(STRUCTURE_GAS)" > $@
 
 $(OUT)/exponents.md: $(OUT)/exponents.tsv $(PIPE)exponents-md.sh
 	sh $(PIPE)exponents-md.sh $< "$(SCALE)" > $@

@@ -1,5 +1,5 @@
 #!/bin/sh
-# exponents.sh TABLES SNAP_RUN LATE_TIME L_MAX SNAP_L PARAM_L "PARAM_SETS" "BA_FITS" "STRUCTURE_RUNS"
+# exponents.sh TABLES SNAP_RUN LATE_TIME L_MAX SNAP_L "PARAM_SETS" "BA_FITS" "STRUCTURE_RUNS"
 # The quantities a figure pipeline measured, one row each, judged against
 # the paper (Pathak, Jabeen, Das, Rajesh 2014): a TSV table with columns
 #   quantity  figure  measured  error  paper  paper_error  deviation  regime
@@ -9,11 +9,12 @@
 # crossover to finite-size behaviour at x = t / L^(5/2) ~ 0.1 (its Fig. 1).
 # TABLES is the pipeline's tables folder, SNAP_RUN the run of Figs. 3-5,
 # LATE_TIME the time its late-time values are read at, L_MAX the largest L
-# of Fig. 1, SNAP_L and PARAM_L the box sides of Figs. 3-5 and Fig. 2,
+# of Fig. 1, SNAP_L the box side of Figs. 3-5 (each Fig. 2 row reads its
+# box side from its energy table, as the sets may differ in L),
 # STRUCTURE_RUNS the runs whose growing lengths were fitted (lt_RUN.tsv,
 # fit_lt_RUN.tsv, fit_lc_RUN.tsv of pipelines/structure.mk).
 set -e
-tables=$1 snap=$2 late=$3 L_max=$4 snap_L=$5 param_L=$6 sets=$7 ba_fits=${8:-} structure_runs=${9:-}
+tables=$1 snap=$2 late=$3 L_max=$4 snap_L=$5 sets=$6 ba_fits=${7:-} structure_runs=${8:-}
 here=$(dirname "$0")
 value() { sh "$here/tsv-value.sh" "$@"; }
 # Column $2 of table $1 in the row whose t is nearest $3.
@@ -90,7 +91,7 @@ for p in $sets; do
   fit=$tables/fit_param_$p.tsv
   name=$(echo "$p" | sed 's/_/, /g; s/^phi/phi = /; s/, r/, r0 = /; s/, d/, delta = /')
   row "theta at $name (t = $(short "$(value "$fit" t_min)"):$(short "$(value "$fit" t_max)"))" 2 \
-    "$(value "$fit" theta)" "$(value "$fit" theta_err)" 1.2 0 "$(scaling_regime "$tables/energy_param_$p.tsv" "$fit" "$param_L")"
+    "$(value "$fit" theta)" "$(value "$fit" theta_err)" 1.2 0 "$(scaling_regime "$tables/energy_param_$p.tsv" "$fit" "$(value "$tables/energy_param_$p.tsv" L '#')")"
 done
 
 # Figs. 3-5: the snapshot run at the late time.
