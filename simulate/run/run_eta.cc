@@ -85,7 +85,7 @@ double RunEta::expected_collisions(double t_end) const {
   const double before = exponent(t / (w * w), t / w);
   const double trend = std::isfinite(before) ? (a - before) / std::log(w) : 0;
   const double knee = kKnee * std::pow(L_, 2.5);
-  return now.collisions * std::exp(log_growth(t, t_end, a, trend, kFloor, knee, kTail));
+  return std::min(most_, now.collisions * std::exp(log_growth(t, t_end, a, trend, kFloor, knee, kTail)));
 }
 
 double RunEta::seconds_left(double t_end) const {

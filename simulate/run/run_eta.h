@@ -17,6 +17,7 @@
 // after the first tenth of a run, the ETA / the time really left.
 // tests/unit/simulate/run/run_eta_test.cc checks the rule on closed forms.
 #pragma once
+#include <cmath>
 #include <vector>
 
 namespace coolgas {
@@ -29,7 +30,9 @@ struct RunSample {
 
 class RunEta {
  public:
-  explicit RunEta(double L) : L_(L) {}
+  // `most_collisions`: a bound C(t) cannot pass (ballistic aggregation: one
+  // merge per aggregate lost, so N - 1).
+  explicit RunEta(double L, double most_collisions = INFINITY) : L_(L), most_(most_collisions) {}
   // Keeps samples log-spaced in t (one per 1 % of t at most); the last
   // sample is always the newest.
   void add(const RunSample& s);
@@ -45,7 +48,7 @@ class RunEta {
   double seconds_left(double t_end) const;
 
  private:
-  double L_;
+  double L_, most_;
   std::vector<RunSample> samples_;
 };
 

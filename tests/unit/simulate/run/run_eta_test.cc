@@ -41,6 +41,17 @@ TEST(RunEta, BeyondTheFiniteSizeKneeCollisionsGrowAsTheTailSays) {
   EXPECT_NEAR(eta.expected_collisions(1e4), expected, 1e-9 * expected);
 }
 
+// Ballistic aggregation: at most N - 1 merges, whatever the extrapolation says.
+TEST(RunEta, NoMoreCollisionsThanTheBoundAllows) {
+  RunEta eta(1e6, 3e4);
+  for (int k = -40; k <= 40; ++k) {
+    const double t = std::pow(10.0, k / 20.0);
+    eta.add({t, collisions(t), collisions(t) / kRate});
+  }
+  EXPECT_EQ(eta.expected_collisions(1e4), 3e4);  // the power law would give 39811
+  EXPECT_NEAR(eta.seconds_left(1e4), (3e4 - collisions(100)) / kRate, 1e-9);
+}
+
 // An exponent 0.6 falling by 0.1 per unit of ln t from t = 10 reaches the
 // floor 0.2 at u = ln(t/10) = 4: the integral of a over u in [0, ln 1000] is
 // 0.6*4 - 0.1*4^2/2 + 0.2*(ln 1000 - 4).
