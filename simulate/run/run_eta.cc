@@ -9,11 +9,12 @@ namespace {
 
 // The rule's constants (run_eta.h), chosen on the measured C(t) of the
 // paper's gas (r0 = 0.1, delta = 1e-4; phi = 0.052, 0.104, 0.208; L = 20-50;
-// t_end = 1e3, 1e4, 1e5) among W = 2-10, knee 0.3-2 L^(5/2), tail 0.1-0.2 and
-// floor 0.15-0.3: from 10 % to 90 % of the collisions, the collisions still
-// expected were 0.33-2.4 times the truth (the rule before, a power law over
-// the last decade with a knee at 2 L^(5/2): 0.29-33; dilute gases, whose
-// exponent falls for decades, were the worst). Whole runs: tests/bench/eta_check.py.
+// t_end = 1e3, 1e4, 1e5) among fit windows of a factor 2-10, knees at
+// 0.3-2 L^(5/2), tails 0.1-0.2 and floors 0.15-0.3: from 10 % to 90 % of the
+// collisions, the collisions still expected were 0.33-2.4 times the truth
+// (the rule before, a power law over the last decade with a knee at
+// 2 L^(5/2): 0.29-33; dilute gases, whose exponent falls for decades, were
+// the worst). Whole runs: tests/bench/eta_check.py.
 constexpr double kFitWindow = 3;  // the exponent is fitted over t/3 .. t (and t/9 .. t/3 for its trend)
 constexpr double kFloor = 0.25;   // a falling exponent stops falling here
 constexpr double kKnee = 0.5;     // the finite-size regime, from t = kKnee L^(5/2) on,
