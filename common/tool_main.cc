@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <cctype>
 #include <cerrno>
 #include <csignal>
 #include <cstring>
@@ -133,6 +134,42 @@ int run_tool(const std::string& tool, const std::function<int()>& body) {
   return code;
 }
 
+namespace {
+
+// "nan", "inf", "-Infinity", ...: what strtod reads as a number that is not finite.
+bool names_non_finite(std::string token) {
+  const auto space = [](char c) { return c == ' ' || c == '\t'; };
+  while (!token.empty() && space(token.back())) token.pop_back();
+  std::size_t i = 0;
+  while (i < token.size() && space(token[i])) ++i;
+  if (i < token.size() && (token[i] == '+' || token[i] == '-')) ++i;
+  std::string word;
+  for (; i < token.size(); ++i) word += char(std::tolower(static_cast<unsigned char>(token[i])));
+  return word == "nan" || word == "inf" || word == "infinity";
+}
+
+// Every time, number, list (1,2) or window (LO:HI) given to an option must be
+// finite: CLI11 reads "nan" and "inf" as doubles, and a NaN time or bound
+// would otherwise pass every comparison unnoticed. (Scene keys given with
+// --set are checked by the scene itself.)
+void refuse_non_finite(const CLI::App& app) {
+  for (const CLI::Option* opt : app.get_options()) {
+    if (!opt->nonpositional()) continue;
+    for (const std::string& value : opt->results()) {
+      std::size_t start = 0;
+      while (true) {
+        const std::size_t end = value.find_first_of(",:", start);
+        if (names_non_finite(value.substr(start, end == std::string::npos ? end : end - start)))
+          throw InputError(opt->get_name() + " " + value + ": not a finite number (give finite values only)");
+        if (end == std::string::npos) break;
+        start = end + 1;
+      }
+    }
+  }
+}
+
+}  // namespace
+
 bool parse_command_line(CLI::App& app, int argc, char** argv) {
   app.name(tool_name());
   app.set_version_flag("--version", tool_name() + " " + program_version(), "print the program version and commit");
@@ -144,6 +181,7 @@ bool parse_command_line(CLI::App& app, int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     throw InputError(std::string(e.what()) + " (see --help)");
   }
+  refuse_non_finite(app);
   return false;
 }
 

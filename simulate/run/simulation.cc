@@ -217,7 +217,7 @@ class Driver {
   std::string path_;
   double e0_;
   Progress progress_;
-  RunEta eta_{scene_.L};
+  RunEta eta_{scene_.L, scene_.model == CollisionModel::kAggregation ? double(scene_.N - 1) : INFINITY};
   double busy_seconds_ = 0;  // wall seconds inside the engine (no dumps, no checkpoints)
   double interval_;
   clock::time_point last_checkpoint_;

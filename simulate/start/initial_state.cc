@@ -40,6 +40,14 @@ void place_fcc(Particles& p, std::int64_t N, Random& rng) {
   }
 }
 
+// "0.2117" (a phi computed from N and L has noise digits), for the set-up's progress line.
+std::string four_digits(double x) { return format_number(std::round(1e4 * x) / 1e4); }
+
+// "37 %", for the set-up's progress line.
+std::string percent(double part, double whole) {
+  return std::to_string(int(std::min(100.0, 100 * part / whole))) + " %";
+}
+
 }  // namespace
 
 // With unit masses every product and quotient by a mass is exact, so the
@@ -88,7 +96,12 @@ Particles initial_state(const Scene& s, InterruptFlag interrupt, const SetupRepo
   // structures and the positions are the set-up's memory peak.
   p.r.resize(std::size_t(s.N));
   Random rng(std::uint64_t(s.seed));
-  if (s.init == InitialPositions::kRandom) place_random_sequential(p, s.N, rng, interrupt);
+  const auto placed = [&](std::int64_t n) {
+    say("placing at random: " + std::to_string(n) + " of " + std::to_string(s.N) + " (" + percent(n, s.N) +
+            "), phi = " + four_digits(double(n) * M_PI / (6 * s.L * s.L * s.L)) + " of " + four_digits(s.phi),
+        false);
+  };
+  if (s.init == InitialPositions::kRandom) place_random_sequential(p, s.N, rng, interrupt, placed);
   else place_fcc(p, s.N, rng);
   p.resize(std::size_t(s.N));
   const double T0 = initial_temperature(s);
@@ -106,7 +119,7 @@ Particles initial_state(const Scene& s, InterruptFlag interrupt, const SetupRepo
         status = melt.run_until(s.equilibrate, kEquilibrationSlice, interrupt);
         if (status == RunStatus::kInterrupted) throw SetupInterrupted();
         say("equilibrating: t = " + format_number(std::round(melt.now() * 100) / 100) + " / " +
-                format_number(s.equilibrate) + " elastic collision times",
+                format_number(s.equilibrate) + " elastic collision times (" + percent(melt.now(), s.equilibrate) + ")",
             false);
       }
       relaxed = melt.release_positions();

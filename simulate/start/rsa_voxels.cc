@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/error.h"
@@ -40,9 +41,9 @@ double checked_side(double L) {
 
 class Placer {
  public:
-  Placer(Particles& p, InterruptFlag interrupt)
+  Placer(Particles& p, InterruptFlag interrupt, PlacementReport report = {})
       : p_(p), grid_(checked_side(p.L)), L_(p.L), half_(p.L / 2), top_(std::nextafter(p.L, 0.0)),
-        interrupt_(interrupt) {}
+        interrupt_(interrupt), report_(std::move(report)) {}
 
   // Places spheres 0, 1, ... up to N; returns how many fit (N unless no room
   // is left before, or the trial budget runs out).
@@ -66,6 +67,11 @@ class Placer {
   Vec3 relative(const Vec3& r, const Vec3& corner) const {
     return {image(r.x - corner.x), image(r.y - corner.y), image(r.z - corner.z)};
   }
+  // Every kWindow trials: stop if asked to, and say how far the placement is.
+  void check_in(std::int64_t placed) const {
+    throw_if_interrupted(interrupt_);
+    if (report_) report_(placed);
+  }
   void place(std::int64_t i, const Vec3& x) {
     p_.r[std::size_t(i)] = x;
     grid_.insert(x, std::int32_t(i));
@@ -82,6 +88,7 @@ class Placer {
   CentreGrid grid_;
   double L_, half_, top_;
   InterruptFlag interrupt_;
+  PlacementReport report_;  // may be empty
   std::int64_t since_check_ = 0;  // voxel trials since the interrupt flag was last looked at
   double trials_ = 0;
   std::vector<Vec3> near_;  // scratch: the centres around one cell, relative to its corner,
@@ -112,7 +119,7 @@ std::int64_t Placer::plain_phase(std::int64_t N, Random& rng) {
       ++window_hits;
     }
     if (++window == kWindow) {
-      throw_if_interrupted(interrupt_);
+      check_in(i);
       if (double(window_hits) < kSwitchAcceptance * double(kWindow)) break;
       window = window_hits = 0;
     }
@@ -132,7 +139,7 @@ std::int64_t Placer::voxel_phase(std::int64_t i, std::int64_t N, Random& rng) {
     if (trials_ > budget || voxels.empty()) break;
     if (++since_check_ == kWindow) {
       since_check_ = 0;
-      throw_if_interrupted(interrupt_);
+      check_in(i);
     }
     const FreeVoxels::Voxel v = voxels.draw(rng);
     const Vec3 corner = grid_.corner(v.cell);
@@ -200,8 +207,9 @@ void Placer::cover_around(FreeVoxels& voxels, const Vec3& x) const {
 
 }  // namespace
 
-void place_random_sequential(Particles& p, std::int64_t N, Random& rng, InterruptFlag interrupt) {
-  Placer placer(p, interrupt);
+void place_random_sequential(Particles& p, std::int64_t N, Random& rng, InterruptFlag interrupt,
+                             const PlacementReport& report) {
+  Placer placer(p, interrupt, report);
   const std::int64_t placed = placer.fill(N, rng);
   if (placed < N) saturated(p.L, placed, N);
 }

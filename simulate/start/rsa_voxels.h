@@ -14,6 +14,7 @@
 // particle (tests/bench/rsa_bench.cc).
 #pragma once
 #include <cstdint>
+#include <functional>
 
 #include "common/random.h"
 #include "simulate/engine/particles.h"
@@ -21,10 +22,16 @@
 
 namespace coolgas {
 
+// Told how many spheres are placed so far, for a progress line: called where
+// the interrupt flag is looked at, so it costs nothing per trial.
+using PlacementReport = std::function<void(std::int64_t placed)>;
+
 // Places p.r[0..N) (p.L set, p sized to N). Deterministic for a given rng
-// state. Throws InputError if the packing saturates before N spheres, and
-// SetupInterrupted once *interrupt is set (looked at every 4096 trials).
-void place_random_sequential(Particles& p, std::int64_t N, Random& rng, InterruptFlag interrupt = nullptr);
+// state (the report changes nothing). Throws InputError if the packing
+// saturates before N spheres, and SetupInterrupted once *interrupt is set
+// (looked at every 4096 trials).
+void place_random_sequential(Particles& p, std::int64_t N, Random& rng, InterruptFlag interrupt = nullptr,
+                             const PlacementReport& report = {});
 
 // Random sequential addition in a periodic box of side L until no room is
 // left for another sphere; returns how many were placed (for tests of the

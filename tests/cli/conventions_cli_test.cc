@@ -1,8 +1,9 @@
 // One command-line convention across the programs (README, "Analysis
 // tools"): --version everywhere, usage lines with the bare program name, a
 // --time that no dump has snapped with a note (or refused with
-// --exact-time), a --series row kept with NaN where its fit is impossible,
-// and old option spellings accepted with a note.
+// --exact-time), no time or number that is not finite, a --series row kept
+// with NaN where its fit is impossible, and old option spellings accepted
+// with a note.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -119,6 +120,29 @@ TEST_F(TimeConventions, TheCanonicalPipeFitsTheScalingWindowWithANote) {
   EXPECT_LE(fit.column_values("t_max")[0], 0.1 * std::pow(std::cbrt(2000 * M_PI / 6 / 0.208), 2.5));
   EXPECT_GT(fit.column_values("theta")[0], 1);  // a cooling gas, not the flat start (theta near 0)
   EXPECT_LT(fit.column_values("theta")[0], 2);
+}
+
+// A time or number that is not finite is refused by every tool (exit 2, one
+// line naming the option): CLI11 reads "nan" and "inf" as doubles, and a NaN
+// time used to snap to the first dump with only a note.
+TEST_F(TimeConventions, NonFiniteTimesAndNumbersAreRefusedWithOneLine) {
+  const std::string energy = bin("coolgas-energy") + " " + run() + " | ";
+  const std::string cases[][2] = {
+      {bin("coolgas-velocity") + " " + run() + " --time nan", "--time nan"},
+      {bin("coolgas-clusters") + " " + run() + " --time inf", "--time inf"},
+      {bin("coolgas-shape") + " " + run() + " --series --time 10,-inf", "--time -inf"},
+      {bin("coolgas-structure") + " " + run() + " --time NaN", "--time NaN"},
+      {bin("coolgas-convert") + " " + run() + " --time inf", "--time inf"},
+      {bin("coolgas-snapshot") + " " + run() + " --time nan -o " + *dir + "/never.png", "--time nan"},
+      {energy + bin("coolgas-fit") + " --power --window nan:1e3 -", "--t-window nan:1e3"},
+      {energy + bin("coolgas-fit") + " --local-slope --smooth inf -", "--smooth inf"},
+      {energy + bin("coolgas-collapse") + " --theta nan -", "--theta nan"},
+      {energy + bin("coolgas-collapse") + " --z inf -", "--z inf"},
+      {bin("coolgas-smoluchowski") + " --kernel constant --M 64 --grid-ratio nan --t-end 1", "--grid-ratio nan"},
+      {bin("coolgas-smoluchowski") + " --kernel constant --M 64 --rtol inf --t-end 1", "--rtol inf"},
+  };
+  for (const auto& [command, option] : cases)
+    test::expect_one_error_line(run_command(command), option + ": not a finite number");
 }
 
 TEST_F(TimeConventions, OldSpellingsStillWorkWithANote) {

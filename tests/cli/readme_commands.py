@@ -24,6 +24,7 @@ SKIPPED = {
     "make -C pipelines/demo reanalyze": "needs an archive of demo runs; tests/cli/pipeline_test.cc runs reanalyze from the tiny runs",
     "make -C pipelines/paper": "the paper scale: core-years on a cluster (srun)",
     "sbatch pipelines/cluster/paper.sbatch": "needs a Slurm cluster (its shell is checked with sh -n below)",
+    "sbatch --ntasks=2": "needs a Slurm cluster (its shell is checked with sh -n below)",
     "make -C pipelines/accuracy": "minutes of simulation (QUICK=1: a minute); its recipes are plain coolgas commands tested elsewhere",
 }
 

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,35 @@ TEST(RandomPlacement, SameSeedSamePositions) {
     }
   EXPECT_TRUE(same);
   EXPECT_TRUE(differs);
+}
+
+// The set-up's progress report (placement and equilibration, for the
+// progress line) changes nothing: the same state bit for bit, and the
+// placement's counts only grow, up to N, through both of its phases.
+TEST(RandomPlacement, TheProgressReportChangesNothing) {
+  Scene scene = positions_only(20000, 0.35, 7);
+  scene.equilibrate = 0.2;
+  std::vector<std::string> lines;
+  const Particles quiet = initial_state(scene);
+  const Particles told = initial_state(scene, nullptr, [&](const std::string& line, bool) { lines.push_back(line); });
+  ASSERT_EQ(quiet.size(), told.size());
+  bool same = true;
+  for (std::size_t i = 0; i < quiet.size(); ++i)
+    for (int d = 0; d < 3; ++d) same = same && quiet.r[i][d] == told.r[i][d] && quiet.v[i][d] == told.v[i][d];
+  EXPECT_TRUE(same);
+  long last = -1, updates = 0;
+  bool equilibrated = false;
+  for (const std::string& line : lines) {
+    long n = 0;
+    if (std::sscanf(line.c_str(), "placing at random: %ld of 20000", &n) == 1) {
+      EXPECT_GE(n, last) << line;
+      EXPECT_LE(n, 20000) << line;
+      last = n, ++updates;
+    }
+    equilibrated = equilibrated || line.find("(100 %)") != std::string::npos;
+  }
+  EXPECT_GE(updates, 2);  // at least one per 4096 trials: 20000 spheres take more than 20000 trials
+  EXPECT_TRUE(equilibrated);
 }
 
 // The saturation coverage of random sequential addition of equal spheres in
