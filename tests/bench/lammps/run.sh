@@ -52,7 +52,7 @@ lmp = {round(float(r[1]), 6): float(r[2]) for r in rows}
 loop = re.search(r"Loop time of ([0-9.]+)", log).group(1)
 cpu_use = re.search(r"([0-9.]+)% CPU use", log).group(1)
 lmp_cpu = sum(float(x) for x in open("lmp_cpu.txt").read().split())
-for T in (1.0, t_end):
+for T in sorted({1.0, t_end}):
     nan = float("nan")
     print(f"E({T:g}): coolgas {ours.get(round(T, 6), nan):.6g}  LAMMPS {lmp.get(round(T, 6), nan):.6g}")
 print(f"LAMMPS loop time: {loop} s ({cpu_use} % CPU use; the whole process {lmp_cpu:.2f} s of CPU)")
