@@ -10,7 +10,7 @@
 //       configuration of L = 272), clock restarted at 0. Set-up and the
 //       homogeneous phase are left out, as in the paper's long runs. The L = 68
 //       state is made once (a few minutes) and kept next to this program
-//       (w7_clustered_L68_t1000.state; delete it to make it again).
+//       (w7_clustered_N125000_t1000.state; delete it to make it again).
 // Rates are given per second of wall time and per second of this process's
 // CPU time: on an idle machine they agree; on a shared one the CPU figure is
 // the engine's own speed.
@@ -58,20 +58,27 @@ std::unique_ptr<coolgas::Engine<Rule>> engine_for(const coolgas::Scene& s, const
 // the tiled gas has the same contacts and clusters, k^3 times over.
 std::string g_program_dir = ".";
 
+// Particles at the given positions and velocities, all at time 0.
+coolgas::Particles at_time_zero(double L, std::vector<coolgas::Vec3> r, std::vector<coolgas::Vec3> v) {
+  coolgas::Particles p;
+  p.L = L;
+  p.r = std::move(r);
+  p.v = std::move(v);
+  p.t.assign(p.r.size(), 0.0);
+  p.image.assign(p.r.size(), coolgas::Image{0, 0, 0});
+  return p;
+}
+
 template <class Rule>
 coolgas::Particles clustered_base(const coolgas::Scene& base, const Rule& rule, double t_base) {
-  const std::string path = g_program_dir + "/w7_clustered_L68_t1000.state";
+  const std::string path = g_program_dir + "/w7_clustered_N" + std::to_string(base.N) + "_t1000.state";
   std::ifstream in(path, std::ios::binary);
   if (in) {
     std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     const coolgas::StateReader r(std::move(bytes), path);
-    coolgas::Particles p;
-    p.L = r.get_value<double>("L");
-    p.r = r.get<coolgas::Vec3>("position");
-    p.v = r.get<coolgas::Vec3>("velocity");
-    p.t.assign(p.r.size(), 0.0);
-    p.image.assign(p.r.size(), coolgas::Image{0, 0, 0});
-    if (p.r.size() == std::size_t(base.N) && p.L == base.L) return p;
+    coolgas::Particles p =
+        at_time_zero(r.get_value<double>("L"), r.get<coolgas::Vec3>("position"), r.get<coolgas::Vec3>("velocity"));
+    if (p.size() == std::size_t(base.N) && p.L == base.L) return p;
   }
   const auto t0 = std::chrono::steady_clock::now();
   auto e = engine_for(base, rule);
@@ -90,13 +97,7 @@ coolgas::Particles clustered_base(const coolgas::Scene& base, const Rule& rule, 
     std::fclose(out);
     std::rename(tmp.c_str(), path.c_str());
   }
-  coolgas::Particles p;
-  p.L = base.L;
-  p.r = f.position;
-  p.v = f.velocity;
-  p.t.assign(p.r.size(), 0.0);
-  p.image.assign(p.r.size(), coolgas::Image{0, 0, 0});
-  return p;
+  return at_time_zero(base.L, f.position, f.velocity);
 }
 
 coolgas::Particles tiled(const coolgas::Particles& b, int k) {
