@@ -46,6 +46,8 @@ demo: build
 # aggregation benchmark (W3, ~3 min) is run by hand: build/bench/aggregation_bench.
 bench: build
 	$(BUILD)/bench/engine_bench all 108000 50 3
+	$(BUILD)/bench/engine_bench W5
+	$(BUILD)/bench/engine_bench W7
 	$(BUILD)/bench/rsa_bench 1000000 0.35 0.36 0.37
 	$(BUILD)/bench/smoluchowski_bench 1
 	$(BUILD)/bench/cluster_bench
