@@ -22,12 +22,12 @@ struct ElementSpec {
 
 // The per-particle elements a Trajectory can read.
 constexpr ElementSpec kElements[] = {
-    {kPosition, layout::kPosition, 3},
-    {kVelocity, layout::kVelocity, 3},
-    {kImage, layout::kImage, 3},
-    {kId, layout::kId, 1},
-    {kMass, layout::kMass, 1},
-    {kDiameter, layout::kDiameter, 1},
+    {Field::kPosition, layout::kPosition, 3},
+    {Field::kVelocity, layout::kVelocity, 3},
+    {Field::kImage, layout::kImage, 3},
+    {Field::kId, layout::kId, 1},
+    {Field::kMass, layout::kMass, 1},
+    {Field::kDiameter, layout::kDiameter, 1},
 };
 
 // Moves the entries of present slots (keep[i]) to the front, `k` numbers each.
@@ -60,8 +60,8 @@ Trajectory::Trajectory(const std::string& path, unsigned fields) : path_(path), 
   if (fields == 0) throw std::logic_error("Trajectory opened for no element");
   file_ = h5::open_file(path, h5::Mode::kReadOnly);
   aggregates_ = layout::layout_of(file_.id()) == layout::Layout::kAggregation;
-  if (aggregates_) fields_ |= kId | kMass;
-  else fields_ &= ~unsigned(kDiameter);  // gas files have unit spheres and no diameter element
+  if (aggregates_) fields_ |= Field::kId | Field::kMass;
+  else fields_ &= ~unsigned(Field::kDiameter);  // gas files have unit spheres and no diameter element
   std::size_t frames = SIZE_MAX;
   for (const auto& e : kElements) {
     if (!(fields_ & e.field)) continue;
@@ -177,30 +177,30 @@ void Trajectory::read(std::size_t dump, Frame& frame) const {
     if (!(fields_ & e.field)) continue;
     h5::Handle value = h5::open_dataset(file_.id(), value_of(e));
     switch (e.field) {
-      case kPosition:
+      case Field::kPosition:
         frame.position.resize(size);
         h5::read_rows(value.id(), h5::Type::kFloat64, dump, 1, frame.position.data());
         check_finite(frame.position, where + std::string(e.path));
         break;
-      case kVelocity:
+      case Field::kVelocity:
         frame.velocity.resize(size);
         h5::read_rows(value.id(), h5::Type::kFloat64, dump, 1, frame.velocity.data());
         check_finite(frame.velocity, where + std::string(e.path));
         break;
-      case kImage:
+      case Field::kImage:
         frame.image.resize(size);
         h5::read_rows(value.id(), h5::Type::kInt32, dump, 1, frame.image.data());
         break;
-      case kId:
+      case Field::kId:
         frame.id.resize(std::size_t(n_));
         h5::read_rows(value.id(), h5::Type::kInt32, dump, 1, frame.id.data());
         break;
-      case kMass:
+      case Field::kMass:
         frame.mass.resize(std::size_t(n_));
         h5::read_rows(value.id(), h5::Type::kFloat64, dump, 1, frame.mass.data());
         check_finite(frame.mass, where + std::string(e.path), 1);
         break;
-      case kDiameter:
+      case Field::kDiameter:
         frame.diameter.resize(std::size_t(n_));
         h5::read_rows(value.id(), h5::Type::kFloat64, dump, 1, frame.diameter.data());
         check_finite(frame.diameter, where + std::string(e.path), 1);

@@ -84,8 +84,8 @@ void AggregationEngine::save(StateWriter& out) const {
   calendar_.save(out, "aggregation/calendar/");
 }
 
-Frame AggregationEngine::frame() const {
-  Frame f(now_, c_);
+EngineFrame AggregationEngine::frame() const {
+  EngineFrame f(now_, c_);
   const std::size_t n = m_.size();
   f.position.resize(n);
   f.velocity.resize(n);

@@ -67,7 +67,7 @@ class AggregationEngine final : public EngineBase {
   // with the number of aggregates and their mean and largest mass.
   Observables observables() const override;
   // Per slot (id order), with id, mass and diameter.
-  Frame frame() const override;
+  EngineFrame frame() const override;
   void save(StateWriter& out) const override;
 
   // For tests: every merge logged; for benchmarks: calendar years started.

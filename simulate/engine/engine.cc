@@ -110,8 +110,8 @@ Observables Engine<Rule>::observables() const {
 }
 
 template <class Rule>
-Frame Engine<Rule>::frame() const {
-  Frame f(now_, c_);
+EngineFrame Engine<Rule>::frame() const {
+  EngineFrame f(now_, c_);
   const std::size_t n = m_.size();
   f.position.resize(n);
   f.velocity.resize(n);

@@ -76,7 +76,7 @@ class Engine final : public EngineBase {
   double box() const override { return L_; }
   const EngineCounters& counters() const override { return c_; }
   Observables observables() const override;
-  Frame frame() const override;
+  EngineFrame frame() const override;
   void save(StateWriter& out) const override;
 
   // For tests: when set, every collision is appended.

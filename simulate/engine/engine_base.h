@@ -76,8 +76,8 @@ struct Observables {
 // advanced to that time and wrapped into [0, L), image counts, velocities.
 // id, mass and diameter are filled only by engines whose particles change
 // (aggregation: per slot; id -1 and mass 0 in an empty slot).
-struct Frame {
-  Frame(double t, const EngineCounters& c) : time(t), collisions(c.collisions), below_delta(c.below_delta) {}
+struct EngineFrame {
+  EngineFrame(double t, const EngineCounters& c) : time(t), collisions(c.collisions), below_delta(c.below_delta) {}
   double time = 0;
   std::int64_t collisions = 0, below_delta = 0;
   std::vector<Vec3> position, velocity;
@@ -99,7 +99,7 @@ class EngineBase {
   virtual double box() const = 0;
   virtual const EngineCounters& counters() const = 0;
   virtual Observables observables() const = 0;
-  virtual Frame frame() const = 0;
+  virtual EngineFrame frame() const = 0;
   // Every field the engine's future depends on (state_archive.h); the
   // engine's restoring constructor reads them back.
   virtual void save(StateWriter& out) const = 0;

@@ -16,6 +16,7 @@ struct Vec3 {
 static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 must be three packed doubles (dumped as N x 3)");
 
 inline double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+inline Vec3 minus(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 
 using Image = std::array<std::int32_t, 3>;
 

@@ -83,7 +83,7 @@ ObservableRow row_of(const Observables& o) {
 }
 
 // The writer's view of a frame (which must outlive it).
-FrameView view_of(const Frame& f) {
+FrameView view_of(const EngineFrame& f) {
   FrameView v{f.time, f.collisions, f.below_delta, &f.position[0].x, f.image[0].data(), &f.velocity[0].x, 3, 3};
   if (!f.id.empty()) {
     v.id = f.id.data();
@@ -158,7 +158,7 @@ class Driver {
   void dump() {
     const double t = engine_.now();
     if (t > written_) {
-      const Frame f = engine_.frame();
+      const EngineFrame f = engine_.frame();
       writer_.add_frame(view_of(f));
     }
     last_dump_ = t;

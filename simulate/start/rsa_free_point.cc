@@ -12,7 +12,6 @@ namespace {
 // relative kTolerance: erring that way only keeps a voxel listed.
 constexpr double kTolerance = 1e-12;
 
-Vec3 minus(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 Vec3 cross(const Vec3& a, const Vec3& b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
 
 // The points n · p = c equidistant from centres a and b.

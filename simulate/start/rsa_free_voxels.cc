@@ -34,7 +34,6 @@ int nth_set_bit(std::uint64_t m, std::uint64_t k) {
 
 int rank_of(std::uint64_t listed, int bit) { return bit_count(listed & ((std::uint64_t(1) << bit) - 1)); }
 
-Vec3 minus(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 
 // A uniform integer in [0, range) (range > 0): the top bits of one draw,
 // rejected until below range (exact, and fewer than two draws on average).

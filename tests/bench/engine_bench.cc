@@ -83,7 +83,7 @@ coolgas::Particles clustered_base(const coolgas::Scene& base, const Rule& rule, 
   const auto t0 = std::chrono::steady_clock::now();
   auto e = engine_for(base, rule);
   while (e->now() < t_base) e->run_until(t_base, 1 << 22, nullptr);
-  const coolgas::Frame f = e->frame();
+  const coolgas::EngineFrame f = e->frame();
   std::fprintf(stderr, "W7: made the clustered start (N=%lld, L=%.4f, t=%g, %lld collisions) in %.0f s -> %s\n",
                (long long)base.N, base.L, f.time, (long long)f.collisions,
                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), path.c_str());

@@ -35,7 +35,7 @@ TEST(AggregationConservation, DenseRunKeepsMassAndLeavesNoOverlap) {
   }
   const Observables o = e->observables();
   ASSERT_TRUE(o.aggregates.has_value());
-  const Frame f = e->frame();
+  const EngineFrame f = e->frame();
   double mass = 0, largest = 0;
   std::int64_t present = 0;
   for (std::size_t i = 0; i < e->size(); ++i) {

@@ -18,7 +18,7 @@ namespace {
 void run_collisions(EngineBase& e, std::int64_t collisions) {
   while (e.counters().collisions < collisions) {
     e.run_until(e.now() * 1.2 + 1.0, 1 << 30, nullptr);
-    const Frame f = e.frame();
+    const EngineFrame f = e.frame();
     for (const Vec3& r : f.position)
       for (int d = 0; d < 3; ++d) ASSERT_TRUE(r[d] >= 0 && r[d] < e.box()) << r[d];
   }

@@ -25,7 +25,7 @@ inline StateReader saved_state(const EngineBase& e) {
 }
 
 // Whether two frames are equal bit for bit (positions, velocities, images, ids, masses, diameters).
-inline void expect_same_frame(const Frame& a, const Frame& b) {
+inline void expect_same_frame(const EngineFrame& a, const EngineFrame& b) {
   ASSERT_EQ(a.time, b.time);
   ASSERT_EQ(a.collisions, b.collisions);
   ASSERT_EQ(a.position.size(), b.position.size());

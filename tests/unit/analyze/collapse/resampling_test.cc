@@ -18,7 +18,7 @@
 namespace coolgas {
 namespace {
 
-constexpr double kTheta = 1.2, kZ = 2.5, kEta = 1.83;
+constexpr double kTrueTheta = 1.2, kTrueZ = 2.5, kTrueEta = 1.83;
 constexpr double kOffset = 0.05, kTilt = 0.05, kWhite = 0.005;
 
 ScalingCurve synthetic_run(double L, Random& rng) {
@@ -29,9 +29,9 @@ ScalingCurve synthetic_run(double L, Random& rng) {
   c.ln_L = std::log(L);
   const int per_decade = 10, decades = 6;  // t from 1 to 1e6
   for (int k = 0; k <= per_decade * decades; ++k) {
-    const double t = std::pow(10.0, double(k) / per_decade), x = t / std::pow(L, kZ);
+    const double t = std::pow(10.0, double(k) / per_decade), x = t / std::pow(L, kTrueZ);
     const double u = 2.0 * k / (per_decade * decades) - 1;
-    const double ln_E = -kZ * kTheta * c.ln_L - kTheta * std::log(x) + (kTheta - kEta) * std::log1p(x) + a + b * u +
+    const double ln_E = -kTrueZ * kTrueTheta * c.ln_L - kTrueTheta * std::log(x) + (kTrueTheta - kTrueEta) * std::log1p(x) + a + b * u +
                         kWhite * rng.normal();
     c.t.push_back(t);
     c.E.push_back(std::exp(ln_E));
@@ -99,13 +99,13 @@ TEST(CollapseResampling, OneStandardErrorCoversTheTruthAtItsStatedRate) {
   for (std::uint64_t seed = 1; seed <= trials; ++seed) {
     const auto sizes = synthetic_ensemble(5, 1000 + seed);
     const CollapseFit f = fit(sizes);
-    theta_in += std::abs(f.theta - kTheta) <= f.theta_err;
-    z_in += std::abs(f.z - kZ) <= f.z_err;
+    theta_in += std::abs(f.theta - kTrueTheta) <= f.theta_err;
+    z_in += std::abs(f.z - kTrueZ) <= f.z_err;
     CollapseSearch s;
     s.bootstrap = 40;
     const CollapseFit p = optimize_collapse(mean_curves(sizes), s);  // one mean curve per size
     ASSERT_EQ(p.kind, BootstrapKind::kErrors);
-    bootstrap_in += std::abs(p.theta - kTheta) <= p.theta_err;
+    bootstrap_in += std::abs(p.theta - kTrueTheta) <= p.theta_err;
   }
   EXPECT_GE(theta_in, 0.50 * trials);
   EXPECT_LE(theta_in, 0.86 * trials);

@@ -35,7 +35,7 @@ TEST(AggregationMerge, TwoAggregatesConserveMassVolumeAndMomentum) {
   AggregationEngine e = engine(p, {1, 3});
   const double contact = (3 - 0.5 * (1 + std::cbrt(3.0))) / 1.0;
   e.run_until(contact + 0.5, 1000, nullptr);
-  const Frame f = e.frame();
+  const EngineFrame f = e.frame();
   ASSERT_EQ(e.aggregates(), 1u);
   ASSERT_EQ(e.counters().collisions, 1);
   EXPECT_EQ(f.id[0], 0);  // the smaller id survives
@@ -59,7 +59,7 @@ TEST(AggregationMerge, AcrossThePeriodicBoundary) {
   AggregationEngine e = engine(p, {});
   // Already 0.5 apart through the boundary and approaching: they merge at once.
   e.run_until(1.0, 1000, nullptr);
-  const Frame f = e.frame();
+  const EngineFrame f = e.frame();
   ASSERT_EQ(e.aggregates(), 1u);
   // Centre of mass at x = 0 (through the boundary), then moving at 0.1875.
   EXPECT_NEAR(f.position[0].x, 0.1875, 1e-12);
@@ -77,7 +77,7 @@ TEST(AggregationMerge, ChainEndsWithoutOverlapAndConservesExactly) {
   std::vector<CollisionRecord> log;
   e.record_collisions(&log);
   e.run_until(2.0, 1000, nullptr);
-  const Frame f = e.frame();
+  const EngineFrame f = e.frame();
   ASSERT_EQ(e.aggregates(), 1u);
   ASSERT_EQ(log.size(), 3u);
   for (const auto& m : log) EXPECT_NEAR(m.t, 1.0, 1e-12);  // all at the same instant

@@ -51,7 +51,7 @@ TEST_P(EngineContract, SlicingChangesNothingAndFramesAreWrapped) {
     const RunStatus status = sliced->run_until(t, budget, nullptr);
     if (status == RunStatus::kEventBudget) EXPECT_EQ(sliced->counters().events - events, budget);
     else EXPECT_LE(sliced->counters().events - events, budget);
-    const Frame f = sliced->frame();
+    const EngineFrame f = sliced->frame();
     for (const Vec3& r : f.position)
       for (int d = 0; d < 3; ++d) ASSERT_TRUE(r[d] >= 0 && r[d] < s.L) << r[d];
     const Vec3 p = sliced->observables().momentum;
