@@ -67,6 +67,9 @@ struct FrameView {
 // The defaults were chosen by measurement (tests/bench/README.md, "Dump size
 // and write cost"): 32768 particles keep a chunk below HDF5's 1 MB chunk
 // cache, so a reader that reads part of a dump inflates each chunk once.
+// A chunk holds part of one dump only and is written once, whole, in that
+// dump's burst: compressed chunks (whose size varies) are never rewritten in
+// place, so the crash safety above is unchanged.
 struct DumpStorage {
   std::int64_t particles_per_chunk = 32768;
   int deflate_level = 1;
