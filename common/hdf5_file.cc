@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstring>
 
+#include <algorithm>
 #include <functional>
 #include <numeric>
 #include <stdexcept>
@@ -404,16 +405,23 @@ std::vector<hsize_t> shape(hid_t dataset) {
 }
 
 Handle create_series(hid_t loc, const std::string& name, Type type, const std::vector<hsize_t>& inner,
-                     hsize_t chunk_rows, std::optional<std::int64_t> fill_value) {
+                     hsize_t chunk_rows, std::optional<std::int64_t> fill_value, const Storage& storage) {
   std::vector<hsize_t> dims{0}, maxdims{H5S_UNLIMITED}, chunk{chunk_rows};
   for (hsize_t d : inner) {
     dims.push_back(d);
     maxdims.push_back(d);
     chunk.push_back(d);
   }
+  // A chunk may not exceed a fixed dimension, nor be empty.
+  if (storage.chunk_inner > 0 && chunk.size() > 1) chunk[1] = std::clamp<hsize_t>(chunk[1], 1, storage.chunk_inner);
+  for (hsize_t& c : chunk) c = std::max<hsize_t>(c, 1);
   Handle space(check(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), maxdims.data()), "series space"));
   Handle dcpl(check(H5Pcreate(H5P_DATASET_CREATE), "dataset property list"));
   check_status(H5Pset_chunk(dcpl.id(), static_cast<int>(chunk.size()), chunk.data()), "chunking");
+  if (storage.deflate_level > 0) {
+    check_status(H5Pset_shuffle(dcpl.id()), "shuffle filter");
+    check_status(H5Pset_deflate(dcpl.id(), static_cast<unsigned>(storage.deflate_level)), "deflate filter");
+  }
   if (fill_value) check_status(H5Pset_fill_value(dcpl.id(), H5T_NATIVE_INT64, &*fill_value), "fill value");
   return Handle(check(H5Dcreate2(loc, name.c_str(), file_type(type), space.id(), H5P_DEFAULT, dcpl.id(), H5P_DEFAULT),
                       "create dataset '" + name + "'"));

@@ -100,10 +100,20 @@ enum class Type { kFloat64, kInt64, kInt32 };
 // The shape of a dataset (dimensions, slowest first).
 std::vector<hsize_t> shape(hid_t dataset);
 
+// How a series' chunks are cut and filtered. `chunk_inner` > 0 cuts the
+// first inner dimension (the particles) into chunks of that many; 0 keeps it
+// whole. `deflate_level` 1-9 stores the chunks through HDF5's shuffle filter
+// and deflate (zlib), lossless; 0 stores them as they are.
+struct Storage {
+  hsize_t chunk_inner = 0;
+  int deflate_level = 0;
+};
+
 // Creates a chunked dataset whose first dimension grows: shape (0, inner...).
 // `fill_value`: the dataset's HDF5 fill value (H5MD marks absent particles with it).
 Handle create_series(hid_t loc, const std::string& name, Type type, const std::vector<hsize_t>& inner,
-                     hsize_t chunk_rows, std::optional<std::int64_t> fill_value = std::nullopt);
+                     hsize_t chunk_rows, std::optional<std::int64_t> fill_value = std::nullopt,
+                     const Storage& storage = {});
 // Appends one row (a block of prod(inner) elements) at the end of the first
 // dimension. With a row shape (N, k) and stride > k, the k elements of item i
 // are read from data[i * stride ...] (HDF5 gathers them; nothing is copied).

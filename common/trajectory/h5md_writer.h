@@ -60,11 +60,27 @@ struct FrameView {
   const double* diameter = nullptr;
 };
 
+// How the per-particle series of the dumps (positions, velocities, images
+// and the aggregation fields) are stored: chunks of one dump's
+// `particles_per_chunk` particles through shuffle + deflate at
+// `deflate_level`, lossless (0: uncompressed, as coolgas wrote before).
+// The defaults were chosen by measurement (tests/bench/README.md, "Dump size
+// and write cost"): 32768 particles keep a chunk below HDF5's 1 MB chunk
+// cache, so a reader that reads part of a dump inflates each chunk once.
+// A chunk holds part of one dump only and is written once, whole, in that
+// dump's burst: compressed chunks (whose size varies) are never rewritten in
+// place, so the crash safety above is unchanged.
+struct DumpStorage {
+  std::int64_t particles_per_chunk = 32768;
+  int deflate_level = 1;
+};
+
 class H5mdWriter {
  public:
   // Creates a new file (fails if it exists unless overwrite). The schema and
   // program versions of `params` are set here.
-  static H5mdWriter create(const std::string& path, const RunParameters& params, bool overwrite);
+  static H5mdWriter create(const std::string& path, const RunParameters& params, bool overwrite,
+                           const DumpStorage& storage = {});
   // Opens an existing file to append after its last complete frame; rows
   // written after that frame (an interrupted burst) are dropped. InputError
   // if another process is writing it (writer_lock.h).
@@ -88,7 +104,7 @@ class H5mdWriter {
 
  private:
   H5mdWriter() = default;
-  void create_objects(const RunParameters& params);
+  void create_objects(const RunParameters& params, const DumpStorage& storage);
   void drop_interrupted_burst();
   void begin_appending();
   void write_pending();

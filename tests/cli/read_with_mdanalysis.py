@@ -2,8 +2,11 @@
 """Checks that MDAnalysis 2.4 and h5py read a coolgas H5MD file as documented.
 
 usage: read_with_mdanalysis.py FILE N L FRAME
-Exits non-zero (with a message) if the number of atoms, the box, the
-positions, velocities or times seen by MDAnalysis differ from the raw datasets.
+Exits non-zero (with a message) if the per-particle series are not stored
+compressed (shuffle + deflate, data-schema/h5md-profile.md, "Storage"), so
+that both readers are shown to read compressed files, or if the number of
+atoms, the box, the positions, velocities or times seen by MDAnalysis differ
+from the raw datasets.
 """
 import sys
 import warnings
@@ -14,14 +17,18 @@ import MDAnalysis as mda
 import numpy as np
 
 path, n, box, frame = sys.argv[1], int(sys.argv[2]), float(sys.argv[3]), int(sys.argv[4])
+errors = []
 with h5py.File(path, "r") as f:
+    for name in ("position", "velocity", "image"):
+        ds = f[f"particles/all/{name}/value"]
+        if ds.compression != "gzip" or not ds.shuffle:
+            errors.append(f"{name}: stored with compression {ds.compression}, shuffle {ds.shuffle}")
     pos = f["particles/all/position/value"][frame]
     vel = f["particles/all/velocity/value"][frame]
     times = f["particles/all/position/time"][:]
 
 u = mda.Universe.empty(n).load_new(path, format="H5MD", convert_units=False)
 ts = u.trajectory[frame]
-errors = []
 if u.atoms.n_atoms != n:
     errors.append(f"atoms: {u.atoms.n_atoms} != {n}")
 if len(u.trajectory) != len(times):

@@ -5,8 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <vector>
 
 #include "common/error.h"
 #include "common/hdf5_file.h"
@@ -72,6 +74,67 @@ TEST(H5mdWriter, ReopenDropsRowsAfterTheLastCompleteFrame) {
   h5::Handle f = h5::open_file(path, h5::Mode::kReadOnly);
   h5::Handle t = h5::open_dataset(f.id(), "observables/kinetic_energy/time");
   EXPECT_EQ(h5::read_all<double>(t.id()), (std::vector<double>{0, 1, 2}));
+}
+
+// The filters and chunk shape a dataset was created with.
+struct StoredAs {
+  std::vector<H5Z_filter_t> filters;
+  std::vector<hsize_t> chunk;
+};
+StoredAs stored_as(hid_t file, const std::string& path) {
+  h5::Handle ds = h5::open_dataset(file, path);
+  h5::Handle dcpl(H5Dget_create_plist(ds.id()));
+  StoredAs s;
+  for (int i = 0; i < H5Pget_nfilters(dcpl.id()); ++i) {
+    unsigned flags = 0;
+    std::size_t n_values = 0;
+    s.filters.push_back(H5Pget_filter2(dcpl.id(), unsigned(i), &flags, &n_values, nullptr, 0, nullptr, nullptr));
+  }
+  s.chunk.resize(std::size_t(H5Pget_chunk(dcpl.id(), 0, nullptr)));
+  H5Pget_chunk(dcpl.id(), int(s.chunk.size()), s.chunk.data());
+  return s;
+}
+
+// N = 10 particles in chunks of 4: three chunks per dump, the last one
+// partial. Every number must come back bit for bit (the filters are lossless),
+// and the per-particle series carry shuffle then deflate, the others nothing.
+TEST(H5mdWriter, DumpsAreChunkedAndCompressedLosslessly) {
+  const std::string path = test::scratch_dir("h5md_compressed") + "/run.h5";
+  RunParameters p = small_params();
+  p.N = 10;
+  p.L = 10;
+  std::vector<double> pos(30), vel(30);
+  std::vector<std::int32_t> img(30);
+  for (int i = 0; i < 30; ++i) {
+    pos[std::size_t(i)] = std::nextafter(10.0 * i / 30.0, 0.0);  // every mantissa bit in use
+    vel[std::size_t(i)] = -1e-7 * (i + 1) / 3.0;
+    img[std::size_t(i)] = i % 7 - 3;
+  }
+  {
+    H5mdWriter w = H5mdWriter::create(path, p, false, {.particles_per_chunk = 4, .deflate_level = 1});
+    for (int f = 0; f < 2; ++f) w.add_frame({double(f), f, 0, pos.data(), img.data(), vel.data()});
+  }
+  h5::Handle f = h5::open_file(path, h5::Mode::kReadOnly);
+  const std::vector<H5Z_filter_t> shuffle_deflate{H5Z_FILTER_SHUFFLE, H5Z_FILTER_DEFLATE};
+  for (const char* name : {"position", "velocity", "image"}) {
+    const StoredAs s = stored_as(f.id(), std::string("particles/all/") + name + "/value");
+    EXPECT_EQ(s.filters, shuffle_deflate) << name;
+    EXPECT_EQ(s.chunk, (std::vector<hsize_t>{1, 4, 3})) << name;
+  }
+  EXPECT_TRUE(stored_as(f.id(), "particles/all/box/edges/value").filters.empty());
+  EXPECT_TRUE(stored_as(f.id(), "particles/all/position/time").filters.empty());
+  EXPECT_EQ(h5::read_row<double>(h5::open_dataset(f.id(), "particles/all/position/value").id(), 1), pos);
+  EXPECT_EQ(h5::read_row<double>(h5::open_dataset(f.id(), "particles/all/velocity/value").id(), 1), vel);
+  EXPECT_EQ(h5::read_row<std::int32_t>(h5::open_dataset(f.id(), "particles/all/image/value").id(), 0), img);
+}
+
+// Fewer particles than a chunk holds: the chunk is cut to N (HDF5 refuses a
+// chunk larger than a fixed dimension).
+TEST(H5mdWriter, AChunkNeverExceedsTheParticles) {
+  const std::string path = test::scratch_dir("h5md_small_chunk") + "/run.h5";
+  { H5mdWriter w = H5mdWriter::create(path, small_params(), false); }
+  h5::Handle f = h5::open_file(path, h5::Mode::kReadOnly);
+  EXPECT_EQ(stored_as(f.id(), "particles/all/position/value").chunk, (std::vector<hsize_t>{1, 2, 3}));
 }
 
 TEST(H5mdWriter, H5pyAndMDAnalysisReadTheFile) {
