@@ -104,5 +104,54 @@ TEST(EngineVsReferenceAggregation, TheCaseHasChainsAndRebuilds) {
   EXPECT_NE(fast->cell_width(), width);
 }
 
+// Aggregates of many sizes, growing from wider than a cell up to the L/2
+// limit (past the old L/3 one): a 7³ lattice in a box of side 16, every
+// fifth site a mass-8 aggregate (diameter 2, which fits the lattice spacing
+// 16/7 beside unit spheres), random velocities. The engine runs until it
+// stops at the limit; every merge up to there is the reference's, found
+// through the large-aggregate index at periodic images far beyond the 27
+// neighbours, and, near the end, through images of the box itself.
+TEST(EngineVsReferenceAggregation, SameMergesWithLargeAggregatesUpToHalfTheBox) {
+  const double L = 16;
+  Particles p;
+  p.L = L;
+  p.resize(343);
+  AggregateState a = AggregateState::unit_spheres(p.size());
+  std::uint64_t s = 2024;
+  auto uniform = [&s] { return double((s = s * 6364136223846793005ULL + 1442695040888963407ULL) >> 11) * 0x1.0p-53; };
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    p.r[i] = {(double(i % 7) + 0.5) * L / 7, (double(i / 7 % 7) + 0.5) * L / 7, (double(i / 49) + 0.5) * L / 7};
+    p.v[i] = {uniform() - 0.5, uniform() - 0.5, uniform() - 0.5};
+    if (i % 5 == 0) a.mass[i] = 8, a.diameter[i] = 2;
+  }
+  AggregationEngine e(p, a, 0.0);
+  std::vector<CollisionRecord> log;
+  e.record_collisions(&log);
+  std::size_t most_large = 0;
+  double widest_cell_multiple = 0;
+  bool stopped = false;
+  while (!stopped && e.now() < 1e5) {
+    try {
+      e.run_until(e.now() + 0.25, 1 << 30, nullptr);
+    } catch (const RunStopped& stop) {
+      EXPECT_EQ(stop.reason, StopReason::kAggregateTooLarge);
+      stopped = true;
+    }
+    most_large = std::max(most_large, e.large_aggregates());
+    if (!stopped) widest_cell_multiple = std::max(widest_cell_multiple, e.largest_diameter() / e.cell_width());
+  }
+  ASSERT_TRUE(stopped);
+  EXPECT_GE(e.largest_diameter(), L / 2);
+  EXPECT_GT(most_large, 3u);
+  EXPECT_GT(widest_cell_multiple, 1.5);  // partners found beyond the 27 neighbouring cells
+  const auto ref = reference_merges(p, a, 0.0, 1e9, std::int64_t(log.size()));
+  ASSERT_EQ(ref.size(), log.size());
+  for (std::size_t k = 0; k < log.size(); ++k) {
+    ASSERT_EQ(log[k].i, ref[k].i) << "merge " << k;
+    ASSERT_EQ(log[k].j, ref[k].j) << "merge " << k;
+    ASSERT_NEAR(log[k].t, ref[k].t, 1e-9 * (1 + ref[k].t)) << "merge " << k;
+  }
+}
+
 }  // namespace
 }  // namespace coolgas
