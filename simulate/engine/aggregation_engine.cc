@@ -13,15 +13,14 @@ namespace coolgas {
 namespace {
 // Fine cells are this many times the mean distance between aggregates when
 // the grid is rebuilt (about one aggregate per cell, 27 candidates per
-// search), and the blocks this much wider than the largest aggregate needs,
-// so that a rebuild for the blocks is needed only after it has grown by a
-// quarter. The grid is rebuilt finer once aggregates are
-// kCellsPerAggregateLimit times fewer than cells. Measured on W3 at N = 2e5
+// search); the grid is rebuilt finer once aggregates are
+// kCellsPerAggregateLimit times fewer than cells. The large aggregates are
+// indexed in blocks of kBlock³ fine cells. Measured on W3 at N = 2e5
 // (tests/bench/aggregation_bench.cc), CPU seconds with set-up: spacing
 // factor 1.0, 1.2, 1.4: 6.6, 6.6, 7.9; limit 4 or 8: 6.6, 6.7.
 constexpr double kSpacingFactor = 1.0;
-constexpr double kBlockHeadroom = 1.25;
 constexpr double kCellsPerAggregateLimit = 4.0;
+constexpr int kBlock = 2;
 }  // namespace
 
 AggregateState AggregateState::unit_spheres(std::size_t n) {
@@ -71,11 +70,12 @@ AggregationEngine::AggregationEngine(const StateReader& in) {
     in.fail("the aggregation engine's arrays differ in length");
   if (s.has_grid) {
     grid_ = std::make_unique<CellGrid>(L_, grid_request_, n);
+    grid_->bind_next_links(&m_[0].next, sizeof(Motion) / sizeof(std::int32_t));
     grid_->load(in, "aggregation/grid/");
     large_ = LargeAggregateIndex(grid_->cells_per_side(), s.block, n);
     const auto fine = in.get<std::int32_t>("aggregation/large_cell");
     if (fine.size() != n) in.fail("the aggregation engine's arrays differ in length");
-    large_.assign(fine);
+    large_.assign(fine, [this](int i) { return size_class(i); });
   }
   calendar_.load(in, "aggregation/calendar/");
 }
@@ -119,13 +119,9 @@ void AggregationEngine::advance(int i) {
   m.t = now_;
 }
 
-// A grid of three cells per side cannot be coarser; with fewer than three
-// blocks per side every block is searched, whatever the largest reach.
+// A grid of three cells per side cannot be coarser.
 bool AggregationEngine::grid_outdated() const {
-  const int n = grid_->cells_per_side();
-  const bool blocks_searched = n / large_.block() >= 3;
-  return (n > 3 && double(grid_->cell_count()) > kCellsPerAggregateLimit * double(alive_)) ||
-         (blocks_searched && cell_reach(dmax_, grid_request_) > large_.block());
+  return grid_->cells_per_side() > 3 && double(grid_->cell_count()) > kCellsPerAggregateLimit * double(alive_);
 }
 
 // Aggregate i (present, at now_, wrapped) listed in fine cell `fine`: in the
@@ -134,7 +130,7 @@ void AggregationEngine::place(int i, int fine) {
   if (diam_[i] <= grid_request_) {
     grid_->insert(i, fine);
   } else {
-    large_.insert(i, fine);
+    large_.insert(i, fine, size_class(i));
   }
 }
 
@@ -144,6 +140,9 @@ void AggregationEngine::place(int i, int fine) {
 int AggregationEngine::reach_of(int i) const {
   return diam_[i] <= grid_request_ ? 1 : cell_reach(0.5 * (diam_[i] + grid_request_), grid_request_);
 }
+
+// A large aggregate's class in the index: its reach, less 2 (the least).
+int AggregationEngine::size_class(int i) const { return reach_of(i) - 2; }
 
 // Every aggregate to now_, wrapped, into a new grid: fine cells about
 // kSpacingFactor mean distances wide (at most L/3: three cells per side),
@@ -162,11 +161,12 @@ bool AggregationEngine::rebuild_grid() {
   const double widest = L_ / 3.0 / (1.0 + 1e-6);  // three cells per side, with CellGrid's own margin
   const double wanted = std::min(spacing * kSpacingFactor, widest);
   const int fine = int(std::floor(L_ / (wanted * (1.0 + 1e-6))));
-  const int block = std::min(fine, cell_reach(dmax_ * kBlockHeadroom, wanted));
-  const int n = fine >= 3 * block ? fine / block * block : fine;  // whole blocks, or one block per box
+  const int block = fine >= 3 * kBlock ? kBlock : 1;
+  const int n = fine / block * block;  // whole blocks
   grid_ = std::make_unique<CellGrid>(L_, L_ / (n + 0.5), m_.size());  // exactly n cells per side
+  grid_->bind_next_links(&m_[0].next, sizeof(Motion) / sizeof(std::int32_t));  // one cache line per candidate
   grid_request_ = grid_->width() / (1.0 + 1e-6);
-  large_ = LargeAggregateIndex(n, n >= 3 * block ? block : n, m_.size());
+  large_ = LargeAggregateIndex(n, block, m_.size());
   for (std::size_t i = 0; i < m_.size(); ++i)
     if (present(int(i))) place(int(i), grid_->cell_of(m_[i].r.x, m_[i].r.y, m_[i].r.z));
   return true;
@@ -218,23 +218,28 @@ void AggregationEngine::scan_cell(int i, int cell, const Vec3& shift, double& be
     if (j != i) consider(i, j, shift, best, partner);
 }
 
-// Earliest contact of aggregate i with the large ones, at every image their
-// pair's reach allows.
-void AggregationEngine::scan_large(int i, double& best, int& partner) const {
+// Calls f(j, shift) for every large aggregate j (not i) at every periodic
+// image its pair's reach allows.
+template <class F>
+void AggregationEngine::for_each_large_image(int i, F&& f) const {
   const int n = grid_->cells_per_side();
   const int fine = fine_cell(i);
   const CellCoord ci = grid_->coord(fine);
-  large_.for_each_near(fine, [&](int j) {
+  const double di = diam_[i], w = grid_request_;
+  auto images = [&](int j) {
     if (j == i) return;
-    const int reach = cell_reach(0.5 * (diam_[i] + diam_[j]), grid_request_);
+    const int reach = cell_reach(0.5 * (di + diam_[j]), w);
     const CellCoord cj = grid_->coord(large_.fine_cell(j));
     for_each_image_offset(cj.z - ci.z, n, L_, reach, [&](int, double sz) {
       for_each_image_offset(cj.y - ci.y, n, L_, reach, [&](int, double sy) {
-        for_each_image_offset(cj.x - ci.x, n, L_, reach,
-                              [&](int, double sx) { consider(i, j, {sx, sy, sz}, best, partner); });
+        for_each_image_offset(cj.x - ci.x, n, L_, reach, [&](int, double sx) { f(j, Vec3{sx, sy, sz}); });
       });
     });
-  });
+  };
+  // Class c holds reach R = c + 2, diameters below (2R - 1) w: a pair with
+  // one of them is within cell_reach((d_i + (2R - 1) w) / 2) cells.
+  for (int c = 0; c < large_.classes(); ++c)
+    large_.for_each_near(fine, c, cell_reach(0.5 * (di + (2 * c + 3) * w), w), images);
 }
 
 // Aggregate i is at now_; its event is the first face of its fine cell it
@@ -245,7 +250,7 @@ Event AggregationEngine::find_event(int i) const {
   double best = exit.time;
   int partner = -1;
   for_each_cell_in_reach(i, reach_of(i), [&](int cell, const Vec3& shift) { scan_cell(i, cell, shift, best, partner); });
-  scan_large(i, best, partner);
+  for_each_large_image(i, [&](int j, const Vec3& shift) { consider(i, j, shift, best, partner); });
   if (partner >= 0) return Event::collision(now_ + best, partner, m_[partner].count);
   return exit.face >= 0 ? Event::crossing(now_ + best, exit.face) : Event{};
 }
@@ -304,27 +309,24 @@ int AggregationEngine::merge(int a, int b) {
 }
 
 // The smallest id overlapping aggregate k at now_ (periodic), or -1: those
-// within its reach, and the large ones by minimum image (exact below the
-// L/2 limit).
+// within its reach and the large ones, at the images the cells allow (below
+// the L/2 limit an overlap is through one image only).
 int AggregationEngine::first_overlap(int k) const {
   int found = -1;
-  auto check = [&](int j, const Vec3& d) {
+  const Motion& mk = m_[k];  // at now_: merge() advanced it
+  auto check = [&](int j, const Vec3& shift) {
+    if (j == k || (found >= 0 && j > found)) return;
+    const Motion& mj = m_[j];
+    const double dtj = now_ - mj.t;
+    const Vec3 d{mj.r.x + mj.v.x * dtj + shift.x - mk.r.x, mj.r.y + mj.v.y * dtj + shift.y - mk.r.y,
+                 mj.r.z + mj.v.z * dtj + shift.z - mk.r.z};
     const double sigma = 0.5 * (diam_[k] + diam_[j]);
     if (dot(d, d) < sigma * sigma) found = j;
   };
-  const Motion& mk = m_[k];  // at now_: merge() advanced it
   for_each_cell_in_reach(k, reach_of(k), [&](int cell, const Vec3& shift) {
-                         for (int j = grid_->first(cell); j >= 0; j = grid_->next(j)) {
-                           if (j == k || (found >= 0 && j > found)) continue;
-                           const Motion& mj = m_[j];
-                           const double dtj = now_ - mj.t;
-                           check(j, {mj.r.x + mj.v.x * dtj + shift.x - mk.r.x, mj.r.y + mj.v.y * dtj + shift.y - mk.r.y,
-                                     mj.r.z + mj.v.z * dtj + shift.z - mk.r.z});
-                         }
-                       });
-  large_.for_each_near(fine_cell(k), [&](int j) {
-    if (j != k && (found < 0 || j < found)) check(j, separation(k, j));
+    for (int j = grid_->first(cell); j >= 0; j = grid_->next(j)) check(j, shift);
   });
+  for_each_large_image(k, check);
   return found;
 }
 

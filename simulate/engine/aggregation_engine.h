@@ -14,11 +14,10 @@
 // wider than a cell ("large", a few per cent) are indexed apart in coarse
 // cells of block³ fine cells (large_aggregate_index.h): a large aggregate's
 // search looks as many fine cells out as its reach (aggregation_reach.h),
-// and every search looks for large partners in the 27 coarse cells around,
-// at the periodic images their fine cells allow. So the size spread costs
-// the few large aggregates, not every search. The grid is rebuilt when
-// aggregates have become fewer than cells, or the largest has outgrown the
-// blocks.
+// and every search looks for large partners in the coarse cells within the
+// reach of the largest, at the periodic images their fine cells allow. So
+// the size spread costs the few large aggregates, not every search. The
+// grid is rebuilt finer when aggregates have become much fewer than cells.
 //
 // The limit: aggregates may grow until the largest diameter reaches L/2.
 // Below it every contact distance (d_i + d_j)/2 is below L/2, so two
@@ -101,6 +100,7 @@ class AggregationEngine final : public EngineBase {
   void place(int i, int fine);
   int fine_cell(int i) const { return large_.contains(i) ? large_.fine_cell(i) : grid_->cell(i); }
   int reach_of(int i) const;
+  int size_class(int i) const;
   // Calls f(cell, shift) for the cells within `reach` of aggregate i's.
   template <class F>
   void for_each_cell_in_reach(int i, int reach, F&& f) const;
@@ -109,7 +109,8 @@ class AggregationEngine final : public EngineBase {
   void predict_all();
   Event find_event(int i) const;
   void scan_cell(int i, int cell, const Vec3& shift, double& best, int& partner) const;
-  void scan_large(int i, double& best, int& partner) const;
+  template <class F>
+  void for_each_large_image(int i, F&& f) const;
   void consider(int i, int j, const Vec3& shift, double& best, int& partner) const;
   void cross(int i, int face);
   void merge_chain(int i, int j);

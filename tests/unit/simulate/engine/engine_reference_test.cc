@@ -50,8 +50,9 @@ struct Viscoelastic : RuleCase<ViscoelasticRule> {
   static ViscoelasticRule rule() { return {0.3, 0.0}; }
   static constexpr int kEvents = 300;
 };
-// 400 unit spheres at phi = 0.05 until 300 merges: the largest aggregate
-// outgrows the cells (the grid is rebuilt) and merges chain.
+// 400 unit spheres at phi = 0.05 until 360 merges: aggregates outgrow the
+// cells (the large-aggregate index is used), become four times fewer than
+// cells (the grid is rebuilt) and merges chain.
 struct Aggregation {
   using EngineType = AggregationEngine;
   struct NoRule {};
@@ -61,7 +62,7 @@ struct Aggregation {
     return s;
   }
   static NoRule rule() { return {}; }
-  static constexpr int kEvents = 300;
+  static constexpr int kEvents = 360;
   static std::unique_ptr<EngineType> engine(const Particles& p, NoRule) {
     return std::make_unique<EngineType>(p, AggregateState::unit_spheres(p.size()), 0.0);
   }
@@ -91,7 +92,7 @@ TYPED_TEST(EngineVsReference, SameEventSequence) {
   }
 }
 
-// The aggregation case really goes through chains and grid rebuilds.
+// The aggregation case really goes through chains, grid rebuilds and the large-aggregate index.
 TEST(EngineVsReferenceAggregation, TheCaseHasChainsAndRebuilds) {
   const Particles start = initial_state(Aggregation::scene());
   const auto ref = Aggregation::reference(start, {}, Aggregation::kEvents);
@@ -100,8 +101,13 @@ TEST(EngineVsReferenceAggregation, TheCaseHasChainsAndRebuilds) {
   EXPECT_GT(chained, 0);
   auto fast = Aggregation::engine(start, {});
   const double width = fast->cell_width();
-  while (fast->counters().collisions < Aggregation::kEvents) fast->run_until(fast->now() + 0.1, 1 << 30, nullptr);
+  std::size_t most_large = 0;
+  while (fast->counters().collisions < Aggregation::kEvents) {
+    fast->run_until(fast->now() + 0.1, 1 << 30, nullptr);
+    most_large = std::max(most_large, fast->large_aggregates());
+  }
   EXPECT_NE(fast->cell_width(), width);
+  EXPECT_GT(most_large, 0u);
 }
 
 // Aggregates of many sizes, growing from wider than a cell up to the L/2
