@@ -16,8 +16,9 @@ namespace {
 // search); the grid is rebuilt finer once aggregates are
 // kCellsPerAggregateLimit times fewer than cells. The large aggregates are
 // indexed in blocks of kBlock³ fine cells. Measured on W3 at N = 2e5
-// (tests/bench/aggregation_bench.cc), CPU seconds with set-up: spacing
-// factor 1.0, 1.2, 1.4: 6.6, 6.6, 7.9; limit 4 or 8: 6.6, 6.7.
+// (tests/bench/aggregation_bench.cc) with a first version of the index,
+// CPU seconds with set-up on a loaded machine: spacing factor 1.0, 1.2, 1.4:
+// 6.6, 6.6, 7.9; limit 4 or 8: 6.6, 6.7.
 constexpr double kSpacingFactor = 1.0;
 constexpr double kCellsPerAggregateLimit = 4.0;
 constexpr int kBlock = 2;
@@ -146,7 +147,7 @@ int AggregationEngine::size_class(int i) const { return reach_of(i) - 2; }
 
 // Every aggregate to now_, wrapped, into a new grid: fine cells about
 // kSpacingFactor mean distances wide (at most L/3: three cells per side),
-// grouped in blocks wide enough for the largest pair's reach. Returns false
+// a whole number of index blocks per side. Returns false
 // (aggregates moved and wrapped, no grid) when the largest aggregate is half
 // the box wide; run_until() then reports it.
 bool AggregationEngine::rebuild_grid() {
@@ -175,7 +176,8 @@ bool AggregationEngine::rebuild_grid() {
 void AggregationEngine::throw_too_large() const {
   std::ostringstream s;
   s << "aggregation at t = " << now_ << ": the largest aggregate (diameter " << dmax_
-    << ") is half the box wide or more (L = " << L_ << "), where an aggregate could touch another through two periodic images, with " << alive_
+    << ") is half the box wide or more (L = " << L_
+    << "), where an aggregate could touch another through two periodic images, with " << alive_
     << " aggregates left; use a larger system (more particles) to go on";
   throw RunStopped(StopReason::kAggregateTooLarge, s.str(), now_);
 }
