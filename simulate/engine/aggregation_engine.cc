@@ -13,7 +13,7 @@ namespace coolgas {
 namespace {
 // Fine cells are this many times the mean distance between aggregates when
 // the grid is rebuilt (about one aggregate per cell, 27 candidates per
-// search); the grid is rebuilt finer once aggregates are
+// search); the grid is rebuilt, wider, once aggregates are
 // kCellsPerAggregateLimit times fewer than cells. The large aggregates are
 // indexed in blocks of kBlock³ fine cells. Measured on W3 at N = 2e5
 // (tests/bench/aggregation_bench.cc) with a first version of the index,

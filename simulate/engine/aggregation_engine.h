@@ -11,13 +11,14 @@
 // σ = (d_i + d_j)/2), one event per aggregate, lazy positions and lazy
 // invalidation by counters. The grid is sized for typical aggregates, not for
 // the largest: cells about one aggregate wide on average. The aggregates
-// wider than a cell ("large", a few per cent) are indexed apart in coarse
+// wider than a cell ("large") are indexed apart in coarse
 // cells of block³ fine cells (large_aggregate_index.h): a large aggregate's
 // search looks as many fine cells out as its reach (aggregation_reach.h),
-// and every search looks for large partners in the coarse cells within the
-// reach of the largest, at the periodic images their fine cells allow. So
-// the size spread costs the few large aggregates, not every search. The
-// grid is rebuilt finer when aggregates have become much fewer than cells.
+// and every search looks for large partners of each size class in the
+// coarse cells within the reach a pair with that class can need, at the
+// periodic images their fine cells allow. So the size spread costs the few
+// large aggregates, not every search. The grid is rebuilt, with wider cells,
+// when aggregates have become four times fewer than cells.
 //
 // The limit: aggregates may grow until the largest diameter reaches L/2.
 // Below it every contact distance (d_i + d_j)/2 is below L/2, so two
