@@ -43,7 +43,8 @@ demo: build
 	$(MAKE) -C pipelines/demo -j $(JOBS) BIN=$(abspath $(BUILD))/bin OUT=$(abspath out/demo)
 
 # Speed figures for the README (one core each; see tests/bench/). The
-# aggregation benchmark (W3, ~3 min) is run by hand: build/bench/aggregation_bench.
+# aggregation benchmarks (W3, ~1 CPU-min; W3b, far longer) are run by hand:
+# build/bench/aggregation_bench (see tests/bench/README.md).
 bench: build
 	$(BUILD)/bench/engine_bench all 108000 50 3
 	$(BUILD)/bench/engine_bench W5

@@ -5,19 +5,23 @@
 #include <sstream>
 
 #include "common/compensated_sum.h"
+#include "simulate/engine/aggregation_reach.h"
 #include "simulate/engine/pair_prediction.h"
 
 namespace coolgas {
 
 namespace {
-// Cells are made this much wider than the largest diameter when the grid is
-// rebuilt, so that a rebuild (which predicts every aggregate again) is needed
-// only after the largest volume has about doubled. Measured on W3 at N = 2e5
-// (tests/bench/aggregation_bench.cc): 1.1 costs 21 CPU-s, 1.25 17, 1.4 16.4;
-// wider cells make every prediction dearer.
-constexpr double kWidthHeadroom = 1.25;
-// The grid is rebuilt smaller once aggregates are this many times fewer than cells.
-constexpr double kCellsPerAggregateLimit = 8.0;
+// Fine cells are this many times the mean distance between aggregates when
+// the grid is rebuilt (about one aggregate per cell, 27 candidates per
+// search); the grid is rebuilt, wider, once aggregates are
+// kCellsPerAggregateLimit times fewer than cells. The large aggregates are
+// indexed in blocks of kBlock³ fine cells. Measured on W3 at N = 2e5
+// (tests/bench/aggregation_bench.cc) with a first version of the index,
+// CPU seconds with set-up on a loaded machine: spacing factor 1.0, 1.2, 1.4:
+// 6.6, 6.6, 7.9; limit 4 or 8: 6.6, 6.7.
+constexpr double kSpacingFactor = 1.0;
+constexpr double kCellsPerAggregateLimit = 4.0;
+constexpr int kBlock = 2;
 }  // namespace
 
 AggregateState AggregateState::unit_spheres(std::size_t n) {
@@ -67,20 +71,28 @@ AggregationEngine::AggregationEngine(const StateReader& in) {
     in.fail("the aggregation engine's arrays differ in length");
   if (s.has_grid) {
     grid_ = std::make_unique<CellGrid>(L_, grid_request_, n);
+    grid_->bind_next_links(&m_[0].next, sizeof(Motion) / sizeof(std::int32_t));
     grid_->load(in, "aggregation/grid/");
+    large_ = LargeAggregateIndex(grid_->cells_per_side(), s.block, n);
+    const auto fine = in.get<std::int32_t>("aggregation/large_cell");
+    if (fine.size() != n) in.fail("the aggregation engine's arrays differ in length");
+    large_.assign(fine, [this](int i) { return size_class(i); });
   }
   calendar_.load(in, "aggregation/calendar/");
 }
 
 void AggregationEngine::save(StateWriter& out) const {
   out.put_value("aggregation/scalars", AggregationScalars{L_, now_, dmax_, grid_request_, std::int64_t(alive_),
-                                                          too_large_, grid_ != nullptr, c_});
+                                                          too_large_, grid_ != nullptr, large_.block(), 0, c_});
   out.put("aggregation/motion", m_);
   out.put("aggregation/image", image_);
   out.put("aggregation/mass", mass_);
   out.put("aggregation/diameter", diam_);
   out.put("aggregation/id", id_);
-  if (grid_) grid_->save(out, "aggregation/grid/");
+  if (grid_) {
+    grid_->save(out, "aggregation/grid/");
+    out.put("aggregation/large_cell", large_.fine_cells());
+  }
   calendar_.save(out, "aggregation/calendar/");
 }
 
@@ -108,37 +120,64 @@ void AggregationEngine::advance(int i) {
   m.t = now_;
 }
 
+// A grid of three cells per side cannot be coarser.
 bool AggregationEngine::grid_outdated() const {
-  return dmax_ > grid_->width() ||
-         (grid_->cells_per_side() > 3 && double(grid_->cell_count()) > kCellsPerAggregateLimit * double(alive_));
+  return grid_->cells_per_side() > 3 && double(grid_->cell_count()) > kCellsPerAggregateLimit * double(alive_);
 }
 
-// Every aggregate to now_, wrapped, into a new grid whose cells are wider
-// than the largest diameter and hold about one aggregate each. Returns false
-// (aggregates moved and wrapped, no grid) when the largest aggregate is too
-// wide for three cells per side; run_until() then reports it.
+// Aggregate i (present, at now_, wrapped) listed in fine cell `fine`: in the
+// grid's lists if no wider than a cell, else in the large index.
+void AggregationEngine::place(int i, int fine) {
+  if (diam_[i] <= grid_request_) {
+    grid_->insert(i, fine);
+  } else {
+    large_.insert(i, fine, size_class(i));
+  }
+}
+
+// How many cells out aggregate i's search looks: 1 for one no wider than a
+// cell, else far enough for any partner no wider than a cell (wider ones
+// are found through the large index).
+int AggregationEngine::reach_of(int i) const {
+  return diam_[i] <= grid_request_ ? 1 : cell_reach(0.5 * (diam_[i] + grid_request_), grid_request_);
+}
+
+// A large aggregate's class in the index: its reach, less 2 (the least).
+int AggregationEngine::size_class(int i) const { return reach_of(i) - 2; }
+
+// Every aggregate to now_, wrapped, into a new grid: fine cells about
+// kSpacingFactor mean distances wide (at most L/3: three cells per side),
+// a whole number of index blocks per side. Returns false
+// (aggregates moved and wrapped, no grid) when the largest aggregate is half
+// the box wide; run_until() then reports it.
 bool AggregationEngine::rebuild_grid() {
   for (std::size_t i = 0; i < m_.size(); ++i) {
     if (!present(int(i))) continue;
     advance(int(i));
     wrap_into_box(m_[i].r, image_[i], L_);
   }
+  too_large_ = 2.0 * dmax_ >= L_;
+  if (too_large_) return false;
   const double spacing = std::cbrt(L_ * L_ * L_ / double(std::max<std::size_t>(alive_, 1)));
   const double widest = L_ / 3.0 / (1.0 + 1e-6);  // three cells per side, with CellGrid's own margin
-  const double width = std::min(std::max(dmax_ * kWidthHeadroom, spacing), widest);
-  too_large_ = width < dmax_;
-  if (too_large_) return false;
-  grid_request_ = width;
-  grid_ = std::make_unique<CellGrid>(L_, width, m_.size());
+  const double wanted = std::min(spacing * kSpacingFactor, widest);
+  const int fine = int(std::floor(L_ / (wanted * (1.0 + 1e-6))));
+  const int block = fine >= 3 * kBlock ? kBlock : 1;
+  const int n = fine / block * block;  // whole blocks
+  grid_ = std::make_unique<CellGrid>(L_, L_ / (n + 0.5), m_.size());  // exactly n cells per side
+  grid_->bind_next_links(&m_[0].next, sizeof(Motion) / sizeof(std::int32_t));  // one cache line per candidate
+  grid_request_ = grid_->width() / (1.0 + 1e-6);
+  large_ = LargeAggregateIndex(n, block, m_.size());
   for (std::size_t i = 0; i < m_.size(); ++i)
-    if (present(int(i))) grid_->insert(int(i), grid_->cell_of(m_[i].r.x, m_[i].r.y, m_[i].r.z));
+    if (present(int(i))) place(int(i), grid_->cell_of(m_[i].r.x, m_[i].r.y, m_[i].r.z));
   return true;
 }
 
 void AggregationEngine::throw_too_large() const {
   std::ostringstream s;
   s << "aggregation at t = " << now_ << ": the largest aggregate (diameter " << dmax_
-    << ") is wider than a third of the box (L = " << L_ << "), too large for the cell grid, with " << alive_
+    << ") is half the box wide or more (L = " << L_
+    << "), where an aggregate could touch another through two periodic images, with " << alive_
     << " aggregates left; use a larger system (more particles) to go on";
   throw RunStopped(StopReason::kAggregateTooLarge, s.str(), now_);
 }
@@ -150,39 +189,81 @@ void AggregationEngine::predict_all() {
   calendar_.reset(now_);
 }
 
-// Earliest contact of aggregate i with those of one cell, whose images are shifted by `shift`.
-void AggregationEngine::scan_cell(int i, int cell, const Vec3& shift, double& best, int& partner) const {
-  const Motion& mi = m_[i];
-  for (int j = grid_->first(cell); j >= 0; j = grid_->next(j)) {
-    if (j == i) continue;
-    const Motion& mj = m_[j];
-    const double dtj = now_ - mj.t;
-    Vec3 dr, dv;
-    for (int d = 0; d < 3; ++d) {
-      dr[d] = mj.r[d] + mj.v[d] * dtj + shift[d] - mi.r[d];
-      dv[d] = mj.v[d] - mi.v[d];
-    }
-    const double sigma = 0.5 * (diam_[i] + diam_[j]);
-    const double t = time_to_contact_before(dr, dv, best, sigma * sigma);
-    if (t < best) best = t, partner = j;
+template <class F>
+void AggregationEngine::for_each_cell_in_reach(int i, int reach, F&& f) const {
+  const CellCoord c = grid_->coord(fine_cell(i));
+  if (reach == 1) {
+    for_each_neighbour_cell(grid_->cells_per_side(), L_, c, [&](const NeighbourCell& nb) { f(nb.index, nb.shift); });
+  } else {
+    for_each_cell_within(grid_->cells_per_side(), L_, c, reach, f);
   }
 }
 
-// Aggregate i is at now_; its event is the first face of its cell it will
-// cross, or an earlier contact with an aggregate in the 27 cells around.
+// Earliest contact of aggregate i with j's image shifted by `shift`.
+inline void AggregationEngine::consider(int i, int j, const Vec3& shift, double& best, int& partner) const {
+  const Motion& mi = m_[i];
+  const Motion& mj = m_[j];
+  const double dtj = now_ - mj.t;
+  Vec3 dr, dv;
+  for (int d = 0; d < 3; ++d) {
+    dr[d] = mj.r[d] + mj.v[d] * dtj + shift[d] - mi.r[d];
+    dv[d] = mj.v[d] - mi.v[d];
+  }
+  const double sigma = 0.5 * (diam_[i] + diam_[j]);
+  const double t = time_to_contact_before(dr, dv, best, sigma * sigma);
+  if (t < best) best = t, partner = j;
+}
+
+// Earliest contact of aggregate i with those of one cell, whose images are shifted by `shift`.
+void AggregationEngine::scan_cell(int i, int cell, const Vec3& shift, double& best, int& partner) const {
+  for (int j = grid_->first(cell); j >= 0; j = grid_->next(j))
+    if (j != i) consider(i, j, shift, best, partner);
+}
+
+// Calls f(j, shift) for every large aggregate j (not i) at every periodic
+// image its pair's reach allows.
+template <class F>
+void AggregationEngine::for_each_large_image(int i, F&& f) const {
+  const int n = grid_->cells_per_side();
+  const int fine = fine_cell(i);
+  const CellCoord ci = grid_->coord(fine);
+  const double di = diam_[i], w = grid_request_;
+  auto images = [&](int j) {
+    if (j == i) return;
+    const int reach = cell_reach(0.5 * (di + diam_[j]), w);
+    const CellCoord cj = grid_->coord(large_.fine_cell(j));
+    for_each_image_offset(cj.z - ci.z, n, L_, reach, [&](int, double sz) {
+      for_each_image_offset(cj.y - ci.y, n, L_, reach, [&](int, double sy) {
+        for_each_image_offset(cj.x - ci.x, n, L_, reach, [&](int, double sx) { f(j, Vec3{sx, sy, sz}); });
+      });
+    });
+  };
+  // Class c holds reach R = c + 2, diameters below (2R - 1) w: a pair with
+  // one of them is within cell_reach((d_i + (2R - 1) w) / 2) cells.
+  for (int c = 0; c < large_.classes(); ++c)
+    large_.for_each_near(fine, c, cell_reach(0.5 * (di + (2 * c + 3) * w), w), images);
+}
+
+// Aggregate i is at now_; its event is the first face of its fine cell it
+// will cross, or an earlier contact with an aggregate within its reach or a
+// large one.
 Event AggregationEngine::find_event(int i) const {
-  const CellExit exit = first_cell_exit(*grid_, grid_->cell(i), m_[i].r, m_[i].v);
+  const CellExit exit = first_cell_exit(*grid_, fine_cell(i), m_[i].r, m_[i].v);
   double best = exit.time;
   int partner = -1;
-  for_each_neighbour_cell(grid_->cells_per_side(), L_, grid_->coord(grid_->cell(i)),
-                          [&](const NeighbourCell& nb) { scan_cell(i, nb.index, nb.shift, best, partner); });
+  for_each_cell_in_reach(i, reach_of(i), [&](int cell, const Vec3& shift) { scan_cell(i, cell, shift, best, partner); });
+  for_each_large_image(i, [&](int j, const Vec3& shift) { consider(i, j, shift, best, partner); });
   if (partner >= 0) return Event::collision(now_ + best, partner, m_[partner].count);
   return exit.face >= 0 ? Event::crossing(now_ + best, exit.face) : Event{};
 }
 
 void AggregationEngine::cross(int i, int face) {
   advance(i);
-  grid_->move(i, cell_across_face(*grid_, grid_->cell(i), face, L_, m_[i].r, image_[i]));
+  if (large_.contains(i)) {
+    large_.move(i, cell_across_face(*grid_, large_.fine_cell(i), face, L_, m_[i].r, image_[i]));
+  } else {
+    grid_->move(i, cell_across_face(*grid_, grid_->cell(i), face, L_, m_[i].r, image_[i]));
+  }
 }
 
 Vec3 AggregationEngine::separation(int a, int b) const {
@@ -208,7 +289,8 @@ int AggregationEngine::merge(int a, int b) {
   }
   const Image frame = image_[a];
   const double da = diam_[a], db = diam_[b];
-  grid_->remove(gone);
+  large_.contains(gone) ? large_.remove(gone) : grid_->remove(gone);
+  large_.contains(keep) ? large_.remove(keep) : grid_->remove(keep);
   m_[gone] = {Vec3{}, Vec3{}, now_, m_[gone].count + 1, -1};
   image_[gone] = {0, 0, 0};
   mass_[gone] = diam_[gone] = 0;
@@ -220,7 +302,7 @@ int AggregationEngine::merge(int a, int b) {
   mass_[keep] = M;
   diam_[keep] = std::cbrt(da * da * da + db * db * db);
   wrap_into_box(m_[keep].r, image_[keep], L_);
-  grid_->move(keep, grid_->cell_of(m_[keep].r.x, m_[keep].r.y, m_[keep].r.z));
+  place(keep, grid_->cell_of(m_[keep].r.x, m_[keep].r.y, m_[keep].r.z));
   --alive_;
   dmax_ = std::max(dmax_, diam_[keep]);
   ++c_.collisions;
@@ -228,17 +310,25 @@ int AggregationEngine::merge(int a, int b) {
   return keep;
 }
 
-// The smallest id overlapping aggregate k at now_ (periodic), or -1.
+// The smallest id overlapping aggregate k at now_ (periodic), or -1: those
+// within its reach and the large ones, at the images the cells allow (below
+// the L/2 limit an overlap is through one image only).
 int AggregationEngine::first_overlap(int k) const {
   int found = -1;
-  for_each_neighbour_cell(grid_->cells_per_side(), L_, grid_->coord(grid_->cell(k)), [&](const NeighbourCell& nb) {
-    for (int j = grid_->first(nb.index); j >= 0; j = grid_->next(j)) {
-      if (j == k || (found >= 0 && j > found)) continue;
-      const Vec3 d = separation(k, j);  // the minimum image: no shift needed
-      const double sigma = 0.5 * (diam_[k] + diam_[j]);
-      if (dot(d, d) < sigma * sigma) found = j;
-    }
+  const Motion& mk = m_[k];  // at now_: merge() advanced it
+  auto check = [&](int j, const Vec3& shift) {
+    if (j == k || (found >= 0 && j > found)) return;
+    const Motion& mj = m_[j];
+    const double dtj = now_ - mj.t;
+    const Vec3 d{mj.r.x + mj.v.x * dtj + shift.x - mk.r.x, mj.r.y + mj.v.y * dtj + shift.y - mk.r.y,
+                 mj.r.z + mj.v.z * dtj + shift.z - mk.r.z};
+    const double sigma = 0.5 * (diam_[k] + diam_[j]);
+    if (dot(d, d) < sigma * sigma) found = j;
+  };
+  for_each_cell_in_reach(k, reach_of(k), [&](int cell, const Vec3& shift) {
+    for (int j = grid_->first(cell); j >= 0; j = grid_->next(j)) check(j, shift);
   });
+  for_each_large_image(k, check);
   return found;
 }
 
@@ -248,8 +338,12 @@ void AggregationEngine::merge_chain(int i, int j) {
   int k = merge(i, j);
   bool rebuilt = false;
   while (true) {
+    if (2.0 * dmax_ >= L_) {
+      too_large_ = true;
+      throw_too_large();
+    }
     if (grid_outdated()) {
-      if (!rebuild_grid()) throw_too_large();
+      rebuild_grid();
       rebuilt = true;
     }
     const int o = first_overlap(k);

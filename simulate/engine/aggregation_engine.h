@@ -9,11 +9,24 @@
 // built from the same parts as Engine<Rule>: the cell grid (cell_grid.h), the
 // event calendar (event_calendar.h), the contact time (pair_prediction.h with
 // σ = (d_i + d_j)/2), one event per aggregate, lazy positions and lazy
-// invalidation by counters. The grid follows the aggregates: its cells are
-// at least as wide as the largest diameter (so touching aggregates sit in
-// neighbouring cells) and about one aggregate wide on average, and it is
-// rebuilt when the largest diameter outgrows a cell or when aggregates have
-// become much fewer than cells.
+// invalidation by counters. The grid is sized for typical aggregates, not for
+// the largest: cells about one aggregate wide on average. The aggregates
+// wider than a cell ("large") are indexed apart in coarse
+// cells of block³ fine cells (large_aggregate_index.h): a large aggregate's
+// search looks as many fine cells out as its reach (aggregation_reach.h),
+// and every search looks for large partners of each size class in the
+// coarse cells within the reach a pair with that class can need, at the
+// periodic images their fine cells allow. So the size spread costs the few
+// large aggregates, not every search. The grid is rebuilt, with wider cells,
+// when aggregates have become four times fewer than cells.
+//
+// The limit: aggregates may grow until the largest diameter reaches L/2.
+// Below it every contact distance (d_i + d_j)/2 is below L/2, so two
+// aggregates touch through one periodic image only, which is then their
+// minimum image: the merge's centre of mass and the chain's overlap test by
+// minimum image are exact. Beyond it an aggregate could touch another
+// through two images at once, or itself; the run stops there (RunStopped).
+// The cells impose nothing: a reach wider than the box visits every image.
 //
 // Ids are stable: aggregate i lives in slot i for ever; a merge keeps the
 // smaller id and empties the other slot (id -1, mass and diameter 0, position
@@ -26,6 +39,7 @@
 #include "simulate/engine/engine.h"
 #include "simulate/engine/engine_base.h"
 #include "simulate/engine/event_calendar.h"
+#include "simulate/engine/large_aggregate_index.h"
 #include "simulate/engine/motion.h"
 #include "simulate/engine/state_archive.h"
 
@@ -42,9 +56,9 @@ struct AggregateState {
 
 // The scalars of the aggregation engine's exact state, as one checkpoint record.
 struct AggregationScalars {
-  double L, now, dmax, grid_request;
+  double L, now, dmax, grid_request;  // grid_request: the widest aggregate a fine cell lists
   std::int64_t alive;
-  std::int32_t too_large, has_grid;
+  std::int32_t too_large, has_grid, block, unused = 0;
   EngineCounters counters;
 };
 
@@ -57,7 +71,7 @@ class AggregationEngine final : public EngineBase {
 
   // Counters: `collisions` counts merges (each merge of a chain is one).
   // Throws RunStopped (kAggregateTooLarge) once the largest aggregate is
-  // wider than a third of the box.
+  // half the box wide.
   RunStatus run_until(double t_stop, std::int64_t max_events, const volatile std::sig_atomic_t* interrupt) override;
   double now() const override { return now_; }
   std::size_t size() const override { return m_.size(); }
@@ -77,16 +91,28 @@ class AggregationEngine final : public EngineBase {
   std::size_t aggregates() const { return alive_; }
   double largest_diameter() const { return dmax_; }
   double cell_width() const { return grid_ ? grid_->width() : 0.0; }
+  std::size_t large_aggregates() const { return large_.size(); }
 
  private:
   bool present(int i) const { return id_[i] >= 0; }
   void advance(int i);
   bool rebuild_grid();
+  double typical_width() const;
+  void place(int i, int fine);
+  int fine_cell(int i) const { return large_.contains(i) ? large_.fine_cell(i) : grid_->cell(i); }
+  int reach_of(int i) const;
+  int size_class(int i) const;
+  // Calls f(cell, shift) for the cells within `reach` of aggregate i's.
+  template <class F>
+  void for_each_cell_in_reach(int i, int reach, F&& f) const;
   [[noreturn]] void throw_too_large() const;
   bool grid_outdated() const;
   void predict_all();
   Event find_event(int i) const;
   void scan_cell(int i, int cell, const Vec3& shift, double& best, int& partner) const;
+  template <class F>
+  void for_each_large_image(int i, F&& f) const;
+  void consider(int i, int j, const Vec3& shift, double& best, int& partner) const;
   void cross(int i, int face);
   void merge_chain(int i, int j);
   int merge(int a, int b);
@@ -100,8 +126,9 @@ class AggregationEngine final : public EngineBase {
   std::vector<std::int32_t> id_;
   std::size_t alive_ = 0;
   double dmax_ = 0;
-  bool too_large_ = false;  // the largest aggregate no longer fits the grid: run_until() throws
+  bool too_large_ = false;  // the largest aggregate is half the box wide: run_until() throws
   double grid_request_ = 0;  // the minimum cell width the grid was built for
+  LargeAggregateIndex large_;  // present aggregates wider than grid_request_ (not in grid_'s lists)
   std::unique_ptr<CellGrid> grid_;
   EventCalendar calendar_;  // each aggregate's event (a merge with partner() or a cell crossing)
   double now_;

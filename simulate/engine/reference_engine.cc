@@ -102,6 +102,31 @@ int smallest_overlap(const Particles& p, const AggregateState& a, int k) {
   return -1;
 }
 
+// Another periodic image than the minimum one may touch first: every other
+// image lies at least L/2 away (one component differs by L from one within
+// ±L/2), so it matters only for a pair with L/2 - σ <= |dv| best. Those
+// pairs' 26 other images are tried; best only falls, so a pair left out
+// stays out.
+void other_images_first(const Particles& p, const AggregateState& a, double& best, int& bi, int& bj) {
+  const int n = int(p.size());
+  for (int i = 0; i < n; ++i) {
+    if (a.id[i] < 0) continue;
+    for (int j = i + 1; j < n; ++j) {
+      if (a.id[j] < 0) continue;
+      const Vec3 dv{p.v[j].x - p.v[i].x, p.v[j].y - p.v[i].y, p.v[j].z - p.v[i].z};
+      const double sigma = 0.5 * (a.diameter[i] + a.diameter[j]);
+      if (0.5 * p.L - sigma > std::sqrt(dot(dv, dv)) * best) continue;
+      const Vec3 d0 = minimum_image(p, i, j);
+      for (int k = 0; k < 27; ++k) {
+        if (k == 13) continue;  // the minimum image, done
+        const Vec3 d{d0.x + (k % 3 - 1) * p.L, d0.y + (k / 3 % 3 - 1) * p.L, d0.z + (k / 9 - 1) * p.L};
+        const double t = time_to_contact(d, dv, sigma * sigma);
+        if (t < best) best = t, bi = i, bj = j;
+      }
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<CollisionRecord> reference_merges(Particles p, AggregateState a, double now, double t_end,
@@ -121,6 +146,7 @@ std::vector<CollisionRecord> reference_merges(Particles p, AggregateState a, dou
         if (t < best) best = t, bi = i, bj = j;
       }
     }
+    other_images_first(p, a, best, bi, bj);
     if (bi < 0 || now + best > t_end) break;
     now += best;
     for (int k = 0; k < n; ++k)

@@ -20,7 +20,8 @@ std::vector<CollisionRecord> reference_collisions(Particles p, const Rule& rule,
                                                   std::int64_t max_collisions);
 
 // Ballistic aggregation the slow way: at each step every pair of present
-// aggregates is predicted (minimum image, σ = (d_i + d_j)/2), all move to the
+// aggregates is predicted (σ = (d_i + d_j)/2; the minimum image, and any
+// other image that could touch first, for aggregates up to L/2 wide), all move to the
 // earliest contact, that pair merges (centre of mass, summed mass and volume,
 // momentum kept; the smaller id survives), and then, as long as the new
 // aggregate overlaps any other, it merges with the smallest such id. Returns

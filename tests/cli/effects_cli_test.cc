@@ -150,7 +150,7 @@ TEST(EffectsCli, AggregationRunValidatesResumesAndIsReadByTheTools) {
   EXPECT_EQ(vel.exit_code, 0) << vel.err;
 }
 
-// Aggregates wider than a third of the box no longer fit the cell grid: the
+// Aggregates half the box wide could touch through two periodic images: the
 // run stops with exit code 4, one line naming the fix, and a valid last dump.
 TEST(EffectsCli, AggregatesOutgrowingASmallBoxStopTheRunCleanly) {
   const std::string dir = test::scratch_dir("effects_too_large");

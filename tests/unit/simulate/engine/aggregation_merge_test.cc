@@ -2,8 +2,8 @@
 // centre of mass with summed mass and volume and the momentum-conserving
 // velocity (also across the periodic boundary); a constructed chain (a merge
 // whose product overlaps a third aggregate, whose product overlaps a fourth)
-// ends in one aggregate with nothing overlapping; an engine restored from its
-// saved state continues bit for bit.
+// ends in one aggregate with nothing overlapping; aggregates grow up to half
+// the box; an engine restored from its saved state continues bit for bit.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -90,6 +90,29 @@ TEST(AggregationMerge, ChainEndsWithoutOverlapAndConservesExactly) {
   EXPECT_NEAR(f.position[0].x, 5.55, 1e-12);
   EXPECT_NEAR(f.position[0].y, (5 + 5 + 6.05 + 5.35) / 4, 1e-12);
   EXPECT_NEAR(f.position[0].z, (5 + 5 + 5 + 6.15) / 4, 1e-12);
+}
+
+// The limit is half the box: two aggregates (diameters 4 and 60^{1/3}, in
+// a box of side 10) merge into one of diameter 124^{1/3} = 4.987, past the
+// old L/3 limit, and the run goes on; with 62 instead of 60 the product is
+// 126^{1/3} = 5.013 >= L/2 and the run stops with kAggregateTooLarge.
+TEST(AggregationMerge, GrowsUpToHalfTheBoxThenStops) {
+  const Particles p = spheres(10, {{2.5, 5, 5}, {7.5, 5, 5}}, {{0.5, 0, 0}, {-0.5, 0, 0}});
+  AggregationEngine below = engine(p, {64, 60});
+  below.run_until(10.0, 1000, nullptr);
+  EXPECT_EQ(below.aggregates(), 1u);
+  EXPECT_NEAR(below.largest_diameter(), std::cbrt(124.0), 1e-14);
+  EXPECT_GT(below.largest_diameter(), 10.0 / 3);
+  EXPECT_EQ(below.now(), 10.0);
+  AggregationEngine above = engine(p, {64, 62});
+  try {
+    above.run_until(10.0, 1000, nullptr);
+    ADD_FAILURE() << "the run went past L/2";
+  } catch (const RunStopped& stop) {
+    EXPECT_EQ(stop.reason, StopReason::kAggregateTooLarge);
+    EXPECT_NEAR(stop.time, 5 - 0.5 * (4 + std::cbrt(62.0)), 1e-12);  // at the merge: distance 5, closing at 1
+  }
+  EXPECT_THROW(above.run_until(20.0, 1000, nullptr), RunStopped);  // and stays stopped
 }
 
 // An engine restored from its saved state (a checkpoint) at an arbitrary

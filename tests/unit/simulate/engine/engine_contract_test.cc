@@ -28,7 +28,7 @@ Scene scene_of(CollisionModel model) {
 
 class EngineContract : public ::testing::TestWithParam<CollisionModel> {};
 
-// Aggregates outgrow this small box (L/3) by t ~ 25: stop before.
+// Aggregates outgrow this small box (half its side) later: stop at t = 8, before.
 double end_of(CollisionModel m) { return m == CollisionModel::kAggregation ? 8 : 40; }
 
 TEST_P(EngineContract, SlicingChangesNothingAndFramesAreWrapped) {

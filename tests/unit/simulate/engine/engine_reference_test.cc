@@ -50,8 +50,9 @@ struct Viscoelastic : RuleCase<ViscoelasticRule> {
   static ViscoelasticRule rule() { return {0.3, 0.0}; }
   static constexpr int kEvents = 300;
 };
-// 400 unit spheres at phi = 0.05 until 300 merges: the largest aggregate
-// outgrows the cells (the grid is rebuilt) and merges chain.
+// 400 unit spheres at phi = 0.05 until 360 merges: aggregates outgrow the
+// cells (the large-aggregate index is used), become four times fewer than
+// cells (the grid is rebuilt) and merges chain.
 struct Aggregation {
   using EngineType = AggregationEngine;
   struct NoRule {};
@@ -61,7 +62,7 @@ struct Aggregation {
     return s;
   }
   static NoRule rule() { return {}; }
-  static constexpr int kEvents = 300;
+  static constexpr int kEvents = 360;
   static std::unique_ptr<EngineType> engine(const Particles& p, NoRule) {
     return std::make_unique<EngineType>(p, AggregateState::unit_spheres(p.size()), 0.0);
   }
@@ -91,7 +92,7 @@ TYPED_TEST(EngineVsReference, SameEventSequence) {
   }
 }
 
-// The aggregation case really goes through chains and grid rebuilds.
+// The aggregation case really goes through chains, grid rebuilds and the large-aggregate index.
 TEST(EngineVsReferenceAggregation, TheCaseHasChainsAndRebuilds) {
   const Particles start = initial_state(Aggregation::scene());
   const auto ref = Aggregation::reference(start, {}, Aggregation::kEvents);
@@ -100,8 +101,62 @@ TEST(EngineVsReferenceAggregation, TheCaseHasChainsAndRebuilds) {
   EXPECT_GT(chained, 0);
   auto fast = Aggregation::engine(start, {});
   const double width = fast->cell_width();
-  while (fast->counters().collisions < Aggregation::kEvents) fast->run_until(fast->now() + 0.1, 1 << 30, nullptr);
+  std::size_t most_large = 0;
+  while (fast->counters().collisions < Aggregation::kEvents) {
+    fast->run_until(fast->now() + 0.1, 1 << 30, nullptr);
+    most_large = std::max(most_large, fast->large_aggregates());
+  }
   EXPECT_NE(fast->cell_width(), width);
+  EXPECT_GT(most_large, 0u);
+}
+
+// Aggregates of many sizes, growing from wider than a cell up to the L/2
+// limit (past the old L/3 one): a 7³ lattice in a box of side 16, every
+// fifth site a mass-8 aggregate (diameter 2, which fits the lattice spacing
+// 16/7 beside unit spheres), random velocities. The engine runs until it
+// stops at the limit; every merge up to there is the reference's, found
+// through the large-aggregate index at periodic images far beyond the 27
+// neighbours, and, near the end, through images of the box itself.
+TEST(EngineVsReferenceAggregation, SameMergesWithLargeAggregatesUpToHalfTheBox) {
+  const double L = 16;
+  Particles p;
+  p.L = L;
+  p.resize(343);
+  AggregateState a = AggregateState::unit_spheres(p.size());
+  std::uint64_t s = 2024;
+  auto uniform = [&s] { return double((s = s * 6364136223846793005ULL + 1442695040888963407ULL) >> 11) * 0x1.0p-53; };
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    p.r[i] = {(double(i % 7) + 0.5) * L / 7, (double(i / 7 % 7) + 0.5) * L / 7, (double(i / 49) + 0.5) * L / 7};
+    p.v[i] = {uniform() - 0.5, uniform() - 0.5, uniform() - 0.5};
+    if (i % 5 == 0) a.mass[i] = 8, a.diameter[i] = 2;
+  }
+  AggregationEngine e(p, a, 0.0);
+  std::vector<CollisionRecord> log;
+  e.record_collisions(&log);
+  std::size_t most_large = 0;
+  double widest_cell_multiple = 0;
+  bool stopped = false;
+  while (!stopped && e.now() < 1e5) {
+    try {
+      e.run_until(e.now() + 0.25, 1 << 30, nullptr);
+    } catch (const RunStopped& stop) {
+      EXPECT_EQ(stop.reason, StopReason::kAggregateTooLarge);
+      stopped = true;
+    }
+    most_large = std::max(most_large, e.large_aggregates());
+    if (!stopped) widest_cell_multiple = std::max(widest_cell_multiple, e.largest_diameter() / e.cell_width());
+  }
+  ASSERT_TRUE(stopped);
+  EXPECT_GE(e.largest_diameter(), L / 2);
+  EXPECT_GT(most_large, 3u);
+  EXPECT_GT(widest_cell_multiple, 1.5);  // partners found beyond the 27 neighbouring cells
+  const auto ref = reference_merges(p, a, 0.0, 1e9, std::int64_t(log.size()));
+  ASSERT_EQ(ref.size(), log.size());
+  for (std::size_t k = 0; k < log.size(); ++k) {
+    ASSERT_EQ(log[k].i, ref[k].i) << "merge " << k;
+    ASSERT_EQ(log[k].j, ref[k].j) << "merge " << k;
+    ASSERT_NEAR(log[k].t, ref[k].t, 1e-9 * (1 + ref[k].t)) << "merge " << k;
+  }
 }
 
 }  // namespace
