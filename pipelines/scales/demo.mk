@@ -76,7 +76,7 @@ BA_PHIS := 0.052 0.208
 BA_SEED := 1
 BA_THETA_WINDOW := 10:200
 BA_MMAX_FIT_WINDOW := 10:200
-# N = 43933 at phi = 0.208: the aggregates must stay narrower than L/3 = 16.
+# N = 43933 at phi = 0.208: the aggregates must stay narrower than L/2 = 24.
 BA_T_END := 200
 BA_DUMP_TIMES := 10, 25, 50, 100, 200
 BA_SNAPSHOT_TIME := 100

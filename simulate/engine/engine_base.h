@@ -25,7 +25,7 @@ struct EngineCounters {
 // Why an engine cannot go on.
 enum class StopReason {
   kInelasticCollapse,  // infinitely many collisions in finite time (McNamara & Young 1992)
-  kAggregateTooLarge,  // an aggregate wider than the cell grid allows (L/3)
+  kAggregateTooLarge,  // an aggregate as wide as half the box (the minimum-image limit)
 };
 
 // Thrown by run_until() when the engine cannot go on; its state stays

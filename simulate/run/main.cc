@@ -15,7 +15,7 @@ std::string scene_help() {
        "initial mean collision time (Enskog with the Carnahan-Starling contact value)):\n";
   s << coolgas::scene_keys_help();
   s << "\nExit codes: 0 done, 2 bad input, 3 interrupted by SIGINT/SIGTERM (checkpoint written: --resume continues exactly),\n"
-       "4 inelastic collapse (set collision.delta > 0), or an aggregate grown wider than a third of the box\n"
+       "4 inelastic collapse (set collision.delta > 0), or an aggregate grown to half the box\n"
        "(aggregation: use more particles); in both cases the state is written as the last dump;\n"
        "5 writing the trajectory failed (disk full, quota, file-size limit, I/O error): the line names the\n"
        "file and the cause, every earlier dump is intact, and --resume FILE completes the run once space is freed.\n"
