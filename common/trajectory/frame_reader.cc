@@ -7,6 +7,7 @@
 #include "common/error.h"
 #include "common/memory.h"
 #include "common/tool_main.h"
+#include "common/trajectory/compact_slots.h"
 #include "common/trajectory/layout.h"
 #include "common/trajectory/run_parameters.h"
 
@@ -29,19 +30,6 @@ constexpr ElementSpec kElements[] = {
     {Field::kMass, layout::kMass, 1},
     {Field::kDiameter, layout::kDiameter, 1},
 };
-
-// Moves the entries of present slots (keep[i]) to the front, `k` numbers each.
-template <class T>
-void compact(std::vector<T>& v, const std::vector<bool>& keep, std::size_t k) {
-  if (v.empty()) return;
-  std::size_t out = 0;
-  for (std::size_t i = 0; i < keep.size(); ++i) {
-    if (!keep[i]) continue;
-    for (std::size_t c = 0; c < k; ++c) v[out * k + c] = v[i * k + c];
-    ++out;
-  }
-  v.resize(out * k);
-}
 
 std::string value_of(const ElementSpec& e) { return layout::value_of(e.path); }
 
@@ -214,12 +202,12 @@ void Trajectory::read(std::size_t dump, Frame& frame) const {
 void Trajectory::keep_present(Frame& frame) const {
   std::vector<bool> keep(frame.id.size());
   for (std::size_t i = 0; i < keep.size(); ++i) keep[i] = frame.id[i] >= 0;
-  compact(frame.position, keep, 3);
-  compact(frame.velocity, keep, 3);
-  compact(frame.image, keep, 3);
-  compact(frame.mass, keep, 1);
-  compact(frame.diameter, keep, 1);
-  compact(frame.id, keep, 1);
+  compact_slots(frame.position, keep, 3);
+  compact_slots(frame.velocity, keep, 3);
+  compact_slots(frame.image, keep, 3);
+  compact_slots(frame.mass, keep, 1);
+  compact_slots(frame.diameter, keep, 1);
+  compact_slots(frame.id, keep, 1);
   if (frame.id.empty())
     throw InputError(path_ + ": dump " + std::to_string(frame.dump) + " holds no aggregate (every id is -1)");
 }

@@ -4,6 +4,7 @@
 
 #include "common/error.h"
 #include "common/hdf5_file.h"
+#include "common/trajectory/compact_slots.h"
 #include "common/trajectory/layout.h"
 #include "common/tsv.h"
 
@@ -132,18 +133,6 @@ struct Reader {
   }
 };
 
-template <class T>
-void keep(std::vector<T>& v, const std::vector<bool>& present, std::size_t k) {
-  if (v.empty()) return;
-  std::size_t out = 0;
-  for (std::size_t i = 0; i < present.size(); ++i) {
-    if (!present[i]) continue;
-    for (std::size_t c = 0; c < k; ++c) v[out * k + c] = v[i * k + c];
-    ++out;
-  }
-  v.resize(out * k);
-}
-
 std::size_t nearest(const std::vector<double>& times, double t) {
   std::size_t best = 0;
   for (std::size_t i = 1; i < times.size(); ++i)
@@ -187,10 +176,10 @@ H5mdFrame read_h5md_frame(const std::string& path, std::optional<double> time) {
   if (!id.empty()) {
     std::vector<bool> present(n);
     for (std::size_t i = 0; i < n; ++i) present[i] = id[i] != layout::kAbsentId;
-    keep(fr.position, present, 3);
-    keep(fr.velocity, present, 3);
-    keep(fr.mass, present, 1);
-    keep(fr.diameter, present, 1);
+    compact_slots(fr.position, present, 3);
+    compact_slots(fr.velocity, present, 3);
+    compact_slots(fr.mass, present, 1);
+    compact_slots(fr.diameter, present, 1);
     if (fr.position.empty()) in.fail("frame " + std::to_string(fr.index) + " holds no particle (every id is -1)");
   }
   return fr;
