@@ -8,7 +8,10 @@
 
 namespace coolgas {
 
-namespace {
+// Named, not anonymous: reference_collisions (a template with external
+// linkage) holds a queue of these, which GCC warns about when a unity build
+// includes this file (-Wsubobject-linkage).
+namespace reference_detail {
 
 struct PairEvent {
   double t;
@@ -16,6 +19,12 @@ struct PairEvent {
   std::uint32_t ci, cj;  // collision counts of i and j when predicted
   bool operator>(const PairEvent& o) const { return std::tie(t, i, j) > std::tie(o.t, o.i, o.j); }
 };
+
+}  // namespace reference_detail
+
+namespace {
+
+using reference_detail::PairEvent;
 
 Vec3 minimum_image(const Particles& p, int i, int j) {
   Vec3 d{p.r[j].x - p.r[i].x, p.r[j].y - p.r[i].y, p.r[j].z - p.r[i].z};
@@ -102,29 +111,34 @@ int smallest_overlap(const Particles& p, const AggregateState& a, int k) {
   return -1;
 }
 
+// Calls f(i, j, v_j - v_i, contact distance) for every pair of live
+// aggregates i < j, in index order.
+template <class F>
+void for_each_live_pair(const Particles& p, const AggregateState& a, F f) {
+  const int n = int(p.size());
+  for (int i = 0; i < n; ++i) {
+    if (a.id[i] < 0) continue;
+    for (int j = i + 1; j < n; ++j)
+      if (a.id[j] >= 0) f(i, j, minus(p.v[j], p.v[i]), 0.5 * (a.diameter[i] + a.diameter[j]));
+  }
+}
+
 // Another periodic image than the minimum one may touch first: every other
 // image lies at least L/2 away (one component differs by L from one within
 // ±L/2), so it matters only for a pair with L/2 - σ <= |dv| best. Those
 // pairs' 26 other images are tried; best only falls, so a pair left out
 // stays out.
 void other_images_first(const Particles& p, const AggregateState& a, double& best, int& bi, int& bj) {
-  const int n = int(p.size());
-  for (int i = 0; i < n; ++i) {
-    if (a.id[i] < 0) continue;
-    for (int j = i + 1; j < n; ++j) {
-      if (a.id[j] < 0) continue;
-      const Vec3 dv{p.v[j].x - p.v[i].x, p.v[j].y - p.v[i].y, p.v[j].z - p.v[i].z};
-      const double sigma = 0.5 * (a.diameter[i] + a.diameter[j]);
-      if (0.5 * p.L - sigma > std::sqrt(dot(dv, dv)) * best) continue;
-      const Vec3 d0 = minimum_image(p, i, j);
-      for (int k = 0; k < 27; ++k) {
-        if (k == 13) continue;  // the minimum image, done
-        const Vec3 d{d0.x + (k % 3 - 1) * p.L, d0.y + (k / 3 % 3 - 1) * p.L, d0.z + (k / 9 - 1) * p.L};
-        const double t = time_to_contact(d, dv, sigma * sigma);
-        if (t < best) best = t, bi = i, bj = j;
-      }
+  for_each_live_pair(p, a, [&](int i, int j, const Vec3& dv, double sigma) {
+    if (0.5 * p.L - sigma > std::sqrt(dot(dv, dv)) * best) return;
+    const Vec3 d0 = minimum_image(p, i, j);
+    for (int k = 0; k < 27; ++k) {
+      if (k == 13) continue;  // the minimum image, done
+      const Vec3 d{d0.x + (k % 3 - 1) * p.L, d0.y + (k / 3 % 3 - 1) * p.L, d0.z + (k / 9 - 1) * p.L};
+      const double t = time_to_contact(d, dv, sigma * sigma);
+      if (t < best) best = t, bi = i, bj = j;
     }
-  }
+  });
 }
 
 }  // namespace
@@ -136,16 +150,10 @@ std::vector<CollisionRecord> reference_merges(Particles p, AggregateState a, dou
   while (std::int64_t(out.size()) < max_merges) {
     double best = kNever;
     int bi = -1, bj = -1;
-    for (int i = 0; i < n; ++i) {
-      if (a.id[i] < 0) continue;
-      for (int j = i + 1; j < n; ++j) {
-        if (a.id[j] < 0) continue;
-        const Vec3 dv{p.v[j].x - p.v[i].x, p.v[j].y - p.v[i].y, p.v[j].z - p.v[i].z};
-        const double sigma = 0.5 * (a.diameter[i] + a.diameter[j]);
-        const double t = time_to_contact(minimum_image(p, i, j), dv, sigma * sigma);
-        if (t < best) best = t, bi = i, bj = j;
-      }
-    }
+    for_each_live_pair(p, a, [&](int i, int j, const Vec3& dv, double sigma) {
+      const double t = time_to_contact(minimum_image(p, i, j), dv, sigma * sigma);
+      if (t < best) best = t, bi = i, bj = j;
+    });
     other_images_first(p, a, best, bi, bj);
     if (bi < 0 || now + best > t_end) break;
     now += best;
