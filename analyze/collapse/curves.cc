@@ -61,6 +61,7 @@ ScalingCurve subset(const ScalingCurve& c, const std::vector<std::size_t>& rows)
     s.ln_t.push_back(c.ln_t[i]);
     s.ln_E.push_back(c.ln_E[i]);
     if (!c.ln_E_err.empty()) s.ln_E_err.push_back(c.ln_E_err[i]);
+    if (!c.ln_E_var.empty()) s.ln_E_var.push_back(c.ln_E_var[i]);
   }
   return s;
 }

@@ -16,6 +16,7 @@ struct ScalingCurve {
   std::vector<double> t, E;          // the rows used (t > 0), t increasing
   std::vector<double> ln_t, ln_E;
   std::vector<double> ln_E_err;      // standard error of ln E (E_err/E); empty if the table has none
+  std::vector<double> ln_E_var;      // variance of ln E that weighs the collapse (seed_weights.h); empty: unweighted
   // Scaled coordinates: ln x = ln t - z ln L, ln y = ln E + z theta ln L.
   double ln_x_shift(double z) const { return -z * ln_L; }
   double ln_y_shift(double theta, double z) const { return z * theta * ln_L; }

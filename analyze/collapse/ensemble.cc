@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "analyze/collapse/seed_weights.h"
 #include "common/error.h"
 #include "common/tsv.h"
 
@@ -38,14 +39,16 @@ std::vector<SizeEnsemble> group_by_size(const std::vector<ScalingCurve>& curves)
   std::vector<SizeEnsemble> sizes;
   for (const auto& c : curves) {
     auto it = std::find_if(sizes.begin(), sizes.end(), [&](const auto& s) { return s.L == c.L; });
-    if (it == sizes.end()) it = sizes.insert(sizes.end(), SizeEnsemble{c.L, {}});
+    if (it == sizes.end()) it = sizes.insert(sizes.end(), SizeEnsemble{c.L, {}, {}});
     it->runs.push_back(c);
   }
   std::stable_sort(sizes.begin(), sizes.end(), [](const auto& a, const auto& b) { return a.L < b.L; });
   return sizes;
 }
 
-ScalingCurve ensemble_mean(const SizeEnsemble& e, const std::vector<std::size_t>& picks) {
+namespace {
+
+ScalingCurve unweighted_mean(const SizeEnsemble& e, const std::vector<std::size_t>& picks) {
   if (picks.size() == 1) return e.runs[picks[0]];
   const auto rows = common_rows(e, picks);
   const std::size_t n = picks.size(), m = rows[0].size();
@@ -70,6 +73,14 @@ ScalingCurve ensemble_mean(const SizeEnsemble& e, const std::vector<std::size_t>
     mean.ln_E.push_back(std::log(E));
     mean.ln_E_err.push_back(std::sqrt(ss / double(n - 1) / double(n)) / E);
   }
+  return mean;
+}
+
+}  // namespace
+
+ScalingCurve ensemble_mean(const SizeEnsemble& e, const std::vector<std::size_t>& picks) {
+  ScalingCurve mean = unweighted_mean(e, picks);
+  mean.ln_E_var = mean_ln_E_variance(e, mean.ln_t, picks.size());
   return mean;
 }
 

@@ -14,9 +14,16 @@
 
 namespace coolgas {
 
+// The variance of one run's ln E about the mean of its size, at the times
+// ln_t (seed_weights.h); empty unless the collapse is weighted.
+struct SeedScatter {
+  std::vector<double> ln_t, var;
+};
+
 struct SizeEnsemble {
   double L = 0;
   std::vector<ScalingCurve> runs;  // one per input table of this L, in input order
+  SeedScatter scatter;
 };
 
 // Curves grouped by L, in increasing L.
@@ -25,8 +32,9 @@ std::vector<SizeEnsemble> group_by_size(const std::vector<ScalingCurve>& curves)
 // The mean of the runs at `picks` (indices into e.runs; repeats allowed) at
 // the times every picked run has (relative tolerance 1e-9): E averaged,
 // ln_E_err the standard error of that mean over E when two or more runs are
-// picked, else the single run's own errors. InputError if the picked runs
-// share fewer than 2 times.
+// picked, else the single run's own errors; ln_E_var from e.scatter (over the
+// number picked) when it has one. InputError if the picked runs share fewer
+// than 2 times.
 ScalingCurve ensemble_mean(const SizeEnsemble& e, const std::vector<std::size_t>& picks);
 ScalingCurve ensemble_mean(const SizeEnsemble& e);  // every run once
 

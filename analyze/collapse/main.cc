@@ -12,7 +12,7 @@ int main(int argc, char** argv) {
   return coolgas::run_tool("coolgas-collapse", [&] {
     coolgas::watch_interrupts();  // its loops stop at SIGINT/SIGTERM: exit code 3
     coolgas::CollapseOptions o;
-    std::string t_window = ":", eta_window;
+    std::string t_window = ":", eta_window, weights = "none";
     CLI::App app{
         "Finite-size scaling E(t) = L^(-z theta) f(t/L^z) of E(t) tables (coolgas-energy output; L is read from\n"
         "each table's '# L:' line). Several tables of one L are its runs (seeds) and are averaged at their common\n"
@@ -39,11 +39,20 @@ int main(int argc, char** argv) {
                                       "without it: t from where every table is past Haff's law (falls as t^-1, or\n"
                                       "back to t^-3/2 if it fell faster); stderr says which");
     app.add_option("--eta-window", eta_window, "fit f(x) ~ x^-eta over XMIN <= x <= XMAX, as XMIN:XMAX");
+    app.add_option("--weights", weights,
+                   "none: every point counts alike in Q; seeds (two or more tables per L): each squared\n"
+                   "difference over the variance of ln E among that L's runs there, so Q is a chi^2 per point and\n"
+                   "the late, noisy times of small boxes count as little as they are known. The jackknife\n"
+                   "re-estimates the weights in each replica; with only 2 runs of an L it cannot, and its errors\n"
+                   "then come out about 2x too small (3 or more runs per L: they cover at their stated rate)")
+        ->check(CLI::IsMember({"none", "seeds"}))
+        ->capture_default_str();
     app.add_option("--t-column", o.columns.t, "name of the time column")->capture_default_str();
     app.add_option("--e-column", o.columns.E, "name of the energy column")->capture_default_str();
     app.add_flag("--summary", o.summary, "write one row: theta theta_err z z_err quality [eta eta_err]");
     if (coolgas::parse_command_line(app, argc, argv)) return 0;
     o.t_window = coolgas::parse_window(t_window, "--t-window");
+    o.seed_weights = weights == "seeds";
     o.auto_window = o.optimize && window_opt->count() == 0;
     if (!eta_window.empty()) o.eta_window = coolgas::parse_window(eta_window, "--eta-window");
     coolgas::write_collapse_table(o, std::cout);

@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "analyze/collapse/quality.h"
+#include "analyze/collapse/seed_weights.h"
 #include "common/error.h"
 #include "common/interrupt.h"
 #include "common/tsv.h"
@@ -104,6 +105,17 @@ std::size_t total_runs(const std::vector<SizeEnsemble>& sizes) {
   return n;
 }
 
+// The size without its run r. Weights, when the collapse has them, are
+// estimated again from the runs left (if two or more are), so that their
+// dependence on the data is resampled too; with one left it keeps the
+// scatter of all of them.
+SizeEnsemble without_run(const SizeEnsemble& e, std::size_t r) {
+  SizeEnsemble out = e;
+  out.runs.erase(out.runs.begin() + std::ptrdiff_t(r));
+  if (!e.scatter.ln_t.empty() && out.runs.size() >= 2) estimate_seed_scatter(out);
+  return out;
+}
+
 // The stratified delete-one jackknife over runs (optimize.h).
 void jackknife_runs(const std::vector<SizeEnsemble>& sizes, const Minimum& best, double min_overlap, CollapseFit& fit) {
   double var_theta = 0, var_z = 0;
@@ -113,11 +125,8 @@ void jackknife_runs(const std::vector<SizeEnsemble>& sizes, const Minimum& best,
     std::vector<double> thetas, zs;
     for (std::size_t r = 0; r < n; ++r) {
       throw_if_interrupted(std::size_t(fit.replicas), total_runs(sizes), "jackknife replicas");
-      std::vector<std::size_t> keep;
-      for (std::size_t k = 0; k < n; ++k)
-        if (k != r) keep.push_back(k);
       std::vector<ScalingCurve> replica = mean_curves(sizes);
-      replica[s] = ensemble_mean(sizes[s], keep);
+      replica[s] = ensemble_mean(without_run(sizes[s], r));
       const Minimum m = minimise(replica, best.theta, best.z, min_overlap);
       thetas.push_back(m.theta);
       zs.push_back(m.z);
@@ -168,7 +177,7 @@ CollapseFit optimize_collapse(const std::vector<SizeEnsemble>& sizes, const Coll
   gsl_set_error_handler_off();
   const std::vector<ScalingCurve> means = mean_curves(sizes);
   const Minimum best = minimise(means, search.theta0, search.z0, search.min_overlap_decades);
-  if (best.quality >= kNoOverlapPenalty)
+  if (best.quality >= no_overlap_penalty(!means.front().ln_E_var.empty()))
     throw InputError("no collapse found: near theta = " + format_number(best.theta) + ", z = " + format_number(best.z) +
                      " the scaled curves overlap by less than " + format_number(search.min_overlap_decades) +
                      " decades of x; start closer (--theta, --z) or lower --min-overlap");
@@ -181,7 +190,7 @@ CollapseFit optimize_collapse(const std::vector<SizeEnsemble>& sizes, const Coll
 
 CollapseFit optimize_collapse(const std::vector<ScalingCurve>& curves, const CollapseSearch& search) {
   std::vector<SizeEnsemble> sizes;
-  for (const auto& c : curves) sizes.push_back(SizeEnsemble{c.L, {c}});
+  for (const auto& c : curves) sizes.push_back(SizeEnsemble{c.L, {c}, {}});
   return optimize_collapse(sizes, search);
 }
 

@@ -6,20 +6,24 @@
 namespace coolgas {
 namespace {
 
-// ln E of curve c at ln t = lt, linear in (ln t, ln E), clamped to its ends.
-double interpolate_ln(const ScalingCurve& c, double lt) {
-  if (lt <= c.ln_t.front()) return c.ln_E.front();
-  if (lt >= c.ln_t.back()) return c.ln_E.back();
+// A column of curve c (ln E, or its variance) at ln t = lt, linear in ln t,
+// clamped to its ends.
+double interpolate_ln(const ScalingCurve& c, const std::vector<double>& column, double lt) {
+  if (lt <= c.ln_t.front()) return column.front();
+  if (lt >= c.ln_t.back()) return column.back();
   const auto i = static_cast<std::size_t>(std::upper_bound(c.ln_t.begin(), c.ln_t.end(), lt) - c.ln_t.begin());
   const double u = (lt - c.ln_t[i - 1]) / (c.ln_t[i] - c.ln_t[i - 1]);
-  return c.ln_E[i - 1] + u * (c.ln_E[i] - c.ln_E[i - 1]);
+  return column[i - 1] + u * (column[i] - column[i - 1]);
 }
+
+bool weighted(const ScalingCurve& c) { return !c.ln_E_var.empty(); }
 
 struct SquaredSum {
   double sum = 0, weight = 0;
 };
 
-// Adds w (ln y_a - ln y_b)^2 at a's points with scaled ln x in [lo, hi]. The
+// Adds w (ln y_a - ln y_b)^2 at a's points with scaled ln x in [lo, hi],
+// over var_a + var_b when both curves are weighted (seed_weights.h). The
 // weight w rises linearly from 0 over the first and last tenth of the
 // overlap, so that a point entering or leaving the overlap as theta and z
 // change does not make Q jump: a continuous Q keeps the simplex from sticking.
@@ -32,8 +36,9 @@ void add_pair_terms(const ScalingCurve& a, const ScalingCurve& b, double theta, 
     const double lx = a.ln_t[i] + ax;
     if (lx <= lo || lx >= hi) continue;
     const double w = std::min({1.0, (lx - lo) / ramp, (hi - lx) / ramp});
-    const double d = a.ln_E[i] + dy - interpolate_ln(b, lx - bx);
-    s.sum += w * d * d;
+    const double d = a.ln_E[i] + dy - interpolate_ln(b, b.ln_E, lx - bx);
+    const double var = weighted(a) && weighted(b) ? a.ln_E_var[i] + interpolate_ln(b, b.ln_E_var, lx - bx) : 1.0;
+    s.sum += w * d * d / var;
     s.weight += w;
   }
 }
@@ -41,11 +46,12 @@ void add_pair_terms(const ScalingCurve& a, const ScalingCurve& b, double theta, 
 double pair_mismatch(const ScalingCurve& a, const ScalingCurve& b, double theta, double z, double min_overlap) {
   const double lo = std::max(a.ln_t.front() + a.ln_x_shift(z), b.ln_t.front() + b.ln_x_shift(z));
   const double hi = std::min(a.ln_t.back() + a.ln_x_shift(z), b.ln_t.back() + b.ln_x_shift(z));
-  if (hi - lo < min_overlap) return kNoOverlapPenalty;
+  const double penalty = no_overlap_penalty(weighted(a) && weighted(b));
+  if (hi - lo < min_overlap) return penalty;
   SquaredSum s;
   add_pair_terms(a, b, theta, z, lo, hi, s);
   add_pair_terms(b, a, theta, z, lo, hi, s);
-  return s.weight > 0 ? s.sum / s.weight : kNoOverlapPenalty;
+  return s.weight > 0 ? s.sum / s.weight : penalty;
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <ostream>
 
 #include "analyze/collapse/quality.h"
+#include "analyze/collapse/seed_weights.h"
 #include "analyze/collapse/tail.h"
 #include "analyze/curves/scaling_window.h"
 #include "common/error.h"
@@ -42,7 +43,10 @@ std::vector<SizeEnsemble> load_sizes(CollapseOptions& o) {
   if (o.auto_window) o.t_window = default_window(tables, o.columns);
   std::vector<ScalingCurve> curves;
   for (const auto& table : tables) curves.push_back(make_scaling_curve(table, o.columns, o.t_window));
-  return group_by_size(curves);
+  auto sizes = group_by_size(curves);
+  if (o.seed_weights)
+    for (auto& s : sizes) estimate_seed_scatter(s);
+  return sizes;
 }
 
 std::string uncertainty_text(const CollapseFit& fit, std::uint64_t seed) {
@@ -67,6 +71,10 @@ Provenance collapse_provenance(const CollapseOptions& o, const std::vector<SizeE
     for (const auto& c : s.runs) p.emplace_back("input", c.source + " (L = " + format_number(c.L) + ")");
   p.emplace_back("t_window", o.t_window.text());
   p.emplace_back("min_overlap_decades", format_number(o.search.min_overlap_decades));
+  p.emplace_back("weights", o.seed_weights ? "seeds: quality is a chi^2 per point, over the variance of ln E among "
+                                             "each L's runs (+-" + std::to_string(kScatterRows) + " rows, at least " +
+                                             format_number(kScatterFloor) + "^2)"
+                                           : "none");
   p.emplace_back("theta", format_number(r.theta));
   p.emplace_back("z", format_number(r.z));
   if (r.fit) {

@@ -21,6 +21,7 @@ struct CollapseOptions {
   bool auto_window = false;         // --optimize without --t-window: from where every table is past Haff's law
   std::optional<Window> eta_window; // fit f(x) ~ x^-eta over this x window
   bool summary = false;             // one row of results instead of the curves
+  bool seed_weights = false;        // weigh the collapse by the scatter of each L's runs (seed_weights.h)
 };
 
 void write_collapse_table(const CollapseOptions& options, std::ostream& out);

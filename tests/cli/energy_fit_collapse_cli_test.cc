@@ -121,6 +121,13 @@ TEST_F(EnergyFitCollapseCli, BadOptionsAreInputErrors) {
   expect_one_error_line(run_command(bin("coolgas-fit") + " --power --window 10:1 -  < /dev/null"), "LO must be below HI");
   expect_one_error_line(run_command(bin("coolgas-energy") + " --per-decade 0 " + path(16, 1)), "--per-decade 0");
   EXPECT_EQ(run_command(bin("coolgas-collapse") + " --help").exit_code, 0);
+  // Weights from the scatter of the runs need two or more runs of every L.
+  const std::string e16 = *dir + "/w16.tsv", e32 = *dir + "/w32.tsv";
+  ASSERT_EQ(run_command(bin("coolgas-energy") + " " + path(16, 1) + " > " + e16).exit_code, 0);
+  ASSERT_EQ(run_command(bin("coolgas-energy") + " " + path(32, 1) + " > " + e32).exit_code, 0);
+  expect_one_error_line(run_command(bin("coolgas-collapse") + " --weights seeds " + e16 + " " + e32),
+                        "--weights seeds needs two or more tables (runs) of every L; L = 16 has 1");
+  expect_one_error_line(run_command(bin("coolgas-collapse") + " --weights chi2 " + e16), "--weights");
 }
 
 }  // namespace

@@ -45,7 +45,7 @@ std::vector<SizeEnsemble> synthetic_ensemble(int runs_per_size, std::uint64_t se
   Random rng(seed);
   std::vector<SizeEnsemble> sizes;
   for (double L : {16.0, 32.0, 64.0}) {
-    SizeEnsemble s{L, {}};
+    SizeEnsemble s{L, {}, {}};
     for (int r = 0; r < runs_per_size; ++r) s.runs.push_back(synthetic_run(L, rng));
     sizes.push_back(s);
   }
@@ -60,7 +60,7 @@ CollapseFit fit(const std::vector<SizeEnsemble>& sizes) {
 
 TEST(CollapseResampling, MeanOfRunsAveragesEAtTheirCommonTimes) {
   Random rng(1);
-  SizeEnsemble e{16, {synthetic_run(16, rng), synthetic_run(16, rng)}};
+  SizeEnsemble e{16, {synthetic_run(16, rng), synthetic_run(16, rng)}, {}};
   e.runs[1].t.erase(e.runs[1].t.begin());  // the second run lacks the first time
   e.runs[1].E.erase(e.runs[1].E.begin());
   e.runs[1].ln_t.erase(e.runs[1].ln_t.begin());
