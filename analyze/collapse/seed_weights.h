@@ -7,7 +7,7 @@
 // and the jackknife over runs swings with them (sigma_z = 3 from 2 seeds per
 // L). Weighing each squared difference by the variance of the two curves
 // there, as finite-size-scaling collapses with errors do (Houdayer &
-// Hartmann, Phys. Rev. B 70, 014418 (2004), Eq. 4: a chi^2 per point), lets
+// Hartmann, Phys. Rev. B 70, 014418 (2004): a reduced chi^2 per point), lets
 // each part of the data count as much as it is known.
 //
 // The variance of one run's ln E about the mean of its size is estimated at
