@@ -152,12 +152,12 @@ for r in $mmax_runs; do
   L=$(value "$j" L '#') name="gas phi = $(short "$(value "$j" phi '#')"), L = $(value "$j" L '#')"
   s=$(short "$(jv slope_max)") span=$(short "$(jv span)")
   if awk "BEGIN { exit !($(jv fraction_0) > 0.5) }"; then
-    row "M_max's steepest rise, d ln M_max/d ln t over 0.4 decades, $name" 4 "$s" - - - \
+    row "M_max's steepest rise, d ln M_max/d ln t over 0.4 decades (mean field 6/5), $name" 4 "$s" - - - \
       "no: the largest cluster holds $(short "$(jv fraction_0)") of the particles already at t = 0 (the unit-cell occupancy is above the site-percolation threshold 0.3116)"
     continue
   fi
   if [ "$(jv jump)" = 1 ]; then jump_reg=$(before_crossover "$(jv t_jump)" "$L" "the jump")
-  elif awk "BEGIN { exit !($span > 0.5) }"; then jump_reg="no: dumps $span decades apart cannot resolve a jump (the rule needs 5 a decade)"
+  elif awk "BEGIN { exit !($span > 0.5) }"; then jump_reg="no: dumps $span decades apart cannot resolve a jump (the rule needs 5 dumps a decade)"
   else jump_reg="no: no jump within the run (t <= $(short "$(jv t_end)")): M_max grows at most as t^$s, below the rule's t^2"; fi
   row "M_max's steepest rise, d ln M_max/d ln t over 0.4 decades (mean field 6/5), $name" 4 "$s" - - - "$jump_reg"
   row "t_jump, its centre (M_max/N $(short "$(jv fraction_from)") to $(short "$(jv fraction_to)") over t = $(short "$(jv t_from)"):$(short "$(jv t_to)")), $name" 4 \
