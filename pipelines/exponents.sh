@@ -1,5 +1,5 @@
 #!/bin/sh
-# exponents.sh TABLES SNAP_RUN LATE_TIME L_MAX SNAP_L "PARAM_SETS" "BA_FITS" "STRUCTURE_RUNS"
+# exponents.sh TABLES SNAP_RUN LATE_TIME L_MAX SNAP_L "PARAM_SETS" "BA_FITS" "STRUCTURE_RUNS" "MMAX_RUNS" "BA_MMAX_RUNS"
 # The quantities a figure pipeline measured, one row each, judged against
 # the paper (Pathak, Jabeen, Das, Rajesh 2014): a TSV table with columns
 #   quantity  figure  measured  error  paper  paper_error  deviation  regime
@@ -12,9 +12,11 @@
 # of Fig. 1, SNAP_L the box side of Figs. 3-5 (each Fig. 2 row reads its
 # box side from its energy table, as the sets may differ in L),
 # STRUCTURE_RUNS the runs whose growing lengths were fitted (lt_RUN.tsv,
-# fit_lt_RUN.tsv, fit_lc_RUN.tsv of pipelines/structure.mk).
+# fit_lt_RUN.tsv, fit_lc_RUN.tsv of pipelines/structure.mk), MMAX_RUNS the gas
+# runs of Fig. 4 (jump_mmax_RUN.tsv of pipelines/mmax-jump.sh), BA_MMAX_RUNS its
+# BA runs (fit_mmax_RUN.tsv, jump_mmax_RUN.tsv).
 set -e
-tables=$1 snap=$2 late=$3 L_max=$4 snap_L=$5 sets=$6 ba_fits=${7:-} structure_runs=${8:-}
+tables=$1 snap=$2 late=$3 L_max=$4 snap_L=$5 sets=$6 ba_fits=${7:-} structure_runs=${8:-} mmax_runs=${9:-} ba_mmax=${10:-}
 here=$(dirname "$0")
 value() { sh "$here/tsv-value.sh" "$@"; }
 # Column $2 of table $1 in the row whose t is nearest $3.
@@ -103,8 +105,6 @@ if awk "BEGIN { exit !($f0 > 0.5) }"; then
   reg="no: the largest cluster holds $(short "$f0") of the particles already at t = 0 (the unit-cell occupancy is above the site-percolation threshold 0.3116)"
 else reg=$late_regime; fi
 row "largest cluster's share of the particles" 3 "$(at_time "$tables/mmax_$snap.tsv" largest_fraction "$late")" - 0.75 - "$reg"
-mm=$tables/fit_mmax_$snap.tsv
-row "a, M_max ~ t^a, gas (paper: rapid, gel-like growth)" 4 "$(calc "-($(value "$mm" theta))")" "$(value "$mm" theta_err)" - - "$reg"
 vs=$tables/velocity_series.tsv
 row "beta, -ln Phi(y) ~ y^beta at t = $late" 5 "$(at_time "$vs" beta "$late")" "$(at_time "$vs" beta_err "$late")" 1.66667 0 "$late_regime"
 row "kappa at t = $late (paper: > 0, saturating)" 5 "$(at_time "$vs" kappa "$late")" "$(at_time "$vs" kappa_err "$late")" - - "$late_regime"
@@ -139,6 +139,47 @@ for r in $structure_runs; do
     if [ "$reg" = yes ] && [ "$collapse_regime" != yes ]; then reg="no: the E(t) collapse, ${collapse_regime#no: }"; fi
     row "z from $col minus z from the E(t) collapse at L = $L_box: $verdict" struct "$d" "$de" 0 0 "$reg"
   done
+done
+
+# Fig. 4: the rapid growth of M_max in each gas run (pipelines/mmax-jump.sh
+# states the rules), the onset of inhomogeneous cooling in the same run, and
+# whether the two coincide, as the paper says. Then BA's power law M_max ~ t^a
+# and its steepest chord by the gas's rule (the paper: t^0.94 ... t^1.03,
+# rising with phi; mean field t^(6/5)).
+for r in $mmax_runs; do
+  j=$tables/jump_mmax_$r.tsv
+  jv() { value "$j" "$1"; }
+  L=$(value "$j" L '#') name="gas phi = $(short "$(value "$j" phi '#')"), L = $(value "$j" L '#')"
+  s=$(short "$(jv slope_max)") span=$(short "$(jv span)")
+  if awk "BEGIN { exit !($(jv fraction_0) > 0.5) }"; then
+    row "M_max's steepest rise, d ln M_max/d ln t over 0.4 decades (mean field 6/5), $name" 4 "$s" - - - \
+      "no: the largest cluster holds $(short "$(jv fraction_0)") of the particles already at t = 0 (the unit-cell occupancy is above the site-percolation threshold 0.3116)"
+    continue
+  fi
+  if [ "$(jv jump)" = 1 ]; then jump_reg=$(before_crossover "$(jv t_jump)" "$L" "the jump")
+  elif awk "BEGIN { exit !($span > 0.5) }"; then jump_reg="no: dumps $span decades apart cannot resolve a jump (the rule needs 5 dumps a decade)"
+  else jump_reg="no: no jump within the run (t <= $(short "$(jv t_end)")): M_max grows at most as t^$s, below the rule's t^2"; fi
+  row "M_max's steepest rise, d ln M_max/d ln t over 0.4 decades (mean field 6/5), $name" 4 "$s" - - - "$jump_reg"
+  row "t_jump, its centre (M_max/N $(short "$(jv fraction_from)") to $(short "$(jv fraction_to)") over t = $(short "$(jv t_from)"):$(short "$(jv t_to)")), $name" 4 \
+    "$(short "$(jv t_jump)")" - - - "$jump_reg"
+  peak=$(short "$(jv theta_peak)")
+  if [ "$(jv inhom)" = 1 ]; then inhom_reg=yes
+  elif awk "BEGIN { exit !($peak < 1.5) }"; then inhom_reg="no: E(t) never falls faster than t^-3/2 (at most t^-$peak): no Haff regime to leave"
+  else inhom_reg="no: E(t) still falls faster than t^-3/2 at the run's end (a lower bound)"; fi
+  row "t_inhom, E(t) leaves Haff's law (-d ln E/d ln t below 3/2 after its peak $peak), $name" 4 \
+    "$(short "$(jv t_inhom)")" - - - "$inhom_reg"
+  # Resolution: t_jump sits on the dumps' grid, so half a dump spacing (the chord is two).
+  d=$(calc "log($(jv t_jump) / $(jv t_inhom)) / log(10)") de=$(calc "$(jv span) / 4")
+  verdict=$(awk "BEGIN { if ($d * $d <= $de * $de) print \"they coincide within half a dump spacing\"; else printf \"the jump comes %.2g times %s\", ($d > 0 ? 10 ^ $d : 10 ^ -($d)), ($d > 0 ? \"later\" : \"earlier\") }")
+  if [ "$jump_reg" = yes ] && [ "$inhom_reg" != yes ]; then reg=$inhom_reg; else reg=$jump_reg; fi
+  row "log10(t_jump/t_inhom), error half a dump spacing (paper: they coincide): $verdict, $name" 4 "$d" "$de" 0 0 "$reg"
+done
+for r in $ba_mmax; do
+  fit=$tables/fit_mmax_$r.tsv phi=$(short "$(value "$tables/jump_mmax_$r.tsv" phi '#')")
+  row "a_BA, M_max ~ t^a at phi = $phi (t = $(short "$(value "$fit" t_min)"):$(short "$(value "$fit" t_max)"); paper 0.94 to 1.03 over its phi)" 4 \
+    "$(calc "-($(value "$fit" theta))")" "$(value "$fit" theta_err)" - - yes
+  row "M_max's steepest rise, d ln M_max/d ln t over 0.4 decades (the gas's rule), BA phi = $phi" 4 \
+    "$(short "$(value "$tables/jump_mmax_$r.tsv" slope_max)")" - - - yes
 done
 
 # Ballistic aggregation: the paper gives theta_BA = 1.283 +- 0.005 at phi = 0.005 and 1.206 +- 0.005 at 0.208.

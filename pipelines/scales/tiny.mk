@@ -20,6 +20,8 @@ PARAM_PHIS := 0.104 0.208
 PARAM_R0S := 0.1 0.5
 PARAM_DELTAS := 1e-3 1e-4
 PARAM_FIT_WINDOW := 10:1000
+# Five dumps a decade, as Fig. 4's rule for the rapid growth of M_max needs.
+PARAM_OUTPUT = observables_per_decade = 20$(newline)dumps_per_decade = 5
 
 SNAP_L := 16
 SNAP_SEED := 1
@@ -28,7 +30,6 @@ SNAP_DUMP_TIMES := 5, 10, 100, 500, 1000
 SNAPSHOT_TIME := 500
 NM_TIMES := 500 1000
 NM_FIT_WINDOW := 1:30
-MMAX_FIT_WINDOW := 10:1000
 PHI_EARLY_TIMES := 5 10
 PHI_LATE_TIMES := 500 1000
 
