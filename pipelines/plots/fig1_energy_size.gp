@@ -15,8 +15,11 @@ Lof(i) = meta(word(tables, i), "L") + 0
 
 eval term(1800, 600)
 set output out
-set multiplot layout 1, 3 title sprintf("Energy decay of the freely cooling gas for several system sizes L ({/Symbol f} = %.3f, r_0 = %s, {/Symbol d} = %s; %s seed(s) per L)", \
-    real(meta(word(tables, 1), "phi")), meta(word(tables, 1), "r0"), meta(word(tables, 1), "delta"), meta(word(tables, 1), "runs"))
+# Seeds per L, in the order of the L (they may differ: small boxes are cheap).
+seeds = ""
+do for [i = 1 : n] { seeds = seeds . (i > 1 ? ", " : "") . meta(word(tables, i), "runs") }
+set multiplot layout 1, 3 title sprintf("Energy decay of the freely cooling gas for several system sizes L ({/Symbol f} = %.3f, r_0 = %s, {/Symbol d} = %s; seeds per L: %s)", \
+    real(meta(word(tables, 1), "phi")), meta(word(tables, 1), "r0"), meta(word(tables, 1), "delta"), seeds)
 set logscale xy
 set format x "10^{%L}"; set format y "10^{%L}"
 set grid
@@ -31,8 +34,9 @@ plot for [i = 1 : n] word(tables, i) using 1:($1 > 0 ? $2 : NaN) with linespoint
      [fit_lo:fit_hi] fit_A * x**(-fit_theta) with lines lw 3 dt 1 lc rgb "black" \
        title sprintf("fit t^{-{/Symbol q}} at L = %d: {/Symbol q} = %.3f ± %.1g", Lof(n), fit_theta, fit_err)
 
-# (b) collapse with the fitted exponents
-set key top right
+# (b) collapse with the fitted exponents (the data run from top left to
+# bottom right: the key goes bottom left, below them, samples first)
+set key bottom left Left reverse
 set title "(b) collapse with the fitted {/Symbol q}, z"
 set xlabel "x = t / L^z"
 set ylabel "E L^{z{/Symbol q}}"
@@ -51,6 +55,7 @@ plot for [i = 0 : n - 1] collapse index i using 1:2 with linespoints ls (i + 1) 
      [xlo:xhi] B_eta * x**(-eta) with lines lw 3 dt 2 lc rgb "black" title sprintf("x^{-{/Symbol h}}, {/Symbol h} = %.2f ± %.2f", eta, eta_err)
 
 # (c) collapse with the paper's exponents
+set key bottom left noreverse Right
 set title "(c) collapse with the paper's {/Symbol q} = 6/5, z = 5/2"
 set xlabel "x = t / L^{5/2}"
 set ylabel "E L^{3}"

@@ -157,7 +157,7 @@ TEST(Pipeline, TinyPipelineRunsEndToEndAndIsIncremental) {
   // A changed fit window reruns that fit and what uses it, and no simulation.
   auto dry = run_command(make_command(out, "-n THETA_WINDOW=20:200"));
   ASSERT_EQ(dry.exit_code, 0) << dry.err;
-  EXPECT_NE(dry.out.find("coolgas-fit --power --t-window 20:200"), std::string::npos) << dry.out;
+  EXPECT_NE(dry.out.find("coolgas-fit --power --no-weights --t-window 20:200"), std::string::npos) << dry.out;
   EXPECT_EQ(dry.out.find("coolgas-simulate"), std::string::npos) << dry.out;
   EXPECT_EQ(dry.out.find("coolgas-collapse"), std::string::npos) << dry.out;
   // So does the growing length's fit window: both length fits, the figure and
