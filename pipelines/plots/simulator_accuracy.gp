@@ -16,7 +16,6 @@ set grid
 set key below
 set logscale x
 set offsets graph 0.05, graph 0.05, graph 0.1, graph 0.1
-stats sizes using 4 nooutput
 theta_ref = real(word(ref, 1))
 
 # columns of sizes: 1 L, 2 t_end, 3 seeds, 4 theta, 5 theta_err, 6 theta_sd,
@@ -29,8 +28,8 @@ plot sizes using 1:4:5:xtic(1) with yerrorbars ls 1 title "{/Symbol q}(L) ± see
      theta_ref with lines ls 2 lw 1 title sprintf("{/Symbol q}_{ref} = %s", ref), \
      1.2 with lines ls 7 dt 3 lw 2 title "6/5 (paper)"
 
-set title sprintf("(b) error of {/Symbol q} against cost (L = %d is {/Symbol q}_{ref})", STATS_records > 0 ? \
-    int(system("awk 'NR > 1 && !/^#/ { L = $1 } END { print L }' " . q(sizes))) : 0)
+set title sprintf("(b) error of {/Symbol q} against cost (L = %d gives {/Symbol q}_{ref})", \
+    int(system("awk 'NR > 1 && !/^#/ { L = $1 } END { print L }' " . q(sizes))))
 set logscale y
 set autoscale fix
 set offsets graph 0.05, graph 0.15, graph 0.1, graph 0.1
@@ -40,7 +39,7 @@ set ylabel "error of {/Symbol q}"
 set xtics auto
 set xtics add (2, 5, 20, 50, 200, 500)
 set ytics add (0.002, 0.005, 0.02, 0.05, 0.2, 0.5)
-plot sizes using 9:($7 == 0 ? NaN : abs($7)) with linespoints ls 1 title "|{/Symbol q} - {/Symbol q}_{ref}|", \
+plot sizes using 9:($7 == 0 ? NaN : abs($7)):8 with yerrorlines ls 1 title "|{/Symbol q} - {/Symbol q}_{ref}| ± both standard errors", \
      sizes using 9:5 with linespoints ls 2 title "standard error (seed spread/√seeds)", \
      sizes using 9:5:(sprintf("L = %d", $1)) with labels left offset char 0.8, char -0.8 font ",9" notitle
 
