@@ -25,7 +25,7 @@ set title sprintf("(a) {/Symbol q} against box size ({/Symbol d} = %s, seeds per
 set xlabel "box size L  [{/Symbol s}]"
 set ylabel "{/Symbol q}  (E ∝ t^{-{/Symbol q}}), mean of the seeds ± standard error"
 plot sizes using 1:4:5:xtic(1) with yerrorbars ls 1 title "{/Symbol q}(L) ± seed spread/√seeds", \
-     theta_ref with lines ls 2 lw 1 title sprintf("{/Symbol q}_{ref} = %s", ref), \
+     theta_ref with lines ls 2 lw 1 title sprintf("{/Symbol q}_{ref} = %s ± %s, the mean of the largest L", word(ref, 1), word(ref, 3)), \
      1.2 with lines ls 7 dt 3 lw 2 title "6/5 (paper)"
 
 set title sprintf("(b) error of {/Symbol q} against cost (L = %d gives {/Symbol q}_{ref})", \
