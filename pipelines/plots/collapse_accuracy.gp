@@ -1,29 +1,58 @@
-# What accuracy costs in coolgas-collapse: the uncertainty of theta and z
-# against the number of seeds per L (and the wall time of those runs).
+# What accuracy costs in coolgas-collapse: (a) z and (b) theta of the collapse
+# of n seeds per L (one table per run, so the errors are the jackknife over
+# whole runs) against n, one curve per set of sizes; (c) those errors against
+# the core-seconds of the runs used, with lines falling as 1/sqrt(seeds).
 # gnuplot -e "in='collapse_accuracy.tsv'; out='collapse_accuracy.png'" collapse_accuracy.gp
 plots = system("dirname " . ARG0)
 load plots . "/common.gp"
-set terminal pngcairo size 1500, 600 font "sans,11"
+eval term(1800, 640)
 set output out
-set multiplot layout 1, 2 title sprintf("coolgas-collapse --optimize: seeds per L against the uncertainty (L = %s, t_{end} = %s)", meta(in, "L"), meta(in, "t_end"))
+sets = meta(in, "sets")
+nsets = words(sets)
+# a set's name '20-27-34' as 'L = 20, 27, 34'
+sizes(s) = "L = " . system("echo " . s . " | sed 's/-/, /g'")
+# the column c of the first row of set s (the fewest seeds)
+first(s, c) = real(system("awk -F '\t' '$1 == \"" . s . "\" { print $" . c . "; exit }' " . q(in)))
+set multiplot layout 1, 3 title sprintf("coolgas-collapse --optimize of n seeds per L: the error and its cost (runs to x = t/L^{5/2} = %s, {/Symbol d} = %s)", \
+    meta(in, "x_end"), meta(in, "delta"))
 set grid
+set key below
 set logscale x 2
+set xtics (2, 3, 4, 6, 8, 12, 16)
 set xlabel "seeds per L"
-set xrange [0.7:*]
-set offsets 0, 0, graph 0.1, graph 0.1
-set title "(a) fitted exponents"
-set ylabel "exponent"
-set key top right
-plot in using 1:2:3 with yerrorlines pt 7 lw 2 title "{/Symbol q} (paper 6/5)", \
-     in using 1:4:5 with yerrorlines pt 5 lw 2 title "z (paper 5/2)"
-set title "(b) bootstrap uncertainty and cost"
-set logscale y
-set ylabel "standard error"
-set y2label "wall time of the runs  [s, one core]"
-set y2tics; set logscale y2; set ytics nomirror
-stats in using 1:3 nooutput
-e1 = STATS_max_y
-plot in using 1:3 with linespoints pt 7 lw 2 title "{/Symbol s}_{/Symbol q}", \
-     in using 1:5 with linespoints pt 5 lw 2 title "{/Symbol s}_z", \
-     in using 1:7 axes x1y2 with linespoints pt 9 lw 1 dt 2 lc rgb "black" title "wall time (right axis)"
+set offsets graph 0.08, graph 0.08, graph 0.1, graph 0.1
+# columns: 1 sizes, 2 seeds, 3 theta, 4 theta_err, 5 z, 6 z_err, 7 quality, 8 cpu_s
+set title "(a) z ± jackknife error over whole runs"
+set ylabel "dynamical exponent z"
+plot for [i = 1:nsets] in using 2:(strcol(1) eq word(sets, i) ? $5 : NaN):6 with yerrorlines ls i title sizes(word(sets, i)), \
+     2.5 with lines ls 7 lw 2 dt 3 title "5/2 (paper)"
+set title "(b) {/Symbol q} ± jackknife error over whole runs"
+set ylabel "energy exponent {/Symbol q}"
+plot for [i = 1:nsets] in using 2:(strcol(1) eq word(sets, i) ? $3 : NaN):4 with yerrorlines ls i title sizes(word(sets, i)), \
+     1.2 with lines ls 7 lw 2 dt 3 title "6/5 (paper)"
+
+set title "(c) error against cost (labels: seeds per L)"
+set logscale xy
+set autoscale fix
+set offsets graph 0.05, graph 0.15, graph 0.15, graph 0.15
+set xtics auto
+set xtics add (2, 5, 20, 50, 200, 500)
+set ytics add (0.002, 0.005, 0.02, 0.05, 0.2, 0.5, 2, 5)
+set format y "%g"
+set xlabel "core-seconds of the runs used  [CPU s]"
+set ylabel "jackknife standard error"
+set key below maxrows 3
+# The guides start at the fewest seeds and fall as 1/sqrt(seeds), i.e. as
+# 1/sqrt(cost): the cost grows in proportion to the seeds. Styles: z of set i
+# is line style i, theta of set i line style nsets + i.
+array c0[nsets]; array z0[nsets]; array t0[nsets]
+do for [i = 1:nsets] { c0[i] = first(word(sets, i), 8); z0[i] = first(word(sets, i), 6); t0[i] = first(word(sets, i), 4) }
+plot for [i = 1:nsets] in using 8:(strcol(1) eq word(sets, i) ? $6 : NaN) with linespoints ls i \
+       title sprintf("{/Symbol s}_z, %s", sizes(word(sets, i))), \
+     for [i = 1:nsets] in using 8:(strcol(1) eq word(sets, i) ? $4 : NaN) with linespoints ls nsets + i \
+       title sprintf("{/Symbol s}_{/Symbol q}, %s", sizes(word(sets, i))), \
+     for [i = 1:nsets] z0[i] * sqrt(c0[i] / x) with lines ls i lw 1 dt 3 \
+       title (i == 1 ? "∝ 1/√seeds from the fewest seeds" : ""), \
+     for [i = 1:nsets] t0[i] * sqrt(c0[i] / x) with lines ls nsets + i lw 1 dt 3 notitle, \
+     in using 8:6:(sprintf("%d", $2)) with labels left offset char 0.6, char 0.8 font ",9" notitle
 unset multiplot

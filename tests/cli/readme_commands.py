@@ -26,7 +26,7 @@ SKIPPED = {
     "make -C pipelines/paper -j": "the paper scale: hundreds of core-hours on a cluster (srun)",
     "sbatch pipelines/cluster/paper.sbatch": "needs a Slurm cluster (its shell is checked with sh -n below)",
     "sbatch --ntasks=2": "needs a Slurm cluster (its shell is checked with sh -n below)",
-    "make -C pipelines/accuracy": "minutes of simulation (QUICK=1: a minute); its recipes are plain coolgas commands tested elsewhere",
+    "make -C pipelines/accuracy": "about 10 minutes of simulation (QUICK=1: under a minute); its recipes are plain coolgas commands tested elsewhere",
 }
 
 

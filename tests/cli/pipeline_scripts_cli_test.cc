@@ -1,0 +1,80 @@
+// The pipelines' shell helpers, run as pipelines/accuracy/Makefile runs them:
+// pipelines/timed-run.sh (wall and CPU time of a run) and pipelines/h5-last.sh
+// (the last value of a dataset, e.g. a run's collision count).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "common/trajectory/resume_frame.h"
+#include "tests/support/cli_checks.h"
+#include "tests/support/run_command.h"
+#include "tests/support/simulate_cli.h"
+
+namespace coolgas {
+namespace {
+
+using test::run_command;
+using test::source;
+
+double read_number(const std::string& path) {
+  std::ifstream in(path);
+  double v = -1;
+  in >> v;
+  EXPECT_TRUE(in) << "no number in " << path;
+  return v;
+}
+
+std::string timed_run(const std::string& wall_file, const std::string& command) {
+  return "sh " + source("pipelines/timed-run.sh") + " " + wall_file + " " + command;
+}
+
+TEST(TimedRun, WritesTheCpuTimeOfTheCommandBesideItsWallTime) {
+  const std::string dir = test::scratch_dir("pipeline_scripts");
+  // One process computing: its CPU time is counted (`times` in a pipe, a
+  // subshell, reads 0 here), and cannot exceed its wall time (one thread;
+  // + 0.02 s for the 0.01 s resolution of both).
+  const auto r = run_command(timed_run(dir + "/run.wall_s", "awk 'BEGIN { for (i = 0; i < 3e6; i++) s += i }'"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const double wall = read_number(dir + "/run.wall_s"), cpu = read_number(dir + "/run.cpu_s");
+  EXPECT_GT(cpu, 0.0);
+  EXPECT_LE(cpu, wall + 0.02);
+}
+
+TEST(TimedRun, AFailedCommandKeepsItsExitCodeAndWritesNoTimes) {
+  const std::string dir = test::scratch_dir("pipeline_scripts");
+  const auto r = run_command(timed_run(dir + "/run.wall_s", "sh -c 'exit 5'"));
+  EXPECT_EQ(r.exit_code, 5);
+  EXPECT_FALSE(std::filesystem::exists(dir + "/run.wall_s"));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/run.cpu_s"));
+}
+
+TEST(H5Last, GivesTheCollisionsOfARunAtItsEnd) {
+  const std::string dir = test::scratch_dir("pipeline_scripts");
+  const std::string scene = test::write_file(dir, "run.toml",
+                                             "[system]\nL = 8\nphi = 0.208\nseed = 3\n[collision]\nmodel = \"inelastic\"\n"
+                                             "r0 = 0.1\ndelta = 1e-4\n[run]\nt_end = 30\n");
+  const std::string run = dir + "/run.h5";
+  ASSERT_EQ(run_command(test::simulate(scene + " -o " + run)).exit_code, 0);
+  const auto r = run_command("sh " + source("pipelines/h5-last.sh") + " " + run + " /observables/collisions/value");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // Reference: the counter of the run's last dump (at t_end), read by the
+  // trajectory library, not by h5dump.
+  const ResumeFrame last = read_resume_frame(run);
+  ASSERT_EQ(last.time, 30.0);
+  ASSERT_GT(last.collisions, 1000);  // many rows: the last one, not the first, is read
+  EXPECT_EQ(r.out, std::to_string(last.collisions) + "\n");
+}
+
+TEST(H5Last, AMissingFileOrDatasetIsOneErrorLine) {
+  const std::string dir = test::scratch_dir("pipeline_scripts");
+  const std::string script = "sh " + source("pipelines/h5-last.sh") + " ";
+  test::expect_one_error_line(run_command(script + dir + "/none.h5 /observables/collisions/value"), "none.h5");
+  const std::string scene = test::write_file(dir, "run.toml", "[system]\nL = 6\nphi = 0.208\nseed = 1\n[run]\nt_end = 1\n");
+  ASSERT_EQ(run_command(test::simulate(scene + " -o " + dir + "/run.h5")).exit_code, 0);
+  test::expect_one_error_line(run_command(script + dir + "/run.h5 /observables/no_such"), "/observables/no_such");
+}
+
+}  // namespace
+}  // namespace coolgas
