@@ -1,5 +1,6 @@
 #include "analyze/collapse/curves.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 
@@ -48,6 +49,14 @@ ScalingCurve make_scaling_curve(const Table& table, const FitColumns& columns, c
     throw InputError(table.source + ": " + std::to_string(c.t.size()) + " rows with " + columns.t + " > 0 in the window " +
                      t_window.text() + "; a curve needs at least 2");
   return c;
+}
+
+double interpolate_clamped(const std::vector<double>& xs, const std::vector<double>& ys, double x) {
+  if (x <= xs.front()) return ys.front();
+  if (x >= xs.back()) return ys.back();
+  const auto i = static_cast<std::size_t>(std::upper_bound(xs.begin(), xs.end(), x) - xs.begin());
+  const double u = (x - xs[i - 1]) / (xs[i] - xs[i - 1]);
+  return ys[i - 1] + u * (ys[i] - ys[i - 1]);
 }
 
 ScalingCurve subset(const ScalingCurve& c, const std::vector<std::size_t>& rows) {

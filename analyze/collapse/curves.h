@@ -28,6 +28,10 @@ struct ScalingCurve {
 // missing or not > 0, if E <= 0, if t does not increase, or fewer than 2 rows remain.
 ScalingCurve make_scaling_curve(const Table& table, const FitColumns& columns, const Window& t_window);
 
+// ys at x, linear between the points (xs increasing), clamped to the end
+// values outside them: a curve's ln E or its variance at any ln t.
+double interpolate_clamped(const std::vector<double>& xs, const std::vector<double>& ys, double x);
+
 // The same curve with only the rows at `rows` (sorted, unique indices): bootstrap replicas.
 ScalingCurve subset(const ScalingCurve& c, const std::vector<std::size_t>& rows);
 

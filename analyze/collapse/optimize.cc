@@ -117,7 +117,9 @@ SizeEnsemble without_run(const SizeEnsemble& e, std::size_t r) {
 }
 
 // The stratified delete-one jackknife over runs (optimize.h).
-void jackknife_runs(const std::vector<SizeEnsemble>& sizes, const Minimum& best, double min_overlap, CollapseFit& fit) {
+// `means`: every size's mean curve (mean_curves(sizes)); a replica replaces one.
+void jackknife_runs(const std::vector<SizeEnsemble>& sizes, const std::vector<ScalingCurve>& means,
+                    const Minimum& best, double min_overlap, CollapseFit& fit) {
   double var_theta = 0, var_z = 0;
   fit.replicas = 0;
   for (std::size_t s = 0; s < sizes.size(); ++s) {
@@ -125,7 +127,7 @@ void jackknife_runs(const std::vector<SizeEnsemble>& sizes, const Minimum& best,
     std::vector<double> thetas, zs;
     for (std::size_t r = 0; r < n; ++r) {
       throw_if_interrupted(std::size_t(fit.replicas), total_runs(sizes), "jackknife replicas");
-      std::vector<ScalingCurve> replica = mean_curves(sizes);
+      std::vector<ScalingCurve> replica = means;
       replica[s] = ensemble_mean(without_run(sizes[s], r));
       const Minimum m = minimise(replica, best.theta, best.z, min_overlap);
       thetas.push_back(m.theta);
@@ -183,7 +185,7 @@ CollapseFit optimize_collapse(const std::vector<SizeEnsemble>& sizes, const Coll
                      " decades of x; start closer (--theta, --z) or lower --min-overlap");
   CollapseFit fit{best.theta, best.z, best.quality, 0, 0, 0, resampling_kind(sizes, means)};
   if (search.bootstrap == 0) return fit;
-  if (fit.kind == BootstrapKind::kRuns) jackknife_runs(sizes, best, search.min_overlap_decades, fit);
+  if (fit.kind == BootstrapKind::kRuns) jackknife_runs(sizes, means, best, search.min_overlap_decades, fit);
   else bootstrap(means, best, search, fit);
   return fit;
 }

@@ -6,16 +6,6 @@
 namespace coolgas {
 namespace {
 
-// A column of curve c (ln E, or its variance) at ln t = lt, linear in ln t,
-// clamped to its ends.
-double interpolate_ln(const ScalingCurve& c, const std::vector<double>& column, double lt) {
-  if (lt <= c.ln_t.front()) return column.front();
-  if (lt >= c.ln_t.back()) return column.back();
-  const auto i = static_cast<std::size_t>(std::upper_bound(c.ln_t.begin(), c.ln_t.end(), lt) - c.ln_t.begin());
-  const double u = (lt - c.ln_t[i - 1]) / (c.ln_t[i] - c.ln_t[i - 1]);
-  return column[i - 1] + u * (column[i] - column[i - 1]);
-}
-
 bool weighted(const ScalingCurve& c) { return !c.ln_E_var.empty(); }
 
 struct SquaredSum {
@@ -36,8 +26,8 @@ void add_pair_terms(const ScalingCurve& a, const ScalingCurve& b, double theta, 
     const double lx = a.ln_t[i] + ax;
     if (lx <= lo || lx >= hi) continue;
     const double w = std::min({1.0, (lx - lo) / ramp, (hi - lx) / ramp});
-    const double d = a.ln_E[i] + dy - interpolate_ln(b, b.ln_E, lx - bx);
-    const double var = weighted(a) && weighted(b) ? a.ln_E_var[i] + interpolate_ln(b, b.ln_E_var, lx - bx) : 1.0;
+    const double d = a.ln_E[i] + dy - interpolate_clamped(b.ln_t, b.ln_E, lx - bx);
+    const double var = weighted(a) && weighted(b) ? a.ln_E_var[i] + interpolate_clamped(b.ln_t, b.ln_E_var, lx - bx) : 1.0;
     s.sum += w * d * d / var;
     s.weight += w;
   }

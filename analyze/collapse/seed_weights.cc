@@ -22,14 +22,6 @@ std::vector<double> moving_average(const std::vector<double>& v, int k) {
   return out;
 }
 
-double interpolate(const std::vector<double>& xs, const std::vector<double>& ys, double x) {
-  if (x <= xs.front()) return ys.front();
-  if (x >= xs.back()) return ys.back();
-  const auto i = static_cast<std::size_t>(std::upper_bound(xs.begin(), xs.end(), x) - xs.begin());
-  const double u = (x - xs[i - 1]) / (xs[i] - xs[i - 1]);
-  return ys[i - 1] + u * (ys[i] - ys[i - 1]);
-}
-
 }  // namespace
 
 void estimate_seed_scatter(SizeEnsemble& e) {
@@ -52,7 +44,7 @@ void estimate_seed_scatter(SizeEnsemble& e) {
 std::vector<double> mean_ln_E_variance(const SizeEnsemble& e, const std::vector<double>& ln_t, std::size_t runs) {
   if (e.scatter.ln_t.empty()) return {};
   std::vector<double> out;
-  for (double lt : ln_t) out.push_back(interpolate(e.scatter.ln_t, e.scatter.var, lt) / double(runs));
+  for (double lt : ln_t) out.push_back(interpolate_clamped(e.scatter.ln_t, e.scatter.var, lt) / double(runs));
   return out;
 }
 
