@@ -54,6 +54,10 @@ scaling_regime() {  # energy_table fit_table L
   else before_crossover "$(value "$2" t_max)" "$3" "the window's end"; fi
 }
 # row QUANTITY FIGURE MEASURED ERROR PAPER PAPER_ERROR REGIME
+# The regime verdict of a run whose largest cluster at t = 0 is the fraction $1 > 0.5.
+percolates() {
+  echo "no: the largest cluster holds $(short "$1") of the particles already at t = 0 (the unit-cell occupancy is above the site-percolation threshold 0.3116)"
+}
 is_num() { echo "$1" | grep -Eq '^[-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?$'; }
 row() {
   dev=-
@@ -102,7 +106,7 @@ row "tau, N(m) ~ m^-tau below the largest cluster" 3 "$(value "$tables/fit_nm_ga
   "$(value "$tables/fit_nm_gas.tsv" theta_err)" 2.7 0 "$late_regime"
 f0=$(at_time "$tables/mmax_$snap.tsv" largest_fraction 0)
 if awk "BEGIN { exit !($f0 > 0.5) }"; then
-  reg="no: the largest cluster holds $(short "$f0") of the particles already at t = 0 (the unit-cell occupancy is above the site-percolation threshold 0.3116)"
+  reg=$(percolates "$f0")
 else reg=$late_regime; fi
 row "largest cluster's share of the particles" 3 "$(at_time "$tables/mmax_$snap.tsv" largest_fraction "$late")" - 0.75 - "$reg"
 vs=$tables/velocity_series.tsv
@@ -153,7 +157,7 @@ for r in $mmax_runs; do
   s=$(short "$(jv slope_max)") span=$(short "$(jv span)")
   if awk "BEGIN { exit !($(jv fraction_0) > 0.5) }"; then
     row "M_max's steepest rise, d ln M_max/d ln t over 0.4 decades (mean field 6/5), $name" 4 "$s" - - - \
-      "no: the largest cluster holds $(short "$(jv fraction_0)") of the particles already at t = 0 (the unit-cell occupancy is above the site-percolation threshold 0.3116)"
+      "$(percolates "$(jv fraction_0)")"
     continue
   fi
   if [ "$(jv jump)" = 1 ]; then jump_reg=$(before_crossover "$(jv t_jump)" "$L" "the jump")

@@ -387,7 +387,7 @@ def main():
     kinds = {}
     for c in corpus.cases:
         kinds[c["kind"]] = kinds.get(c["kind"], 0) + 1
-    every = f", every {stride}th refused case (COOLGAS_FUZZ_STRIDE)" if stride > 1 else ""
+    every = f", 1 in {stride} refused cases (COOLGAS_FUZZ_STRIDE)" if stride > 1 else ""
     print(f"{len(corpus.cases)} cases ({', '.join(f'{n} {k}' for k, n in kinds.items())}{every}), {failures} failed")
     sys.exit(1 if failures else 0)
 
