@@ -62,11 +62,13 @@ include $(PIPE)lib.mk
 # SIZE_SEEDS unless SIZE_SEEDS_L<L> is (small boxes are cheap; SIZE_SEEDS
 # given on the command line applies to every L); a Fig. 2
 # run's box side is PARAM_L unless PARAM_L_<set> is set (e.g.
-# PARAM_L_phi0.052_r0.1_d1e-4: dilute gases cluster later and need larger boxes).
+# PARAM_L_phi0.052_r0.1_d1e-4: dilute gases cluster later and need larger boxes),
+# its end time PARAM_T_END unless PARAM_T_END_<set> is.
 size_t_end = $(or $(SIZE_T_END_L$(1)),$(SIZE_T_END))
 size_seeds = $(if $(filter command line,$(origin SIZE_SEEDS)),$(SIZE_SEEDS),$(or $(SIZE_SEEDS_L$(1)),$(SIZE_SEEDS)))
 param_name = phi$(1)_r$(2)_d$(3)
 param_l = $(or $(PARAM_L_$(1)),$(PARAM_L))
+param_t_end = $(or $(PARAM_T_END_$(1)),$(PARAM_T_END))
 PARAM_SETS := $(sort $(foreach p,$(PARAM_PHIS),$(call param_name,$(p),$(R0),$(DELTA))) \
                      $(foreach r,$(PARAM_R0S),$(call param_name,$(PHI),$(r),$(DELTA))) \
                      $(foreach d,$(PARAM_DELTAS),$(call param_name,$(PHI),$(R0),$(d))))
@@ -76,7 +78,7 @@ PARAM_SETS := $(sort $(foreach p,$(PARAM_PHIS),$(call param_name,$(p),$(R0),$(DE
 # both (SNAP_TWIN is its name), instead of being simulated twice.
 BASE_SET := $(call param_name,$(PHI),$(R0),$(DELTA))
 SNAP_TWIN := $(if $(and $(filter $(BASE_SET),$(PARAM_SETS)),$(filter $(SNAP_L),$(call param_l,$(BASE_SET))),$(filter \
-  $(SNAP_T_END),$(PARAM_T_END)),$(filter $(SNAP_SEED),$(PARAM_SEEDS))),param_$(BASE_SET)_s$(SNAP_SEED))
+  $(SNAP_T_END),$(call param_t_end,$(BASE_SET))),$(filter $(SNAP_SEED),$(PARAM_SEEDS))),param_$(BASE_SET)_s$(SNAP_SEED))
 param_output = $(PARAM_OUTPUT)$(if $(filter $(SNAP_TWIN),param_$(1)_s$(2)),$(newline)dump_times = [$(SNAP_DUMP_TIMES)])
 
 # $(call gas_scene,NAME,L,phi,r0,delta,t_end,seed,OUTPUT)
@@ -128,7 +130,7 @@ $(foreach L,$(SIZE_L),$(foreach s,$(call size_seeds,$(L)),$(call keep,$(SCENES)/
   gas_scene,size_L$(L)_s$(s),$(L),$(PHI),$(R0),$(DELTA),$(call size_t_end,$(L)),$(s),$(ENERGY_OUTPUT)))))
 $(foreach p,$(PARAM_SETS),$(foreach s,$(PARAM_SEEDS),$(call keep,$(SCENES)/param_$(p)_s$(s).toml,$(call \
   gas_scene,param_$(p)_s$(s),$(call param_l,$(p)),$(call field,phi,x_$(p)),$(call field,r,x_$(p)),$(call \
-  field,d,x_$(p)),$(PARAM_T_END),$(s),$(call param_output,$(p),$(s))))))
+  field,d,x_$(p)),$(call param_t_end,$(p)),$(s),$(call param_output,$(p),$(s))))))
 ifeq ($(SNAP_TWIN),)
 $(call keep,$(SCENES)/snap_s$(SNAP_SEED).toml,$(call \
   gas_scene,snap_s$(SNAP_SEED),$(SNAP_L),$(PHI),$(R0),$(DELTA),$(SNAP_T_END),$(SNAP_SEED),$(SNAP_OUTPUT)))

@@ -1,0 +1,99 @@
+# SCALE = workstation: the closest one 2-core, 24 GB machine gets to the
+# paper in an afternoon. Planned by the measured rates of
+# pipelines/cluster/estimate.sh (make -C pipelines/workstation estimate):
+# about 3 core-hours without the margin of a request, so about 1.5 hours of
+# wall time with make -j2 (the longest run, delta = 1e-5, about 25 minutes),
+# peak memory 0.2 GB a run, about 9 GB on disk. Every run resumes
+# (coolgas-simulate --resume; make reruns only what is missing), so it can be
+# run in slices. Every variable is documented in pipelines/common.mk.
+PHI := 0.208
+R0 := 0.1
+DELTA := 1e-4
+
+# Fig. 1: the demo's L = 34, 48, 68 with more seeds and later times, and
+# L = 100 (the largest box a workstation affords twice) to x = t/L^(5/2) = 0.5.
+# The late end is set by the cut-off: once E(t) falls to about delta^2 = 1e-8
+# the relative speeds inside clusters drop below delta, those collisions turn
+# elastic and E(t) flattens (a single L = 34 run: local slope of E 1.8-2.0 at
+# x = 5-26, 1.5 at x = 47, 0.4 at x = 450). E ~ L^-3 f(x) reaches 1e-8 at
+# x ~ 25 for L = 34 and at smaller x in larger boxes, so eta is fitted over
+# x = 3-20 and the small boxes end near x = 30.
+SIZE_L := 34 48 68 100
+SIZE_SEEDS := 1 2 3 4 5 6 7 8
+SIZE_SEEDS_L48 := 1 2 3 4 5 6
+SIZE_SEEDS_L68 := 1 2 3 4
+SIZE_SEEDS_L100 := 1 2
+SIZE_T_END := 200000
+SIZE_T_END_L48 := 400000
+SIZE_T_END_L68 := 500000
+SIZE_T_END_L100 := 50000
+THETA_WINDOW := 100:10000
+COLLAPSE_T_WINDOW := 100:
+COLLAPSE_WEIGHTS := seeds
+COLLAPSE_ETA_WINDOW := 3:20
+COLLAPSE_BOOTSTRAP := 200
+
+# Fig. 2 at L = 100 (x = 0.1 at t = 1e4), the paper's four phi, five r0 and
+# three delta. Dilute gases and nearly elastic ones leave Haff's regime later,
+# so they get larger boxes: phi = 0.104 at L = 136 and 0.052 at L = 170
+# (N = 5e5 each, cheap because they collide less), r0 = 0.9 at L = 136 to
+# t = 3e4 (x = 0.14). Each window starts where the demo's local slopes
+# leave Haff's law and ends at x = 0.1.
+PARAM_L := 100
+PARAM_L_phi0.104_r0.1_d1e-4 := 136
+PARAM_L_phi0.052_r0.1_d1e-4 := 170
+PARAM_L_phi0.208_r0.9_d1e-4 := 136
+PARAM_SEEDS := 1
+PARAM_T_END := 10000
+PARAM_T_END_phi0.052_r0.1_d1e-4 := 20000
+PARAM_T_END_phi0.104_r0.1_d1e-4 := 20000
+PARAM_T_END_phi0.208_r0.9_d1e-4 := 30000
+PARAM_PHIS := 0.052 0.104 0.156 0.208
+PARAM_R0S := 0.1 0.3 0.5 0.7 0.9
+PARAM_DELTAS := 1e-3 1e-4 1e-5
+PARAM_FIT_WINDOW := 100:10000
+PARAM_FIT_WINDOW_phi0.156_r0.1_d1e-4 := 200:10000
+PARAM_FIT_WINDOW_phi0.104_r0.1_d1e-4 := 300:20000
+PARAM_FIT_WINDOW_phi0.052_r0.1_d1e-4 := 500:20000
+PARAM_FIT_WINDOW_phi0.208_r0.7_d1e-4 := 300:10000
+PARAM_FIT_WINDOW_phi0.208_r0.9_d1e-4 := 1000:20000
+PARAM_OUTPUT = observables_per_decade = 20$(newline)dumps_per_decade = 5
+
+# Figs. 3-5 at the paper's times, from Fig. 2's phi = 0.208 run (SNAP_TWIN):
+# L = 100, where t = 8000 is still at x = 0.08.
+SNAP_L := 100
+SNAP_SEED := 1
+SNAP_T_END := 10000
+SNAP_DUMP_TIMES := 5, 10, 100, 1000, 2000, 4000, 6000, 8000
+SNAPSHOT_TIME := 8000
+NM_TIMES := 2000 4000 8000
+NM_FIT_WINDOW := 1:300
+PHI_EARLY_TIMES := 5 10
+PHI_LATE_TIMES := 2000 4000 6000 8000
+
+SMOL_M := 262144
+SMOL_T_END := 3000
+SMOL_TIMES := 10,100,1000,3000
+SMOL_FIT_WINDOW := 30:3000
+
+# Ballistic aggregation at L = 100: N = 4e5 at phi = 0.208, whose aggregates
+# stay narrower than L/2 = 50 to t = 1000 (the demo's L = 48 reaches its
+# L/2 = 24 near t = 200, and the largest mass grows about as t).
+BA_L := 100
+BA_PHIS := 0.052 0.104 0.208
+BA_SEED := 1
+BA_THETA_WINDOW := 10:1000
+BA_MMAX_FIT_WINDOW := 10:1000
+BA_T_END := 1000
+BA_DUMP_TIMES := 10, 30, 100, 300, 1000
+BA_SNAPSHOT_TIME := 300
+BA_NM_TIMES := 100 300 1000
+BA_PHI_TIMES := 100 300 1000
+
+# The growing length: Fig. 2's phi = 0.208 run (L = 100, five dumps a
+# decade). L_C ~ 1.7 t^0.34 (the demo's L = 68) reaches L/4 = 25 near
+# t = 2700: fitted over t = 20-2000.
+STRUCTURE_GAS := param_phi0.208_r0.1_d1e-4_s1
+STRUCTURE_BA := ba_phi0.208_s1
+LT_FIT_WINDOW := 20:2000
+COLLAPSE_FROM := 20
