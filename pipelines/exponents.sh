@@ -111,6 +111,17 @@ else reg=$late_regime; fi
 row "largest cluster's share of the particles" 3 "$(at_time "$tables/mmax_$snap.tsv" largest_fraction "$late")" - 0.75 - "$reg"
 vs=$tables/velocity_series.tsv
 row "beta, -ln Phi(y) ~ y^beta at t = $late" 5 "$(at_time "$vs" beta "$late")" "$(at_time "$vs" beta_err "$late")" 1.66667 0 "$late_regime"
+# alpha: the last early dump's tail points (coolgas-velocity --tail) fitted as
+# -ln Phi = alpha y + c, weighted by their errors: "alpha err t".
+early_alpha() {
+  awk -F '\t' '/^# t = / { n = 0; sw = swy = swyy = swl = swyl = 0; t = $0; sub(/^# t = /, "", t); sub(/;.*/, "", t) }
+    /^#/ || NF < 4 || $1 == "t" { next }
+    { w = 1 / ($4 * $4); sw += w; swy += w * $2; swyy += w * $2 * $2; swl += w * $3; swyl += w * $2 * $3; n++ }
+    END { d = sw * swyy - swy * swy; if (n < 3 || d <= 0) { print "nan nan " t; exit }
+          printf "%.4g %.2g %s\n", (sw * swyl - swy * swl) / d, sqrt(sw / d), t }' "$1"
+}
+set -- $(early_alpha "$tables/tail_early.tsv")
+row "alpha, Phi(y) ~ exp(-alpha y) at t = $3 (homogeneous; kinetic theory 2.60)" 5 "$1" "$2" 2.65 0 yes
 row "kappa at t = $late (paper: > 0, saturating)" 5 "$(at_time "$vs" kappa "$late")" "$(at_time "$vs" kappa_err "$late")" - - "$late_regime"
 row "Smoluchowski Eq. 4: M_max ~ t^a" S "$(calc "-($(value "$tables/fit_smoluchowski_M_max.tsv" theta))")" - 1.2 0 yes
 row "Smoluchowski Eq. 4: M_avg ~ t^a" S "$(calc "-($(value "$tables/fit_smoluchowski_M_avg.tsv" theta))")" - 1.2 0 yes
@@ -184,7 +195,16 @@ for r in $ba_mmax; do
     "$(calc "-($(value "$fit" theta))")" "$(value "$fit" theta_err)" - - yes
   row "M_max's steepest rise, d ln M_max/d ln t over 0.4 decades (the gas's rule), BA phi = $phi" 4 \
     "$(short "$(value "$tables/jump_mmax_$r.tsv" slope_max)")" - - - yes
+  fit=$tables/fit_mavg_$r.tsv
+  row "M_avg ~ t^a, the mean aggregate mass, BA phi = $phi (t = $(short "$(value "$fit" t_min)"):$(short "$(value "$fit" t_max)"); paper 1.06 at phi = 0.005 to 1.19 at 0.313)" 4 \
+    "$(calc "-($(value "$fit" theta))")" "$(value "$fit" theta_err)" - - yes
 done
+
+# BA's velocity tail at its last tail time (the block header's beta of coolgas-velocity --tail).
+if [ -f "$tables/tail_ba.tsv" ]; then
+  set -- $(sed -n 's/^# t = \([^;]*\);.*beta = \([^ ]*\) +- \([^ ]*\) .*/\1 \2 \3/p' "$tables/tail_ba.tsv" | tail -n 1)
+  row "beta_BA, -ln Phi(y) ~ y^beta at t = $(short "$1") (paper: 0.70, not 2/theta_BA)" 5 "$(short "$2")" "$(short "$3")" 0.70 0 yes
+fi
 
 # Ballistic aggregation: the paper gives theta_BA = 1.283 +- 0.005 at phi = 0.005 and 1.206 +- 0.005 at 0.208.
 for fit in $ba_fits; do
