@@ -203,7 +203,7 @@ done
 # BA's velocity tail at its last tail time (the block header's beta of coolgas-velocity --tail).
 if [ -f "$tables/tail_ba.tsv" ]; then
   set -- $(sed -n 's/^# t = \([^;]*\);.*beta = \([^ ]*\) +- \([^ ]*\) .*/\1 \2 \3/p' "$tables/tail_ba.tsv" | tail -n 1)
-  row "beta_BA, -ln Phi(y) ~ y^beta at t = $(short "$1") (paper: 0.70, not 2/theta_BA)" 5 "$(short "$2")" "$(short "$3")" 0.70 0 yes
+  row "beta_BA, -ln Phi(y) ~ y^beta at t = $(short "$1"), phi = $(short "$(value "$tables/tail_ba.tsv" phi '#')") (paper: 0.70, not 2/theta_BA)" 5 "$(short "$2")" "$(short "$3")" 0.70 0 yes
 fi
 
 # Ballistic aggregation: the paper gives theta_BA = 1.283 +- 0.005 at phi = 0.005 and 1.206 +- 0.005 at 0.208.
