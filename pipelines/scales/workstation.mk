@@ -23,7 +23,7 @@ DELTA := 1e-4
 # weighted collapse of all four sizes gave z = 3.63 +- 0.37 (without L = 100,
 # z = 2.96 +- 0.35 and eta = 2.47 +- 0.60). At that z no point lies in
 # x = 3-20, coolgas-collapse refuses the eta fit and the pipeline stops at
-# tables/collapse.tsv: not yet resolved (pipelines/README.md).
+# tables/collapse.tsv: not yet resolved.
 SIZE_L := 34 48 68 100
 SIZE_SEEDS := 1 2 3 4 5 6 7 8
 SIZE_SEEDS_L48 := 1 2 3 4 5 6
