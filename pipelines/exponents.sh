@@ -86,7 +86,8 @@ row "z, same collapse" 1 "$(value "$collapse" z '#')" "$(value "$collapse" z_err
 collapse_regime=$reg
 ew=$(value "$collapse" eta_window '#')
 ewlo=${ew%%:*}
-if awk "BEGIN { exit !(${ewlo:-0} >= 1) }"; then reg=yes; else reg="no: the fit window starts at x = ${ewlo:-0} < 1"; fi
+if ! is_num "$(value "$collapse" eta '#')"; then reg="no: fewer than 3 scaled points lie in the window (the data reach x = $xhi)"
+elif awk "BEGIN { exit !(${ewlo:-0} >= 1) }"; then reg=yes; else reg="no: the fit window starts at x = ${ewlo:-0} < 1"; fi
 row "eta, f(x) ~ x^-eta for x >> 1 (x = $ew)" 1 "$(value "$collapse" eta '#')" "$(value "$collapse" eta_err '#')" 1.83 0 "$reg"
 fit=$tables/fit_size_Lmax.tsv
 row "theta, power-law fit at L = $L_max (t = $(short "$(value "$fit" t_min)"):$(short "$(value "$fit" t_max)"))" 1 \

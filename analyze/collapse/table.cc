@@ -83,10 +83,11 @@ Provenance collapse_provenance(const CollapseOptions& o, const std::vector<SizeE
     p.emplace_back("uncertainty", uncertainty_text(*r.fit, o.search.seed));
   }
   p.emplace_back("quality", format_number(r.quality));
-  if (r.eta) {
-    p.emplace_back("eta", format_number(r.eta->theta));
-    p.emplace_back("eta_err", format_number(r.eta->theta_err));
+  if (o.eta_window) {
+    p.emplace_back("eta", r.eta ? format_number(r.eta->theta) : "nan");
+    p.emplace_back("eta_err", r.eta ? format_number(r.eta->theta_err) : "nan");
     p.emplace_back("eta_window", o.eta_window->text());
+    if (!r.eta) p.emplace_back("eta_note", "fewer than 3 scaled points in the window");
   }
   return p;
 }
@@ -102,12 +103,13 @@ void write_curves(const std::vector<ScalingCurve>& curves, const Results& r, con
   }
 }
 
-void write_summary(const Results& r, const Provenance& p, std::ostream& out) {
+void write_summary(const CollapseOptions& o, const Results& r, const Provenance& p, std::ostream& out) {
   std::vector<std::string> names{"theta", "theta_err", "z", "z_err", "quality"};
   std::vector<double> values{r.theta, r.fit ? r.fit->theta_err : 0, r.z, r.fit ? r.fit->z_err : 0, r.quality};
-  if (r.eta) {
+  if (o.eta_window) {  // the columns stay when the fit is impossible, so readers find them
+    const double nan = std::nan("");
     names.insert(names.end(), {"eta", "eta_err"});
-    values.insert(values.end(), {r.eta->theta, r.eta->theta_err});
+    values.insert(values.end(), {r.eta ? r.eta->theta : nan, r.eta ? r.eta->theta_err : nan});
   }
   TsvWriter w(out, kTool, p, names);
   w.row(values);
@@ -133,7 +135,7 @@ void write_collapse_table(const CollapseOptions& options, std::ostream& out) {
   r.quality = collapse_quality(curves, r.theta, r.z, o.search.min_overlap_decades);
   if (o.eta_window) r.eta = fit_tail_exponent(curves, r.theta, r.z, *o.eta_window);
   const Provenance p = collapse_provenance(o, sizes, r);
-  if (o.summary) write_summary(r, p, out);
+  if (o.summary) write_summary(o, r, p, out);
   else write_curves(curves, r, p, out);
 }
 

@@ -2,11 +2,12 @@
 
 #include <cmath>
 
-#include "common/error.h"
+#include "common/tool_main.h"
+#include "common/tsv.h"
 
 namespace coolgas {
 
-PowerLawFit fit_tail_exponent(const std::vector<ScalingCurve>& curves, double theta, double z, const Window& x_window) {
+std::optional<PowerLawFit> fit_tail_exponent(const std::vector<ScalingCurve>& curves, double theta, double z, const Window& x_window) {
   FitData d;
   for (const auto& c : curves) {
     for (std::size_t i = 0; i < c.t.size(); ++i) {
@@ -16,9 +17,13 @@ PowerLawFit fit_tail_exponent(const std::vector<ScalingCurve>& curves, double th
       d.E.push_back(std::exp(c.ln_E[i] + c.ln_y_shift(theta, z)));
     }
   }
-  if (d.t.size() < 3)
-    throw InputError("--eta-window " + x_window.text() + " holds " + std::to_string(d.t.size()) +
-                     " scaled points (x = t/L^z); the tail fit needs at least 3");
+  if (d.t.size() < 3) {
+    // theta and z are still measured; a pipeline that asked for eta too
+    // should get them, with eta = nan, rather than nothing.
+    note("--eta-window " + x_window.text() + " holds " + std::to_string(d.t.size()) + " scaled points (x = t/L^z" +
+         " with z = " + format_number(z) + "); the tail fit needs at least 3, so eta is nan");
+    return std::nullopt;
+  }
   return fit_power_law(d);
 }
 

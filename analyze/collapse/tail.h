@@ -2,6 +2,7 @@
 // x >> 1 (the paper finds eta = 1.83): a power-law fit to the scaled points
 // of all curves pooled, within a window of x.
 #pragma once
+#include <optional>
 #include <vector>
 
 #include "analyze/collapse/curves.h"
@@ -9,7 +10,8 @@
 
 namespace coolgas {
 
-// The result's theta field is eta. Unweighted; InputError if fewer than 3 points fall in the window.
-PowerLawFit fit_tail_exponent(const std::vector<ScalingCurve>& curves, double theta, double z, const Window& x_window);
+// The result's theta field is eta. Unweighted; nullopt, with a note on
+// stderr, if fewer than 3 points fall in the window.
+std::optional<PowerLawFit> fit_tail_exponent(const std::vector<ScalingCurve>& curves, double theta, double z, const Window& x_window);
 
 }  // namespace coolgas

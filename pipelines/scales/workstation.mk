@@ -21,9 +21,9 @@ DELTA := 1e-4
 # Measured in this scale's runs (L = 100 took 386 and 520 CPU-s, a third of
 # the estimate): theta = 1.192 +- 0.003 from L = 100 over t = 100-1e4, but the
 # weighted collapse of all four sizes gave z = 3.63 +- 0.37 (without L = 100,
-# z = 2.96 +- 0.35 and eta = 2.47 +- 0.60). At that z no point lies in
-# x = 3-20, coolgas-collapse refuses the eta fit and the pipeline stops at
-# tables/collapse.tsv: not yet resolved.
+# z = 2.96 +- 0.35 and eta = 2.47 +- 0.60). At that z fewer than 3 points
+# may lie in x = 3-20: coolgas-collapse then writes eta = nan (with a note)
+# and the exponent table says why.
 SIZE_L := 34 48 68 100
 SIZE_SEEDS := 1 2 3 4 5 6 7 8
 SIZE_SEEDS_L48 := 1 2 3 4 5 6
