@@ -1,17 +1,20 @@
 #!/bin/sh
-# readme-table.sh EXPONENTS_MD README
+# readme-table.sh EXPONENTS_MD README [NAME]
 # Puts a pipeline's exponent table (OUT/exponents.md) into README between
-# the lines '<!-- exponents:begin -->' and '<!-- exponents:end -->', so the
-# README's numbers are always a pipeline's output, never typed by hand:
+# the lines '<!-- NAME:begin -->' and '<!-- NAME:end -->' (NAME defaults to
+# 'exponents', the demo's table), so the README's numbers are always a
+# pipeline's output, never typed by hand:
 #   sh pipelines/readme-table.sh out/demo/exponents.md README.md
+#   sh pipelines/readme-table.sh out/workstation/exponents.md README.md exponents-workstation
 set -e
 table=$1
 readme=$2
-grep -q '^<!-- exponents:begin -->$' "$readme" && grep -q '^<!-- exponents:end -->$' "$readme" || {
-  echo "readme-table.sh: $readme has no '<!-- exponents:begin -->' ... '<!-- exponents:end -->' lines" >&2; exit 2; }
+name=${3:-exponents}
+grep -q "^<!-- $name:begin -->\$" "$readme" && grep -q "^<!-- $name:end -->\$" "$readme" || {
+  echo "readme-table.sh: $readme has no '<!-- $name:begin -->' ... '<!-- $name:end -->' lines" >&2; exit 2; }
 tmp=$(mktemp "$readme.XXXXXX")
-awk -v table="$table" '
-  /^<!-- exponents:begin -->$/ { print; while ((getline line < table) > 0) print line; skip = 1; next }
-  /^<!-- exponents:end -->$/ { skip = 0 }
+awk -v table="$table" -v begin="<!-- $name:begin -->" -v end="<!-- $name:end -->" '
+  $0 == begin { print; while ((getline line < table) > 0) print line; skip = 1; next }
+  $0 == end { skip = 0 }
   !skip { print }' "$readme" > "$tmp"
 mv "$tmp" "$readme"

@@ -1,10 +1,12 @@
 // The pipelines' shell helpers, run as pipelines/accuracy/Makefile runs them:
-// pipelines/timed-run.sh (wall and CPU time of a run) and pipelines/h5-last.sh
-// (the last value of a dataset, e.g. a run's collision count).
+// pipelines/timed-run.sh (wall and CPU time of a run), pipelines/h5-last.sh
+// (the last value of a dataset, e.g. a run's collision count) and
+// pipelines/readme-table.sh (a pipeline's table copied into the README).
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include "common/trajectory/resume_frame.h"
@@ -74,6 +76,37 @@ TEST(H5Last, AMissingFileOrDatasetIsOneErrorLine) {
   const std::string scene = test::write_file(dir, "run.toml", "[system]\nL = 6\nphi = 0.208\nseed = 1\n[run]\nt_end = 1\n");
   ASSERT_EQ(run_command(test::simulate(scene + " -o " + dir + "/run.h5")).exit_code, 0);
   test::expect_one_error_line(run_command(script + dir + "/run.h5 /observables/no_such"), "/observables/no_such");
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(ReadmeTable, ReplacesOnlyTheNamedBlock) {
+  const std::string dir = test::scratch_dir("pipeline_scripts");
+  const std::string head = "# Title\n<!-- exponents:begin -->\nold demo\n<!-- exponents:end -->\ntext\n";
+  const std::string readme = test::write_file(
+      dir, "README.md", head + "<!-- exponents-workstation:begin -->\nold 1\nold 2\n<!-- exponents-workstation:end -->\ntail\n");
+  const std::string table = test::write_file(dir, "exponents.md", "| a | b |\n|---|---|\n");
+  const auto r = run_command("sh " + source("pipelines/readme-table.sh") + " " + table + " " + readme +
+                             " exponents-workstation");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(read_text(readme),
+            head + "<!-- exponents-workstation:begin -->\n| a | b |\n|---|---|\n<!-- exponents-workstation:end -->\ntail\n");
+}
+
+TEST(ReadmeTable, AReadmeWithoutTheMarkersIsOneErrorLineAndStaysAsItWas) {
+  const std::string dir = test::scratch_dir("pipeline_scripts");
+  const std::string text = "# Title\n<!-- exponents:begin -->\nx\n<!-- exponents:end -->\n";
+  const std::string readme = test::write_file(dir, "README.md", text);
+  const std::string table = test::write_file(dir, "exponents.md", "| a |\n");
+  test::expect_one_error_line(
+      run_command("sh " + source("pipelines/readme-table.sh") + " " + table + " " + readme + " exponents-paper"),
+      "exponents-paper:begin");
+  EXPECT_EQ(read_text(readme), text);
 }
 
 }  // namespace
