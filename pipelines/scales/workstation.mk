@@ -11,7 +11,8 @@ R0 := 0.1
 DELTA := 1e-4
 
 # Fig. 1: the demo's L = 34, 48, 68 with more seeds and later times, and
-# L = 100 (the largest box a workstation affords twice) to x = t/L^(5/2) = 0.5.
+# L = 100 (the largest box a workstation affords twice) to x = t/L^(5/2) = 1,
+# so its curve reaches the crossover that fixes z (to x = 0.5 it pulled z to 3.6).
 # The late end is set by the cut-off: once E(t) falls to about delta^2 = 1e-8
 # the relative speeds inside clusters drop below delta, those collisions turn
 # elastic and E(t) flattens (a single L = 34 run: local slope of E 1.8-2.0 at
@@ -32,7 +33,7 @@ SIZE_SEEDS_L100 := 1 2
 SIZE_T_END := 200000
 SIZE_T_END_L48 := 400000
 SIZE_T_END_L68 := 500000
-SIZE_T_END_L100 := 50000
+SIZE_T_END_L100 := 100000
 THETA_WINDOW := 100:10000
 COLLAPSE_T_WINDOW := 100:
 COLLAPSE_WEIGHTS := seeds
