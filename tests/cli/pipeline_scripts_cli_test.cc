@@ -1,6 +1,7 @@
 // The pipelines' shell helpers, run as pipelines/accuracy/Makefile runs them:
 // pipelines/timed-run.sh (wall and CPU time of a run), pipelines/h5-last.sh
-// (the last value of a dataset, e.g. a run's collision count) and
+// (the last value of a dataset, or the last up to a time, e.g. a run's
+// collision count) and
 // pipelines/readme-table.sh (a pipeline's table copied into the README).
 #include <gtest/gtest.h>
 
@@ -67,6 +68,29 @@ TEST(H5Last, GivesTheCollisionsOfARunAtItsEnd) {
   ASSERT_EQ(last.time, 30.0);
   ASSERT_GT(last.collisions, 1000);  // many rows: the last one, not the first, is read
   EXPECT_EQ(r.out, std::to_string(last.collisions) + "\n");
+}
+
+TEST(H5Last, AtATimeGivesWhatARunEndingThenCounted) {
+  // Dumps do not perturb the engine, so a run to t = 10 made the collisions
+  // the same scene's run to t = 30 had made by t = 10 (an exact identity).
+  const std::string dir = test::scratch_dir("pipeline_scripts");
+  const std::string body = "[system]\nL = 8\nphi = 0.208\nseed = 3\n[collision]\nmodel = \"inelastic\"\n"
+                           "r0 = 0.1\ndelta = 1e-4\n[run]\nt_end = ";
+  for (const char* t : {"10", "30"})
+    ASSERT_EQ(run_command(test::simulate(test::write_file(dir, std::string("run") + t + ".toml", body + t + "\n") +
+                                         " -o " + dir + "/run" + t + ".h5"))
+                  .exit_code,
+              0);
+  const std::string script = "sh " + source("pipelines/h5-last.sh") + " ";
+  const auto at10 = run_command(script + dir + "/run30.h5 /observables/collisions/value 10");
+  ASSERT_EQ(at10.exit_code, 0) << at10.err;
+  const ResumeFrame short_run = read_resume_frame(dir + "/run10.h5");
+  ASSERT_EQ(short_run.time, 10.0);
+  ASSERT_GT(short_run.collisions, 100);
+  EXPECT_EQ(at10.out, std::to_string(short_run.collisions) + "\n");
+  EXPECT_NE(at10.out, run_command(script + dir + "/run30.h5 /observables/collisions/value").out);
+  test::expect_one_error_line(run_command(script + dir + "/run30.h5 /observables/collisions/value -1"), "times <= -1");
+  test::expect_one_error_line(run_command(script + dir + "/run30.h5 /observables/collisions/value ten"), "'ten'");
 }
 
 TEST(H5Last, AMissingFileOrDatasetIsOneErrorLine) {
