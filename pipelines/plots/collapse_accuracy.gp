@@ -1,11 +1,12 @@
 # What accuracy costs in coolgas-collapse: (a) z and (b) theta of the collapse
 # of n seeds per L (one table per run, so the errors are the jackknife over
 # whole runs) against n, one curve per set of sizes; (c) those errors against
-# the core-seconds of the runs used, with lines falling as 1/sqrt(seeds).
-# gnuplot -e "in='collapse_accuracy.tsv'; out='collapse_accuracy.png'" collapse_accuracy.gp
+# the core-seconds of the runs used, with lines falling as 1/sqrt(seeds);
+# (d) z of the first set's runs cut at x_end = t/L^(5/2), against x_end.
+# gnuplot -e "in='collapse_accuracy.tsv'; tend='collapse_tend.tsv'; out='collapse_accuracy.png'" collapse_accuracy.gp
 plots = system("dirname " . ARG0)
 load plots . "/common.gp"
-eval term(1800, 640)
+eval term(1500, 1150)
 set output out
 sets = meta(in, "sets")
 nsets = words(sets)
@@ -13,7 +14,7 @@ nsets = words(sets)
 sizes(s) = "L = " . system("echo " . s . " | sed 's/-/, /g'")
 # the column c of the first row of set s (the fewest seeds)
 first(s, c) = real(system("awk -F '\t' '$1 == \"" . s . "\" { print $" . c . "; exit }' " . q(in)))
-set multiplot layout 1, 3 title sprintf("coolgas-collapse --optimize of n seeds per L: the error and its cost (runs to x = t/L^{5/2} = %s, {/Symbol d} = %s)", \
+set multiplot layout 2, 2 title sprintf("coolgas-collapse --optimize of n seeds per L: the error and its cost (runs to x = t/L^{5/2} = %s, {/Symbol d} = %s)", \
     meta(in, "x_end"), meta(in, "delta"))
 set grid
 set key below
@@ -55,4 +56,21 @@ plot for [i = 1:nsets] in using 8:(strcol(1) eq word(sets, i) ? $6 : NaN) with l
        title (i == 1 ? "∝ 1/√seeds from the fewest seeds" : ""), \
      for [i = 1:nsets] t0[i] * sqrt(c0[i] / x) with lines ls nsets + i lw 1 dt 3 notitle, \
      in using 8:6:(sprintf("%d", $2)) with labels left offset char 0.6, char 0.8 font ",9" notitle
+
+set title sprintf("(d) z against the runs' end, %s, %s seeds each (labels: CPU s)", sizes(meta(tend, "sizes")), \
+    system("awk -F '\t' 'NR > 1 && !/^#/ { print $2; exit }' " . q(tend)))
+unset logscale y
+set logscale x
+set autoscale
+set autoscale xfix
+set offsets graph 0.1, graph 0.15, graph 0.1, graph 0.1
+set xtics (1, 2, 3, 5, 10, 20, 30)
+set format y "%g"
+set xlabel "x_{end} = t_{end}/L^{5/2} of the runs"
+set ylabel "dynamical exponent z"
+set key below maxrows 1
+# columns: 1 x_end, 2 seeds, 3 theta, 4 theta_err, 5 z, 6 z_err, 7 quality, 8 cpu_s
+plot tend using 1:5:6 with yerrorlines ls 1 title "z ± jackknife error over whole runs", \
+     tend using 1:5:(sprintf("%.0f", $8)) with labels left offset char 0.8, char 0.8 font ",9" notitle, \
+     2.5 with lines ls 7 lw 2 dt 3 title "5/2 (paper)"
 unset multiplot

@@ -2,9 +2,11 @@
 // recipe of pipelines/common.mk, the tables parse and hold sane values, a
 // finished pipeline has nothing left to do, a changed analysis knob reruns
 // only the step that uses it, and 'reanalyze' redraws every figure from the
-// archived runs without simulating.
+// archived runs without simulating. And the accuracy pipeline's collapse
+// study (QUICK=1): runs cut at their own end give the whole runs' collapse.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -181,6 +183,47 @@ TEST(Pipeline, TinyPipelineRunsEndToEndAndIsIncremental) {
   EXPECT_FALSE(fs::exists(again + "/runs"));
   const auto re_exponents = read_exponents(again + "/exponents.tsv");
   EXPECT_DOUBLE_EQ(re_exponents.lower_bound("theta, collapse")->second.measured, value("theta, collapse"));
+}
+
+// The data rows of a TSV table (string cells), after its column line.
+std::vector<std::vector<std::string>> tsv_rows(const std::string& path) {
+  std::ifstream in(path);
+  std::vector<std::vector<std::string>> rows;
+  std::string line;
+  std::getline(in, line);
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::vector<std::string> cells;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, '\t');) cells.push_back(cell);
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+TEST(AccuracyPipeline, CollapseOfRunsCutAtTheirEndIsTheCollapseOfTheWholeRuns) {
+  // QUICK=1: L = 16, 20, 27, 4 seeds each, run to x = t/L^(5/2) = 3, and the
+  // collapse against t_end cuts them at x = 1 and 3. Cut at 3 the tables are
+  // whole, so that row must equal the 4-seed row of the seeds study, digit
+  // for digit, cost included (an exact identity); cut at 1 costs less.
+  std::string bin_dir = test::bin("coolgas-simulate");
+  bin_dir.erase(bin_dir.rfind('/'));
+  const std::string out = test::scratch_dir("accuracy_pipeline") + "/out";
+  const auto r = run_command("make -C " + test::source("pipelines/accuracy") + " -j2 QUICK=1 BIN=" + bin_dir +
+                             " OUT=" + out + " collapse-accuracy");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_TRUE(is_png(out + "/collapse_accuracy.png"));
+  const auto seeds = tsv_rows(out + "/collapse_accuracy.tsv"), tend = tsv_rows(out + "/collapse_tend.tsv");
+  ASSERT_EQ(tend.size(), 2u);
+  const auto full = std::find_if(seeds.begin(), seeds.end(), [](const auto& row) { return row.at(1) == "4"; });
+  ASSERT_NE(full, seeds.end());
+  EXPECT_EQ(tend[1].at(0), "3");
+  // columns from the third on: theta theta_err z z_err quality cpu_s in both
+  EXPECT_EQ(std::vector<std::string>(tend[1].begin() + 2, tend[1].end()),
+            std::vector<std::string>(full->begin() + 2, full->end()));
+  EXPECT_EQ(tend[0].at(0), "1");
+  EXPECT_LT(std::stod(tend[0].at(7)), std::stod(tend[1].at(7)));
+  EXPECT_GT(std::stod(tend[0].at(7)), 0);
 }
 
 }  // namespace
