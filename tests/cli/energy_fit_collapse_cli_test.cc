@@ -68,6 +68,23 @@ TEST_F(EnergyFitCollapseCli, EnergyFitAndCollapseChainThroughPipes) {
   EXPECT_NEAR(z, 2.5, 0.02);
 }
 
+TEST_F(EnergyFitCollapseCli, AnEtaWindowBeyondTheDataGivesNanAndANoteNotARefusal) {
+  const std::string e16 = *dir + "/e16.tsv", e32 = *dir + "/e32.tsv";
+  ASSERT_EQ(run_command(bin("coolgas-energy") + " " + path(16, 1) + " > " + e16).exit_code, 0);
+  ASSERT_EQ(run_command(bin("coolgas-energy") + " " + path(32, 1) + " > " + e32).exit_code, 0);
+  // The runs end at t = 1e6: x = t/L^2.5 reaches 977 for L = 16, so no point lies in 1e4:1e5.
+  auto r = run_command(bin("coolgas-collapse") + " --theta 1.2 --z 2.5 --summary --eta-window 1e4:1e5 " + e16 + " " + e32);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("--eta-window 10000:1e+05 holds 0 scaled points"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("eta is nan"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.substr(0, r.out.find('\n')), "theta\ttheta_err\tz\tz_err\tquality\teta\teta_err");
+  EXPECT_NE(r.out.find("# eta: nan\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("# eta_note: fewer than 3 scaled points in the window\n"), std::string::npos) << r.out;
+  const std::string row = r.out.substr(r.out.rfind('\n', r.out.size() - 2) + 1);
+  EXPECT_EQ(row.substr(0, 4), "1.2\t") << row;
+  EXPECT_EQ(row.substr(row.size() - 8), "nan\tnan\n") << row;
+}
+
 TEST_F(EnergyFitCollapseCli, CollapsedCurvesPipeIntoTheTailFit) {
   const std::string e16 = *dir + "/e16.tsv", e32 = *dir + "/e32.tsv";
   ASSERT_EQ(run_command(bin("coolgas-energy") + " " + path(16, 1) + " > " + e16).exit_code, 0);
