@@ -43,16 +43,24 @@ set ylabel "E L^{z{/Symbol q}}"
 stats collapse using 1 nooutput
 x_min = STATS_min; x_max = STATS_max
 if (xhi <= 0) xhi = x_max
-stats collapse using ($1 >= xlo && $1 <= xhi ? log($2) + eta * log($1) : 1/0) nooutput
-B_eta = exp(STATS_mean)
+# eta is nan when its window held too few scaled points (coolgas-collapse says so)
+has_eta = (eta == eta)
+B_eta = NaN
+if (has_eta) {
+  stats collapse using ($1 >= xlo && $1 <= xhi ? log($2) + eta * log($1) : 1/0) nooutput
+  B_eta = exp(STATS_mean)
+}
 # x^-theta is the scaling regime x << 1: drawn (and its prefactor taken) below x = 0.1
 th_hi = (xlo / 3 < 0.1 ? xlo / 3 : 0.1)
 stats collapse using ($1 < th_hi ? log($2) + theta * log($1) : 1/0) nooutput
 B_theta = exp(STATS_mean)
+if (!has_eta) set label 1 sprintf("no {/Symbol h}: fewer than 3 scaled points in x = %s", ew) at graph 0.97, graph 0.95 right
 plot for [i = 0 : n - 1] collapse index i using 1:2 with linespoints ls (i + 1) pi 6 title sprintf("L = %d", Lof(i + 1)), \
      [x_min:th_hi] B_theta * x**(-theta) with lines lw 3 lc rgb "black" \
        title sprintf("x^{-{/Symbol q}}, {/Symbol q} = %.3f ± %.3f, z = %.2f ± %.2f", theta, theta_err, z, z_err), \
-     [xlo:xhi] B_eta * x**(-eta) with lines lw 3 dt 2 lc rgb "black" title sprintf("x^{-{/Symbol h}}, {/Symbol h} = %.2f ± %.2f", eta, eta_err)
+     [xlo:xhi] B_eta * x**(-eta) with lines lw 3 dt 2 lc rgb "black" \
+       title (has_eta ? sprintf("x^{-{/Symbol h}}, {/Symbol h} = %.2f ± %.2f", eta, eta_err) : "")
+unset label 1
 
 # (c) collapse with the paper's exponents
 set key bottom left noreverse Right
