@@ -30,10 +30,11 @@ at_time() {
 }
 calc() { awk "BEGIN { printf \"%.6g\", $1 }"; }
 short() { awk "BEGIN { printf \"%.3g\", $1 }"; }
-# x = t / L^(5/2) and whether it is before the finite-size crossover (x < 0.1)
+# x = t / L^(5/2) and whether it is before the finite-size crossover (x <= 0.1,
+# to the 3 digits shown: a window chosen to end at x = 0.1 is inside)
 before_crossover() {  # t L what
   x=$(short "$1 / ($2 ^ 2.5)")
-  if awk "BEGIN { exit !($x < 0.1) }"; then echo yes
+  if awk "BEGIN { exit !($x <= 0.1) }"; then echo yes
   else echo "no: $3 at t = $(short "$1") has x = t/L^(5/2) = $x > 0.1 in L = $2 (finite-size regime)"; fi
 }
 # Local slope -d ln E / d ln t of an E(t) table over the quarter decade from t.
