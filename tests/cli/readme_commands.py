@@ -24,7 +24,7 @@ SKIPPED = {
     "make -C pipelines/demo -j2": "the demo pipeline: about 30 minutes (the recipes run at SCALE=tiny in tests/cli/pipeline_test.cc)",
     "make -C pipelines/demo reanalyze": "needs an archive of demo runs; tests/cli/pipeline_test.cc runs reanalyze from the tiny runs",
     "make -C pipelines/paper -j": "the paper scale: hundreds of core-hours on a cluster (srun)",
-    "make -C pipelines/workstation -j": "the workstation scale: about 3 core-hours (its plan is run: make -C pipelines/workstation estimate)",
+    "make -C pipelines/workstation -j": "the workstation scale: 1.7 core-hours, an hour on 2 cores (its plan is run: make -C pipelines/workstation estimate)",
     "sbatch pipelines/cluster/paper.sbatch": "needs a Slurm cluster (its shell is checked with sh -n below)",
     "sbatch --ntasks=2": "needs a Slurm cluster (its shell is checked with sh -n below)",
     "make -C pipelines/accuracy": "about 10 minutes of simulation (QUICK=1: under a minute); its recipes are plain coolgas commands tested elsewhere",
