@@ -248,6 +248,23 @@ void release_reserve(const Handle& file) {
 
 void flush(const Handle& file) { check_status(H5Fflush(file.id(), H5F_SCOPE_GLOBAL), "flush"); }
 
+void extend_allocation_past_file_end(const Handle& file, hsize_t margin) {
+  check_status(H5Fincrement_filesize(file.id(), margin), "extend the allocation to the file's end");
+}
+
+hsize_t chunk_bytes(hid_t dataset) {
+  Handle plist(check(H5Dget_create_plist(dataset), "dataset creation properties"));
+  if (H5Pget_layout(plist.id()) != H5D_CHUNKED) return 0;
+  Handle space(check(H5Dget_space(dataset), "dataspace"));
+  const int rank = H5Sget_simple_extent_ndims(space.id());
+  std::vector<hsize_t> dims(rank > 0 ? std::size_t(rank) : 1);
+  check_status(H5Pget_chunk(plist.id(), rank, dims.data()), "chunk dimensions");
+  Handle type(check(H5Dget_type(dataset), "datatype"));
+  hsize_t bytes = H5Tget_size(type.id());
+  for (int i = 0; i < rank; ++i) bytes *= dims[std::size_t(i)];
+  return bytes;
+}
+
 bool exists(hid_t loc, const std::string& path) {
   std::size_t pos = 0;
   while (true) {

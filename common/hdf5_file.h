@@ -58,6 +58,13 @@ void silence_library_errors();
 enum class Mode { kCreateExclusive, kCreateTruncate, kReadOnly, kReadWrite };
 Handle open_file(const std::string& path, Mode mode);
 void flush(const Handle& file);
+// A writer killed in the middle of a write can leave the file's recorded end
+// of allocation (EOA) short of chunks its index already lists; HDF5 then
+// fails when it frees them (shrinking the dataset) or closes the file. Sets
+// the EOA to the file's size plus `margin` bytes, as `h5clear -i` does.
+void extend_allocation_past_file_end(const Handle& file, hsize_t margin);
+// The bytes of one chunk of a chunked dataset, uncompressed; 0 if not chunked.
+hsize_t chunk_bytes(hid_t dataset);
 // Starts single-writer/multiple-reader writing: from here on the file is
 // consistent on disk at every moment, readers may open it, and no object
 // may be created or attribute written. Returns false, doing nothing, for a

@@ -1,5 +1,6 @@
 #include "common/trajectory/h5md_writer.h"
 
+#include <algorithm>
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
@@ -61,6 +62,16 @@ void write_metadata(hid_t file) {
   h5::Handle box = h5::open_group(file, std::string(kBox));
   h5::write_attr(box.id(), "dimension", std::int64_t{3});
   h5::write_attr(box.id(), "boundary", std::vector<std::string>{"periodic", "periodic", "periodic"});
+}
+
+// The largest chunk of the per-particle series, in bytes, uncompressed (a
+// deflated chunk is no larger, give or take its header).
+hsize_t largest_frame_chunk(hid_t file, Layout layout) {
+  hsize_t most = 0;
+  for (const schema::ElementSpec& e : schema::h5md_profile().elements)
+    if (in_layout(e, layout) && e.rows == schema::RowCount::kFrames)
+      most = std::max(most, h5::chunk_bytes(h5::open_dataset(file, value_of(e.path)).id()));
+  return most;
 }
 
 void truncate_element(hid_t file, std::string_view element, hsize_t rows) {
@@ -133,7 +144,13 @@ H5mdWriter H5mdWriter::reopen(const std::string& path) {
   w.n_ = p.N;
   w.box_ = p.L;
   w.layout_ = layout_of(f);
-  w.writing([&] { w.drop_interrupted_burst(); });
+  w.writing([&] {
+    // A writer killed while it wrote a frame leaves chunks past the recorded
+    // end of allocation; dropping them (below) would fail, or the file's close
+    // would. One chunk more than the file's size covers any half-written one.
+    h5::extend_allocation_past_file_end(w.file_, largest_frame_chunk(f, w.layout_) + (hsize_t{1} << 16));
+    w.drop_interrupted_burst();
+  });
   return w;
 }
 

@@ -8,7 +8,10 @@
 // writes the buffered observables and the frame, flushes, and only then
 // appends the frame's /restart row and flushes again. A /restart row thus
 // marks a frame complete; a process killed at any moment leaves every
-// earlier frame readable and the file resumable (reopen()).
+// earlier frame readable and the file resumable (reopen()). A kill in the
+// middle of a frame can leave chunks past the end of allocation the file
+// records; reopen() first moves that end past the file's size (as
+// `h5clear -i` does), else dropping the half-written rows failed on close.
 //
 // Write errors. Each burst first reserves the disk space it needs, so a
 // full disk, a quota or a file-size limit fails before HDF5 writes anything;
