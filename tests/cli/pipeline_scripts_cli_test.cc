@@ -7,7 +7,6 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 #include "common/trajectory/resume_frame.h"
@@ -18,6 +17,7 @@
 namespace coolgas {
 namespace {
 
+using test::read_text;
 using test::run_command;
 using test::source;
 
@@ -100,13 +100,6 @@ TEST(H5Last, AMissingFileOrDatasetIsOneErrorLine) {
   const std::string scene = test::write_file(dir, "run.toml", "[system]\nL = 6\nphi = 0.208\nseed = 1\n[run]\nt_end = 1\n");
   ASSERT_EQ(run_command(test::simulate(scene + " -o " + dir + "/run.h5")).exit_code, 0);
   test::expect_one_error_line(run_command(script + dir + "/run.h5 /observables/no_such"), "/observables/no_such");
-}
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 TEST(ReadmeTable, ReplacesOnlyTheNamedBlock) {

@@ -12,14 +12,12 @@
 
 namespace coolgas::test {
 
-namespace {
-std::string slurp(const std::string& path) {
+std::string read_text(const std::string& path) {
   std::ifstream f(path);
   std::stringstream ss;
   ss << f.rdbuf();
   return ss.str();
 }
-}  // namespace
 
 CommandResult run_command(const std::string& command) {
   static int counter = 0;
@@ -31,8 +29,8 @@ CommandResult run_command(const std::string& command) {
   CommandResult r;
   if (WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
   else if (WIFSIGNALED(status)) r.exit_code = 128 + WTERMSIG(status);
-  r.out = slurp(base + ".out");
-  r.err = slurp(base + ".err");
+  r.out = read_text(base + ".out");
+  r.err = read_text(base + ".err");
   std::filesystem::remove(base + ".out");
   std::filesystem::remove(base + ".err");
   return r;

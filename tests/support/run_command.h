@@ -21,6 +21,9 @@ std::string source(const std::string& relative);
 // (test-scratch/<name>/<Suite.Test>).
 std::string scratch_dir(const std::string& name);
 
+// The whole text of a file ("" if it cannot be read).
+std::string read_text(const std::string& path);
+
 // Number of lines in s (a final line without newline counts).
 int line_count(const std::string& s);
 
