@@ -37,6 +37,24 @@ bool is_png(const std::string& path) {
   return f.gcount() == 8 && std::string(magic + 1, 3) == "PNG";
 }
 
+// The data rows of a TSV table (string cells), after its column line, which
+// goes into *columns when asked for.
+std::vector<std::vector<std::string>> tsv_rows(const std::string& path, std::string* columns = nullptr) {
+  std::ifstream in(path);
+  std::vector<std::vector<std::string>> rows;
+  std::string line;
+  std::getline(in, line);
+  if (columns) *columns = line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::vector<std::string> cells;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, '\t');) cells.push_back(cell);
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
 // The exponent table (pipelines/exponents.sh): one row per quantity,
 // "quantity figure measured error paper paper_error deviation regime".
 struct Judged {
@@ -44,17 +62,12 @@ struct Judged {
   std::string regime;
 };
 std::map<std::string, Judged> read_exponents(const std::string& path) {
-  std::ifstream in(path);
   std::map<std::string, Judged> rows;
-  std::string line;
-  std::getline(in, line);  // the column line (data-schema/tsv-tables.md)
-  EXPECT_EQ(line.substr(0, 16), "quantity\tfigure\t");
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::vector<std::string> cells;
-    std::stringstream ss(line);
-    for (std::string cell; std::getline(ss, cell, '\t');) cells.push_back(cell);
-    EXPECT_EQ(cells.size(), 8u) << line;
+  std::string columns;  // the column line (data-schema/tsv-tables.md)
+  const auto cells_of_rows = tsv_rows(path, &columns);
+  EXPECT_EQ(columns.substr(0, 16), "quantity\tfigure\t");
+  for (const auto& cells : cells_of_rows) {
+    EXPECT_EQ(cells.size(), 8u) << cells.at(0);
     if (cells.size() != 8) continue;
     const auto number = [](const std::string& c) { return c == "-" ? NAN : std::stod(c); };
     rows[cells[0]] = {number(cells[2]), number(cells[3]), cells[7]};
@@ -183,22 +196,6 @@ TEST(Pipeline, TinyPipelineRunsEndToEndAndIsIncremental) {
   EXPECT_FALSE(fs::exists(again + "/runs"));
   const auto re_exponents = read_exponents(again + "/exponents.tsv");
   EXPECT_DOUBLE_EQ(re_exponents.lower_bound("theta, collapse")->second.measured, value("theta, collapse"));
-}
-
-// The data rows of a TSV table (string cells), after its column line.
-std::vector<std::vector<std::string>> tsv_rows(const std::string& path) {
-  std::ifstream in(path);
-  std::vector<std::vector<std::string>> rows;
-  std::string line;
-  std::getline(in, line);
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::vector<std::string> cells;
-    std::stringstream ss(line);
-    for (std::string cell; std::getline(ss, cell, '\t');) cells.push_back(cell);
-    rows.push_back(cells);
-  }
-  return rows;
 }
 
 TEST(AccuracyPipeline, CollapseOfRunsCutAtTheirEndIsTheCollapseOfTheWholeRuns) {
