@@ -38,7 +38,8 @@ int main(int argc, char** argv) {
                                       "use only rows with TMIN <= t <= TMAX [1/omega0], as TMIN:TMAX. --optimize\n"
                                       "without it: t from where every table is past Haff's law (falls as t^-1, or\n"
                                       "back to t^-3/2 if it fell faster); stderr says which");
-    app.add_option("--eta-window", eta_window, "fit f(x) ~ x^-eta over XMIN <= x <= XMAX, as XMIN:XMAX");
+    app.add_option("--eta-window", eta_window, "fit f(x) ~ x^-eta over XMIN <= x <= XMAX, as XMIN:XMAX\n"
+                   "(eta = nan, with a note, if fewer than 3 scaled points lie there)");
     app.add_option("--weights", weights,
                    "none: every point counts alike in Q; seeds (two or more tables per L): each squared\n"
                    "difference over the variance of ln E among that L's runs there, so Q is a chi^2 per point and\n"
