@@ -26,9 +26,12 @@ namespace coolgas {
 
 class CentreGrid {
  public:
-  // Cells of side L / n >= one diameter (a hair more, so that round-off in a
-  // position never hides a touching pair two cells apart).
-  explicit CentreGrid(double L);
+  // Cells of side L / n >= min_width >= one diameter (a hair more, so that
+  // round-off in a position never hides a touching pair two cells apart),
+  // and at least 3 per side where one-diameter cells allow it. Wider cells
+  // (a dilute gas: about one centre per cell) keep the grid's memory near
+  // the centres' own instead of L^3 cells; every answer stays the same.
+  explicit CentreGrid(double L, double min_width = 1.0);
 
   int cells_per_side() const { return n_; }
   double width() const { return w_; }
@@ -109,13 +112,14 @@ class CentreGrid {
             if ((x != 1) + (y != 1) + (z != 1) == differing) o[k++] = {x, y, z};
     return o;
   }();
-  // Squared distances farther than this from 1 are settled in single
-  // precision (its round-off here stays below 7e-6).
+  // Squared distances farther than this from 1, times the cell width, are
+  // settled in single precision (its round-off grows with the offsets, which
+  // are below 3 widths: under 7e-6 for cells one diameter wide).
   static constexpr float kUnsure = 4e-5f;
 
   int n_;
   double w_;
-  float wf_;
+  float wf_, unsure_;
   std::vector<std::uint64_t> occupied_;  // a bit per cell: it holds a centre
   std::vector<std::uint64_t> chained_;   // a bit per cell: it holds more than one
   std::vector<Slot> first_;              // each cell's first centre
@@ -123,7 +127,11 @@ class CentreGrid {
   std::vector<Link> more_;
 };
 
-inline CentreGrid::CentreGrid(double L) : n_(int(std::floor(L / (1.0 + 1e-9)))), w_(L / n_), wf_(float(w_)) {
+inline CentreGrid::CentreGrid(double L, double min_width)
+    : n_(std::max(std::min(int(std::floor(L / (1.0 + 1e-9))), 3), int(std::floor(L / (std::max(1.0, min_width) * (1.0 + 1e-9)))))),
+      w_(L / n_),
+      wf_(float(w_)),
+      unsure_(kUnsure * float(w_)) {
   const std::size_t cells = std::size_t(n_) * std::size_t(n_) * std::size_t(n_);
   occupied_.assign(cells / 64 + 1, 0);
   chained_.assign(cells / 64 + 1, 0);
@@ -172,8 +180,8 @@ bool CentreGrid::any_within_one(const Vec3& x, Exact&& exact) const {
     const bool hit = any_in(c, [&](const Slot& s) {
       const float dx = s.x + ox - px, dy = s.y + oy - py, dz = s.z + oz - pz;
       const float d2 = dx * dx + dy * dy + dz * dz;
-      if (d2 < 1.0f - kUnsure) return true;
-      return d2 <= 1.0f + kUnsure && exact(s.id);
+      if (d2 < 1.0f - unsure_) return true;
+      return d2 <= 1.0f + unsure_ && exact(s.id);
     });
     if (hit) return true;
   }

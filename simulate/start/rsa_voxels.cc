@@ -31,6 +31,17 @@ constexpr double kMaxTrialsPerSphere = 2000;
 constexpr double kUnsure = 1e-5;
 // How many plain trials ahead the cells to search are fetched.
 constexpr int kLookahead = 16;
+// Below this target density the plain trials place every sphere (their
+// success rate, the free volume fraction, stays far above the switch's 2 %),
+// so the centres' grid needs no cells one diameter wide: cells of the mean
+// spacing hold about one centre each. At phi = 0.005 and N = 8e6 (L = 943)
+// one-diameter cells would be 8.4e8, 17 GB.
+constexpr double kWideCellsBelowPhi = 0.1;
+
+double centre_cell_width(double L, std::int64_t N) {
+  const double volume = L * L * L;
+  return N > 0 && double(N) * M_PI / (6.0 * volume) < kWideCellsBelowPhi ? std::cbrt(volume / double(N)) : 1.0;
+}
 
 // The grid needs three cells of one diameter along each side of the box.
 double checked_side(double L) {
@@ -41,8 +52,9 @@ double checked_side(double L) {
 
 class Placer {
  public:
-  Placer(Particles& p, InterruptFlag interrupt, PlacementReport report = {})
-      : p_(p), grid_(checked_side(p.L)), L_(p.L), half_(p.L / 2), top_(std::nextafter(p.L, 0.0)),
+  // N: the spheres to be placed (it sets the grid's cell width).
+  Placer(Particles& p, std::int64_t N, InterruptFlag interrupt, PlacementReport report = {})
+      : p_(p), grid_(checked_side(p.L), centre_cell_width(p.L, N)), L_(p.L), half_(p.L / 2), top_(std::nextafter(p.L, 0.0)),
         interrupt_(interrupt), report_(std::move(report)) {}
 
   // Places spheres 0, 1, ... up to N; returns how many fit (N unless no room
@@ -98,7 +110,14 @@ class Placer {
 
 std::int64_t Placer::fill(std::int64_t N, Random& rng) {
   const std::int64_t i = plain_phase(N, rng);
-  return i == N ? N : voxel_phase(i, N, rng);
+  if (i == N) return N;
+  // The voxels are cut from one-diameter cells; a grid of wider cells (not
+  // expected to get here) is filed again.
+  if (grid_.width() > 1.5) {
+    grid_ = CentreGrid(L_);
+    for (std::int64_t k = 0; k < i; ++k) grid_.insert(p_.r[std::size_t(k)], std::int32_t(k));
+  }
+  return voxel_phase(i, N, rng);
 }
 
 // Uniform trials over the box, rejected if overlapping, while they mostly
@@ -209,7 +228,7 @@ void Placer::cover_around(FreeVoxels& voxels, const Vec3& x) const {
 
 void place_random_sequential(Particles& p, std::int64_t N, Random& rng, InterruptFlag interrupt,
                              const PlacementReport& report) {
-  Placer placer(p, interrupt, report);
+  Placer placer(p, N, interrupt, report);
   const std::int64_t placed = placer.fill(N, rng);
   if (placed < N) saturated(p.L, placed, N);
 }
@@ -219,7 +238,7 @@ std::int64_t saturate_random_sequential(double L, Random& rng) {
   p.L = L;
   // More than fit: unit spheres pack at most sqrt(2) per unit volume.
   p.r.resize(std::size_t(std::sqrt(2.0) * L * L * L) + 1);
-  Placer placer(p, nullptr);
+  Placer placer(p, 0, nullptr);
   return placer.fill(std::int64_t(p.r.size()), rng);
 }
 

@@ -212,6 +212,52 @@ TEST(RandomPlacement, VoxelTrialsAreUniformOverTheSpaceLeft) {
 
 // RSA saturates near phi = 0.384; 2000 spheres at 0.39 lie far beyond the
 // spread of the saturation density at that size.
+// The centres' grid answers "is a centre nearer than one diameter?" exactly
+// as the all-centres test in double precision, whatever the width of its
+// cells: one diameter (dense placements) or the mean spacing of a dilute
+// gas (rsa_voxels.cc), where single-precision offsets are larger. 400
+// centres in a box of side 24 (phi = 0.016, mean spacing 3.3); half of the
+// 20000 query points lie at 1 +- 1e-9 .. 1e-3 from a centre, in every
+// direction, so the band settled on exact positions is crossed often (and
+// single precision alone gets some of them wrong).
+TEST(CentreGrid, WideCellsGiveTheExactAnswersOfOneDiameterCells) {
+  constexpr double L = 24;
+  Random rng(11);
+  std::vector<Vec3> r(400);
+  for (Vec3& c : r) c = {L * rng.uniform(), L * rng.uniform(), L * rng.uniform()};
+  CentreGrid fine(L), wide(L, 3.3);
+  ASSERT_EQ(fine.cells_per_side(), 23);
+  ASSERT_EQ(wide.cells_per_side(), 7);
+  for (std::size_t i = 0; i < r.size(); ++i) fine.insert(r[i], std::int32_t(i)), wide.insert(r[i], std::int32_t(i));
+  const auto image = [&](double d) { return d > L / 2 ? d - L : (d < -L / 2 ? d + L : d); };
+  const auto near = [&](const Vec3& a, const Vec3& x) {
+    const double dx = image(a.x - x.x), dy = image(a.y - x.y), dz = image(a.z - x.z);
+    return dx * dx + dy * dy + dz * dz < 1.0;
+  };
+  int hits = 0, disagreements = 0;
+  for (int q = 0; q < 20000; ++q) {
+    Vec3 x{L * rng.uniform(), L * rng.uniform(), L * rng.uniform()};
+    if (q % 2) {  // near the surface of a centre's exclusion sphere
+      const Vec3& c = r[std::size_t(rng.below(r.size()))];
+      const double u = 2 * rng.uniform() - 1, phi = 2 * M_PI * rng.uniform(), s = std::sqrt(1 - u * u);
+      const double d = 1 + (rng.uniform() < 0.5 ? -1 : 1) * std::pow(10.0, -9 + 6 * rng.uniform());
+      x = {c.x + d * s * std::cos(phi), c.y + d * s * std::sin(phi), c.z + d * u};
+      for (int k = 0; k < 3; ++k) x[k] = x[k] < 0 ? x[k] + L : (x[k] >= L ? x[k] - L : x[k]);
+    }
+    const bool truth = std::any_of(r.begin(), r.end(), [&](const Vec3& c) { return near(c, x); });
+    const auto exact = [&](std::int32_t id) { return near(r[std::size_t(id)], x); };
+    hits += truth;
+    disagreements += fine.any_within_one(x, exact) != truth;
+    disagreements += wide.any_within_one(x, exact) != truth;
+  }
+  EXPECT_EQ(disagreements, 0);
+  EXPECT_GT(hits, 5000);  // both answers occur often
+  EXPECT_LT(hits, 15000);
+}
+
+// A dilute placement (wide cells) is a valid packing at the density asked.
+TEST(RandomPlacement, NoOverlapAtPhi002) { expect_valid_packing(0.02); }
+
 TEST(RandomPlacement, BeyondSaturationIsAnInputErrorPointingToFcc) {
   try {
     initial_state(positions_only(2000, 0.39, 3));
