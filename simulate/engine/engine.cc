@@ -27,6 +27,18 @@ constexpr double kStallGap = 1e-11;
 // 200 keeps long runs sorted for a tenth of that.
 constexpr std::int64_t kCollisionsPerParticlePerRebuild = 200;
 
+// Cells one diameter wide, except in a dilute gas: there they would number
+// L^3 = pi N / (6 phi), 105 per particle at phi = 0.005 (3.3 GB of cell heads
+// for N = 8e6), and a particle would cross ~20 of them between collisions.
+// At most this many cells per particle (so phi >= 0.033 keeps one-diameter
+// cells, and with them its runs bit for bit).
+constexpr double kMostCellsPerParticle = 16;
+
+double cell_width(double L, std::size_t n) {
+  const double dilute = std::cbrt(L * L * L / (kMostCellsPerParticle * double(std::max<std::size_t>(n, 1))));
+  return std::max(1.0, std::min(dilute, L / 3.0 / (1.0 + 1e-6)));  // three cells per side, with CellGrid's margin
+}
+
 std::int64_t collisions_between_rebuilds(std::size_t n) {
   const auto half = std::int64_t(std::max<std::size_t>(n, 2) / 2);  // two particles per collision
   return kCollisionsPerParticlePerRebuild > std::numeric_limits<std::int64_t>::max() / half
@@ -37,7 +49,11 @@ std::int64_t collisions_between_rebuilds(std::size_t n) {
 
 template <class Rule>
 Engine<Rule>::Engine(Particles particles, const Rule& rule, double now, const EngineCounters& counters)
-    : L_(particles.L), rule_(rule), grid_(particles.L, 1.0, particles.size()), now_(now), c_(counters) {
+    : L_(particles.L),
+      rule_(rule),
+      grid_(particles.L, cell_width(particles.L, particles.size()), particles.size()),
+      now_(now),
+      c_(counters) {
   const std::size_t n = particles.size();
   m_.resize(n);
   for (std::size_t i = 0; i < n; ++i) m_[i] = {particles.r[i], particles.v[i], particles.t[i], 0, -1};
@@ -69,7 +85,7 @@ Engine<Rule>::Engine(const Rule& rule, const StateReader& in) : rule_(rule) {
   if (n == 0 || image_.size() != n || id_.size() != n || later_.size() != n ||
       stall_.size() != (Rule::kDissipative ? n : 0))
     in.fail("the engine's arrays differ in length");
-  grid_ = CellGrid(L_, 1.0, n);
+  grid_ = CellGrid(L_, cell_width(L_, n), n);
   grid_.bind_next_links(&m_[0].next, sizeof(Motion) / sizeof(std::int32_t));
   grid_.load(in, "engine/grid/");
   calendar_.load(in, "engine/calendar/");

@@ -128,7 +128,8 @@ class CentreGrid {
 };
 
 inline CentreGrid::CentreGrid(double L, double min_width)
-    : n_(std::max(std::min(int(std::floor(L / (1.0 + 1e-9))), 3), int(std::floor(L / (std::max(1.0, min_width) * (1.0 + 1e-9)))))),
+    : n_(std::max(std::min(int(std::floor(L / (1.0 + 1e-9))), 3),
+                  int(std::floor(L / (std::max(1.0, min_width) * (1.0 + 1e-9)))))),
       w_(L / n_),
       wf_(float(w_)),
       unsure_(kUnsure * float(w_)) {

@@ -40,7 +40,8 @@ constexpr double kWideCellsBelowPhi = 0.1;
 
 double centre_cell_width(double L, std::int64_t N) {
   const double volume = L * L * L;
-  return N > 0 && double(N) * M_PI / (6.0 * volume) < kWideCellsBelowPhi ? std::cbrt(volume / double(N)) : 1.0;
+  const bool dilute = N > 0 && double(N) * M_PI / (6.0 * volume) < kWideCellsBelowPhi;
+  return dilute ? std::cbrt(volume / double(N)) : 1.0;
 }
 
 // The grid needs three cells of one diameter along each side of the box.
