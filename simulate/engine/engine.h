@@ -4,8 +4,8 @@
 // Techniques (as in the fastest event-driven codes):
 //   - cell grid (cell_grid.h): a particle looks for partners in 27 cells;
 //     crossing into a new cell is an event of its own; cells are one
-//     diameter wide, wider only in a dilute gas (phi < 0.033: at most 16
-//     cells per particle, engine.cc);
+//     diameter wide, except in a dilute gas (phi < 0.033), where they are
+//     one mean spacing wide (engine.cc);
 //   - one scheduled event per particle, the earliest of its predicted
 //     collisions and its next cell crossing (the earliest collision is kept
 //     too, so a crossing searches only the 9 new neighbour cells); events are
