@@ -55,8 +55,13 @@ class Placer {
  public:
   // N: the spheres to be placed (it sets the grid's cell width).
   Placer(Particles& p, std::int64_t N, InterruptFlag interrupt, PlacementReport report = {})
-      : p_(p), grid_(checked_side(p.L), centre_cell_width(p.L, N)), L_(p.L), half_(p.L / 2), top_(std::nextafter(p.L, 0.0)),
-        interrupt_(interrupt), report_(std::move(report)) {}
+      : p_(p),
+        grid_(checked_side(p.L), centre_cell_width(p.L, N)),
+        L_(p.L),
+        half_(p.L / 2),
+        top_(std::nextafter(p.L, 0.0)),
+        interrupt_(interrupt),
+        report_(std::move(report)) {}
 
   // Places spheres 0, 1, ... up to N; returns how many fit (N unless no room
   // is left before, or the trial budget runs out).
@@ -113,7 +118,8 @@ std::int64_t Placer::fill(std::int64_t N, Random& rng) {
   const std::int64_t i = plain_phase(N, rng);
   if (i == N) return N;
   // The voxels are cut from one-diameter cells; a grid of wider cells (not
-  // expected to get here) is filed again.
+  // expected to get here) is filed again. One-diameter cells are at most 4/3
+  // wide (L >= 3), the dilute ones at least (pi / (6 * 0.1))^(1/3) = 1.74.
   if (grid_.width() > 1.5) {
     grid_ = CentreGrid(L_);
     for (std::int64_t k = 0; k < i; ++k) grid_.insert(p_.r[std::size_t(k)], std::int32_t(k));

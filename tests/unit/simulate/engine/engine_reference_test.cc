@@ -42,8 +42,9 @@ struct DenseElastic : RuleCase<ElasticRule> {
 };
 // phi = 0.02: one-diameter cells would be 24 per particle, so the engine's
 // cells are one mean spacing wide (cell_width, engine.cc: 10 per side of
-// L = 29.7, 2.97 wide). The box is large enough that free flights (mean 5.9) stay well
-// below L/2, as the reference's minimum-image predictions need.
+// L = 29.7, 2.97 wide). The box is large enough that free flights (mean
+// 5.9) stay well below L/2, as the reference's minimum-image predictions
+// need.
 struct DiluteElastic : RuleCase<ElasticRule> {
   static Scene scene() { return test::elastic_scene(1000, 0.02, 8); }
   static ElasticRule rule() { return {}; }

@@ -210,8 +210,6 @@ TEST(RandomPlacement, VoxelTrialsAreUniformOverTheSpaceLeft) {
   EXPECT_LT(chi_square(voxels.by_depth, plain.by_depth), 44.6);
 }
 
-// RSA saturates near phi = 0.384; 2000 spheres at 0.39 lie far beyond the
-// spread of the saturation density at that size.
 // The centres' grid answers "is a centre nearer than one diameter?" exactly
 // as the all-centres test in double precision, whatever the width of its
 // cells: one diameter (dense placements) or the mean spacing of a dilute
@@ -258,6 +256,8 @@ TEST(CentreGrid, WideCellsGiveTheExactAnswersOfOneDiameterCells) {
 // A dilute placement (wide cells) is a valid packing at the density asked.
 TEST(RandomPlacement, NoOverlapAtPhi002) { expect_valid_packing(0.02); }
 
+// RSA saturates near phi = 0.384; 2000 spheres at 0.39 lie far beyond the
+// spread of the saturation density at that size.
 TEST(RandomPlacement, BeyondSaturationIsAnInputErrorPointingToFcc) {
   try {
     initial_state(positions_only(2000, 0.39, 3));
