@@ -22,6 +22,16 @@ std::string read_text(const std::string& path) {
 CommandResult run_command(const std::string& command) {
   static int counter = 0;
   const auto dir = std::filesystem::temp_directory_path() / ("coolgas-test-" + std::to_string(::getpid()));
+  // Every test process made one of these and left it behind, empty; the
+  // guard removes it when the process ends (a killed test may still leave it).
+  struct RemoveAtExit {
+    std::filesystem::path dir;
+    ~RemoveAtExit() {
+      std::error_code ignored;
+      std::filesystem::remove_all(dir, ignored);
+    }
+  };
+  static const RemoveAtExit guard{dir};
   std::filesystem::create_directories(dir);
   const std::string base = (dir / std::to_string(counter++)).string();
   const std::string full = "(" + command + ") >" + base + ".out 2>" + base + ".err";
