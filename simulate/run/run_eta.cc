@@ -16,7 +16,15 @@ namespace {
 // 2 L^(5/2): 0.29-33; dilute gases, whose exponent falls for decades, were
 // the worst). Whole runs: tests/bench/eta_check.py.
 constexpr double kFitWindow = 3;  // the exponent is fitted over t/3 .. t (and t/9 .. t/3 for its trend)
-constexpr double kFloor = 0.25;   // a falling exponent stops falling here
+constexpr double kFloor = 0.25;   // a falling exponent stops falling here (beyond the knee)
+// Before the knee the exponent is taken as at least 1 - theta/2 = 0.4, that
+// of the clustering regime (E ~ t^-6/5, theta = 6/5, the paper's exponent;
+// the rate per particle ~ sqrt(E)): every cooling gas goes through it on its
+// way to the finite-size regime. Without it, an exponent measured low in the
+// homogeneous phase (C ~ ln t under Haff's law) or while the clusters form
+// was carried on, and runs were under-estimated to 0.18 of their collisions
+// (the demo's runs, tests/bench/README.md "ETA").
+constexpr double kClustering = 0.4;
 constexpr double kKnee = 0.5;     // the finite-size regime, from t = kKnee L^(5/2) on,
 constexpr double kTail = 0.2;     // where C grows as t^0.2 at most
 constexpr double kLogSpacing = 1.01;
@@ -81,12 +89,15 @@ double RunEta::expected_collisions(double t_end) const {
   if (now.t >= t_end) return now.collisions;
   const double t = now.t, w = kFitWindow;
   if (!(samples_.front().t <= t / w)) return NAN;  // not yet a whole fit window
-  const double a = exponent(t / w, t);
-  if (!std::isfinite(a)) return NAN;
+  const double measured = exponent(t / w, t);
+  if (!std::isfinite(measured)) return NAN;
   const double before = exponent(t / (w * w), t / w);
-  const double trend = std::isfinite(before) ? (a - before) / std::log(w) : 0;
+  const double trend = std::isfinite(before) ? (measured - before) / std::log(w) : 0;
   const double knee = kKnee * std::pow(L_, 2.5);
-  return std::min(most_, now.collisions * std::exp(log_growth(t, t_end, a, trend, kFloor, knee, kTail)));
+  const bool clustering_ahead = t < knee;
+  const double a = clustering_ahead ? std::max(measured, kClustering) : measured;
+  const double floor = clustering_ahead ? kClustering : kFloor;
+  return std::min(most_, now.collisions * std::exp(log_growth(t, t_end, a, trend, floor, knee, kTail)));
 }
 
 double RunEta::seconds_left(double t_end) const {

@@ -9,7 +9,8 @@
 // to below 0.1 deep in the finite-size regime (Pathak et al. 2014); dilute
 // gases fall for decades. So a is fitted over the last factor 3 of t, and
 // again over the factor before: a falling exponent goes on falling at that
-// pace (in ln t), down to 0.25; beyond t = 0.5 L^(5/2) it is at most 0.2
+// pace (in ln t), down to 0.25; before t = 0.5 L^(5/2) it is at least 0.4,
+// that of the clustering regime, and beyond it at most 0.2
 // (the constants and how they were chosen: run_eta.cc). A run that has not
 // yet covered a factor 3 of t is not extrapolated.
 //

@@ -41,6 +41,21 @@ TEST(RunEta, BeyondTheFiniteSizeKneeCollisionsGrowAsTheTailSays) {
   EXPECT_NEAR(eta.expected_collisions(1e4), expected, 1e-9 * expected);
 }
 
+// C = 1000 t^0.2 before the knee: the gas has not yet been through the
+// clustering regime, where C grows as t^(1 - theta/2) = t^0.4, so the
+// extrapolation takes 0.4. Beyond the knee the measured 0.2 is carried on.
+TEST(RunEta, BeforeTheKneeCollisionsGrowAtLeastAsInTheClusteringRegime) {
+  RunEta ahead(1e6), beyond(2);  // knees at 5e14 and 2.8
+  for (int k = -40; k <= 40; ++k) {
+    const double t = std::pow(10.0, k / 20.0), c = 1000 * std::pow(t, 0.2);
+    ahead.add({t, c, c / kRate});
+    beyond.add({t, c, c / kRate});
+  }
+  const double slow = 1000 * std::pow(1e4, 0.2), clustering = 1000 * std::pow(100.0, 0.2) * std::pow(100.0, 0.4);
+  EXPECT_NEAR(ahead.expected_collisions(1e4), clustering, 1e-9 * clustering);
+  EXPECT_NEAR(beyond.expected_collisions(1e4), slow, 1e-9 * slow);
+}
+
 // Ballistic aggregation: at most N - 1 merges, whatever the extrapolation says.
 TEST(RunEta, NoMoreCollisionsThanTheBoundAllows) {
   RunEta eta(1e6, 3e4);
