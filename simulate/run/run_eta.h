@@ -2,20 +2,20 @@
 // collisions still expected, divided by the recent collision rate (per
 // second spent in the engine: dump and checkpoint I/O excluded).
 //
-// The collisions still expected come from the run so far. The cumulative
-// collisions C(t) of a cooling gas follow a power law whose exponent a (the
-// local slope of ln C on ln t) falls from 1 (before the first collisions
-// cool the gas) through ~0.4 (E ~ t^-6/5: the rate per particle ~ sqrt(E))
-// to below 0.1 deep in the finite-size regime (Pathak et al. 2014); dilute
-// gases fall for decades. So a is fitted over the last factor 3 of t, and
-// again over the factor before: a falling exponent goes on falling at that
-// pace (in ln t), down to 0.25; before t = 0.5 L^(5/2) it is at least 0.4,
-// that of the clustering regime, and beyond it at most 0.2
-// (the constants and how they were chosen: run_eta.cc). A run that has not
-// yet covered a factor 3 of t is not extrapolated.
+// The collisions still expected come from the run so far. The local exponent
+// a of the cumulative collisions C(t) (the slope of ln C on ln t, fitted over
+// the last factor 3 of t) is carried on as a homogeneous gas would carry it:
+// under Haff's law C ~ ln(1 + t/tau), so a falls from 1 towards 0 along
+// x/((1 + x) ln(1 + x)), x = t/tau, with tau set by the measured a. Two
+// regimes of the paper's gas bound it (Pathak et al. 2014): before
+// t = 0.5 L^(5/2) the clustering regime, where a stays at least 0.5, and
+// beyond it the finite-size regime, where a is at most 0.25 (the constants
+// and how they were chosen: run_eta.cc). A run that has not yet covered a
+// factor 3 of t is not extrapolated. A gas that does not cool (a >= 1)
+// keeps its exponent; pass L = INFINITY where no finite-size regime comes.
 //
-// Measured with tests/bench/eta_check.py (tests/bench/README.md, "ETA"):
-// after the first tenth of a run, the ETA / the time really left.
+// Measured by replaying finished runs (tests/bench/eta_replay.cc) and live
+// with tests/bench/eta_check.py (tests/bench/README.md, "ETA").
 // tests/unit/simulate/run/run_eta_test.cc checks the rule on closed forms.
 #pragma once
 #include <cmath>
@@ -53,9 +53,9 @@ class RunEta {
   std::vector<RunSample> samples_;
 };
 
-// ln(C(t_end) / C(t)) for a local exponent that starts at a, changes by
-// `trend` per unit of ln t but not below min(floor, a), and is at most
-// `tail` beyond t_knee (the rule of RunEta, in closed form per piece).
-double log_growth(double t, double t_end, double a, double trend, double floor, double t_knee, double tail);
+// ln(C(t_end) / C(t)) for a local exponent that is a at t and then falls
+// as under Haff's law, is at least `clustering` before t_knee and at most
+// `tail` beyond it (the rule of RunEta, in closed form per piece).
+double log_growth(double t, double t_end, double a, double clustering, double t_knee, double tail);
 
 }  // namespace coolgas

@@ -217,7 +217,9 @@ class Driver {
   std::string path_;
   double e0_;
   Progress progress_;
-  RunEta eta_{scene_.L, scene_.model == CollisionModel::kAggregation ? double(scene_.N - 1) : INFINITY};
+  // An elastic gas does not cool, so no finite-size regime slows its collisions.
+  RunEta eta_{scene_.model == CollisionModel::kElastic ? INFINITY : scene_.L,
+              scene_.model == CollisionModel::kAggregation ? double(scene_.N - 1) : INFINITY};
   double busy_seconds_ = 0;  // wall seconds inside the engine (no dumps, no checkpoints)
   double interval_;
   clock::time_point last_checkpoint_;

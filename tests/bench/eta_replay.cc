@@ -73,7 +73,8 @@ int main(int argc, char** argv) {
     }
     ends.push_back(c.time.size() - 1);
     for (std::size_t end : ends) {
-      const Replay r = replay(c, end, info.params.L, most);
+      const double L = info.params.model == "elastic" ? INFINITY : info.params.L;  // as simulate/run/simulation.cc
+      const Replay r = replay(c, end, L, most);
       std::printf("%s\t%.4g\t%s\t%.4g\t%.3f\t%.3g\t%.3f\t%.3g\t", path.c_str(), info.params.L,
                   info.params.model.c_str(), c.time[end], r.lo, r.t_lo, r.hi, r.t_hi);
       for (double d : r.at_decile) std::printf(" %.2f", d);

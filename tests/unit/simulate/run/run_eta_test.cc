@@ -1,7 +1,9 @@
 // The run's ETA (simulate/run/run_eta.h) on synthetic runs whose answer is
-// known in closed form: C(t) = 1000 t^0.4 collisions (the collision rate of
-// a gas with E ~ t^-6/5 falls as sqrt(E) ~ t^-0.6), at 2e5 collisions per
-// busy second; and the extrapolation rule on fixed inputs worked by hand.
+// known in closed form, at 2e5 collisions per busy second, and the
+// extrapolation rule on fixed inputs worked by hand. Haff's law: with
+// E ~ (1 + t/tau)^-2 and a collision rate ~ sqrt(E), C ~ ln(1 + x), x = t/tau,
+// whose local exponent is h(x) = x / ((1 + x) ln(1 + x)) and whose growth
+// from x0 to x1 is ln(ln(1 + x1) / ln(1 + x0)).
 #include "simulate/run/run_eta.h"
 
 #include <gtest/gtest.h>
@@ -12,82 +14,70 @@ namespace coolgas {
 namespace {
 
 constexpr double kRate = 2e5;
-double collisions(double t) { return 1000 * std::pow(t, 0.4); }
+double h(double x) { return x / ((1 + x) * std::log1p(x)); }
+double haff(double x0, double x1) { return std::log(std::log1p(x1) / std::log1p(x0)); }
 
-// Samples at 20 per decade of t, from 0.01 to 100.
-RunEta power_law_run(double L) {
+// Samples at 20 per decade of t, from 0.01 to 100, of C = 1000 t^p.
+RunEta power_law_run(double L, double p) {
   RunEta eta(L);
   for (int k = -40; k <= 40; ++k) {
-    const double t = std::pow(10.0, k / 20.0);
-    eta.add({t, collisions(t), collisions(t) / kRate});
+    const double t = std::pow(10.0, k / 20.0), c = 1000 * std::pow(t, p);
+    eta.add({t, c, c / kRate});
   }
   return eta;
 }
 
-TEST(RunEta, APowerLawOfCollisionsIsExtrapolatedExactly) {
-  const RunEta eta = power_law_run(1e6);  // the finite-size regime (L^(5/2)) far beyond t_end
-  EXPECT_NEAR(eta.exponent(1, 100), 0.4, 1e-12);
+// An elastic gas: C = 1000 t (the collision rate does not change).
+TEST(RunEta, AGasThatDoesNotCoolIsExtrapolatedExactly) {
+  const RunEta eta = power_law_run(INFINITY, 1);
+  EXPECT_NEAR(eta.exponent(1, 100), 1, 1e-12);
   EXPECT_NEAR(eta.collision_rate(), kRate, 1e-9 * kRate);
-  EXPECT_NEAR(eta.expected_collisions(1e4), collisions(1e4), 1e-9 * collisions(1e4));
-  const double left = (collisions(1e4) - collisions(100)) / kRate;
+  EXPECT_NEAR(eta.expected_collisions(1e4), 1e7, 1e-9 * 1e7);
+  const double left = (1e7 - 1e5) / kRate;
   EXPECT_NEAR(eta.seconds_left(1e4), left, 1e-9 * left);
 }
 
-// L = 10: beyond t = 0.5 L^(5/2) = 158.1 the exponent is at most 0.2.
-TEST(RunEta, BeyondTheFiniteSizeKneeCollisionsGrowAsTheTailSays) {
-  const RunEta eta = power_law_run(10);
-  const double knee = 0.5 * std::pow(10.0, 2.5);
-  const double expected = collisions(knee) * std::pow(1e4 / knee, 0.2);
-  EXPECT_NEAR(eta.expected_collisions(1e4), expected, 1e-9 * expected);
+// From t = 10 (x0 = 2, so tau = 5) to 1e4 (x1 = 2000), without floor, knee or tail.
+TEST(RunEta, TheExponentFallsAsUnderHaffsLaw) {
+  EXPECT_NEAR(log_growth(10, 1e4, h(2), 0, INFINITY, 1), haff(2, 2000), 1e-12);
 }
 
-// C = 1000 t^0.2 before the knee: the gas has not yet been through the
-// clustering regime, where C grows as t^(1 - theta/2) = t^0.4, so the
-// extrapolation takes 0.4. Beyond the knee the measured 0.2 is carried on.
-TEST(RunEta, BeforeTheKneeCollisionsGrowAtLeastAsInTheClusteringRegime) {
-  RunEta ahead(1e6), beyond(2);  // knees at 5e14 and 2.8
-  for (int k = -40; k <= 40; ++k) {
-    const double t = std::pow(10.0, k / 20.0), c = 1000 * std::pow(t, 0.2);
-    ahead.add({t, c, c / kRate});
-    beyond.add({t, c, c / kRate});
-  }
-  const double slow = 1000 * std::pow(1e4, 0.2), clustering = 1000 * std::pow(100.0, 0.2) * std::pow(100.0, 0.4);
-  EXPECT_NEAR(ahead.expected_collisions(1e4), clustering, 1e-9 * clustering);
-  EXPECT_NEAR(beyond.expected_collisions(1e4), slow, 1e-9 * slow);
+// The same with a clustering floor h(20): Haff's law until x = 20, then the
+// floor over ln(2000 / 20). An exponent already below the floor is raised to it.
+TEST(RunEta, BeforeTheKneeTheExponentIsAtLeastTheClusteringOne) {
+  const double floor = h(20);
+  EXPECT_NEAR(log_growth(10, 1e4, h(2), floor, INFINITY, 1), haff(2, 20) + floor * std::log(100.0), 1e-12);
+  EXPECT_NEAR(log_growth(10, 1e4, 0.3, 0.5, INFINITY, 1), 0.5 * std::log(1000.0), 1e-12);
 }
 
-// Ballistic aggregation: at most N - 1 merges, whatever the extrapolation says.
+// The knee at t = 100 (x = 20) and a tail h(200): Haff's law to the knee,
+// the tail while Haff's exponent is above it (x = 20 .. 200), then Haff's law.
+TEST(RunEta, BeyondTheKneeTheTailCapsTheExponent) {
+  const double tail = h(200);
+  EXPECT_NEAR(log_growth(10, 1e4, h(2), 0, 100, tail), haff(2, 20) + tail * std::log(10.0) + haff(200, 2000), 1e-12);
+}
+
+// C = 1000 t^0.2, below the clustering regime's 0.5, before the knee: the
+// extrapolation takes 0.5. Beyond it (L = 2, knee at t = 2.8) Haff's law
+// from the measured 0.2 on, below the tail.
+TEST(RunEta, ASlowGrowthBeforeTheKneeIsRaisedToTheClusteringRegimes) {
+  const double now = 1000 * std::pow(100.0, 0.2);
+  EXPECT_NEAR(power_law_run(1e6, 0.2).expected_collisions(1e4), now * std::pow(100.0, 0.5), 1e-9 * now * 10);
+  const RunEta beyond = power_law_run(2, 0.2);
+  EXPECT_LT(beyond.expected_collisions(1e4), now * std::pow(100.0, 0.2));
+  EXPECT_GT(beyond.expected_collisions(1e4), now);
+}
+
+// Ballistic aggregation: at most N - 1 merges, whatever the extrapolation
+// says. C = 1000 t^0.5, at the clustering floor, would reach 1e5 at t = 1e4.
 TEST(RunEta, NoMoreCollisionsThanTheBoundAllows) {
   RunEta eta(1e6, 3e4);
   for (int k = -40; k <= 40; ++k) {
-    const double t = std::pow(10.0, k / 20.0);
-    eta.add({t, collisions(t), collisions(t) / kRate});
+    const double t = std::pow(10.0, k / 20.0), c = 1000 * std::sqrt(t);
+    eta.add({t, c, c / kRate});
   }
-  EXPECT_EQ(eta.expected_collisions(1e4), 3e4);  // the power law would give 39811
-  EXPECT_NEAR(eta.seconds_left(1e4), (3e4 - collisions(100)) / kRate, 1e-9);
-}
-
-// An exponent 0.6 falling by 0.1 per unit of ln t from t = 10 reaches the
-// floor 0.2 at u = ln(t/10) = 4: the integral of a over u in [0, ln 1000] is
-// 0.6*4 - 0.1*4^2/2 + 0.2*(ln 1000 - 4).
-TEST(RunEta, AFallingExponentFallsToTheFloor) {
-  const double u_end = std::log(1000.0);
-  EXPECT_NEAR(log_growth(10, 1e4, 0.6, -0.1, 0.2, 1e9, 0.15), 1.6 + 0.2 * (u_end - 4), 1e-12);
-  // A rising exponent is not carried on: a stays 0.6.
-  EXPECT_NEAR(log_growth(10, 1e4, 0.6, 0.3, 0.2, 1e9, 0.15), 0.6 * u_end, 1e-12);
-  // An exponent already below the floor stays where it is.
-  EXPECT_NEAR(log_growth(10, 1e4, 0.1, -0.1, 0.2, 1e9, 0.15), 0.1 * u_end, 1e-12);
-}
-
-// The same, with the knee at t = 100 (u = ln 10) and a tail cap of 0.3: a is
-// 0.6 - 0.1 u up to the knee, then 0.3 until the line falls below it (u = 3),
-// then the line down to the floor 0.2 (u = 4), then 0.2.
-TEST(RunEta, TheTailCapsTheExponentOnlyBeyondTheKnee) {
-  const double u_knee = std::log(10.0), u_end = std::log(1000.0);
-  const double by_hand = (0.6 * u_knee - 0.05 * u_knee * u_knee) + 0.3 * (3 - u_knee) + 0.25 + 0.2 * (u_end - 4);
-  EXPECT_NEAR(log_growth(10, 1e4, 0.6, -0.1, 0.2, 100, 0.3), by_hand, 1e-12);
-  // A cap below the floor holds from the knee on.
-  EXPECT_NEAR(log_growth(10, 1e4, 0.6, 0, 0.2, 100, 0.1), 0.6 * u_knee + 0.1 * (u_end - u_knee), 1e-12);
+  EXPECT_EQ(eta.expected_collisions(1e4), 3e4);
+  EXPECT_NEAR(eta.seconds_left(1e4), (3e4 - 1e4) / kRate, 1e-9);
 }
 
 // 1e6 collisions per busy second until t = 50, then 2.5e5 (say, another job
@@ -105,18 +95,18 @@ TEST(RunEta, TheRateIsTheRecentOne) {
 }
 
 TEST(RunEta, UnknownUntilAWholeFitWindowAndSamplesStayLogSpaced) {
-  RunEta eta(1e6);
+  RunEta eta(INFINITY);  // C = 1000 t, as in AGasThatDoesNotCoolIsExtrapolatedExactly
   EXPECT_TRUE(std::isnan(eta.seconds_left(10)));
-  eta.add({1, 1000, 0.005});
-  eta.add({2, collisions(2), collisions(2) / kRate});
+  eta.add({1, 1000, 1000 / kRate});
+  eta.add({2, 2000, 2000 / kRate});
   EXPECT_TRUE(std::isnan(eta.seconds_left(10)));  // t = 1 .. 2 is not yet a factor 3 of t
   // A million samples over three decades, linearly spaced: the estimate
-  // stays that of the power law (the last sample is always the newest).
+  // stays that of the whole run (the last sample is always the newest).
   for (int i = 1; i <= 1000000; ++i) {
     const double t = 2 + i * 1e-3;
-    eta.add({t, collisions(t), collisions(t) / kRate});
+    eta.add({t, 1000 * t, 1000 * t / kRate});
   }
-  EXPECT_NEAR(eta.expected_collisions(1e4), collisions(1e4), 1e-6 * collisions(1e4));
+  EXPECT_NEAR(eta.expected_collisions(1e4), 1e7, 1e-6 * 1e7);
 }
 
 }  // namespace
