@@ -12,10 +12,11 @@ namespace {
 // not used to choose them (other seeds, sizes, phi, r0 and delta; and gases
 // with r0 = 0.7 and 0.9, which stay homogeneous for long).
 constexpr double kFitWindow = 3;  // the exponent is fitted over t/3 .. t
-// Before the knee the exponent is at least 0.5: in the clustering regime the
-// demo's gases grow C as t^0.45 (delta = 1e-3) to t^0.96 (delta = 1e-5). The
-// rate per particle ~ sqrt(E) with E ~ t^-6/5 would give only 0.4: the
-// collisions inside the clusters, below delta, fall off more slowly.
+// Before the knee the exponent is at least 0.5: in the clustering regime
+// (t = 1e3-1e4) the demo's gases grow C as t^0.35-0.45 (delta = 1e-3) to
+// t^0.6-0.96 (delta = 1e-4, 1e-5). The rate per particle ~ sqrt(E) with
+// E ~ t^-6/5 would give 0.4: the collisions inside the clusters, below
+// delta, fall off more slowly.
 constexpr double kClustering = 0.5;
 constexpr double kKnee = 0.5;     // the finite-size regime, from t = kKnee L^(5/2) on,
 constexpr double kTail = 0.25;    // where C grows as t^0.25 at most
