@@ -22,19 +22,20 @@ import subprocess
 import sys
 import time
 
-# name -> coolgas-simulate --set overrides. About a minute each on one core.
+# name -> coolgas-simulate --set overrides. 30-60 s each on one core of an idle
+# machine (smaller boxes ran too short: a few whole-second ETAs).
 SCENES = {
     # The paper's gas (r0 = 0.1, delta = 1e-4, phi = 0.208) in a small box:
     # homogeneous cooling, clustering, then the finite-size regime.
-    "gas_L34": ["system.L=34", "system.phi=0.208", "collision.model=inelastic", "collision.r0=0.1",
-                "collision.delta=1e-4", "run.t_end=1e5"],
+    "gas_L48": ["system.L=48", "system.phi=0.208", "collision.model=inelastic", "collision.r0=0.1",
+                "collision.delta=1e-4", "run.t_end=2e5"],
     # Elastic: a constant collision rate.
-    "elastic_L34": ["system.L=34", "system.phi=0.208", "collision.model=elastic", "run.t_end=1000"],
+    "elastic_L48": ["system.L=48", "system.phi=0.208", "collision.model=elastic", "run.t_end=1000"],
     # Ballistic aggregation: the merges die out as the aggregates thin out.
-    "ba_L80": ["system.L=80", "system.phi=0.208", "system.equilibrate=0", "collision.model=aggregation",
+    "ba_L120": ["system.L=120", "system.phi=0.208", "system.equilibrate=0", "collision.model=aggregation",
                 "run.t_end=100"],
     # A dilute gas: Fig. 2's phi = 0.052.
-    "dilute_L70": ["system.L=70", "system.phi=0.052", "system.equilibrate=0", "collision.model=inelastic",
+    "dilute_L100": ["system.L=100", "system.phi=0.052", "system.equilibrate=0", "collision.model=inelastic",
                     "collision.r0=0.1", "collision.delta=1e-4", "run.t_end=1e5"],
 }
 # The run's first progress line is due this long after its start (common/progress.cc):
