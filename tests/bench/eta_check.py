@@ -33,10 +33,10 @@ SCENES = {
     "elastic_L48": ["system.L=48", "system.phi=0.208", "collision.model=elastic", "run.t_end=1000"],
     # Ballistic aggregation: the merges die out as the aggregates thin out.
     "ba_L120": ["system.L=120", "system.phi=0.208", "system.equilibrate=0", "collision.model=aggregation",
-                "run.t_end=100"],
+                 "run.t_end=100"],
     # A dilute gas: Fig. 2's phi = 0.052.
     "dilute_L100": ["system.L=100", "system.phi=0.052", "system.equilibrate=0", "collision.model=inelastic",
-                    "collision.r0=0.1", "collision.delta=1e-4", "run.t_end=1e5"],
+                     "collision.r0=0.1", "collision.delta=1e-4", "run.t_end=1e5"],
 }
 # The run's first progress line is due this long after its start (common/progress.cc):
 # the run's wall time is counted from then on, without the set-up.
