@@ -7,6 +7,7 @@
 #include "common/compensated_sum.h"
 #include "simulate/engine/aggregation_reach.h"
 #include "simulate/engine/pair_prediction.h"
+#include "simulate/engine/spatial_order.h"
 
 namespace coolgas {
 
@@ -39,6 +40,7 @@ AggregationEngine::AggregationEngine(Particles particles, AggregateState a, doub
   m_.resize(n);
   for (std::size_t i = 0; i < n; ++i) m_[i] = {particles.r[i], particles.v[i], particles.t[i], 0, -1};
   image_ = std::move(particles.image);
+  particles = Particles{};  // before the grid is built: the peak memory
   mass_ = std::move(a.mass);
   diam_ = std::move(a.diameter);
   id_ = std::move(a.id);
@@ -47,6 +49,7 @@ AggregationEngine::AggregationEngine(Particles particles, AggregateState a, doub
     ++alive_;
     dmax_ = std::max(dmax_, diam_[i]);
   }
+  calendar_.break_ties_by(id_.data());  // id_ is permuted in place: its data stay put
   // The state alone decides the grid, so a run resumed from a dump builds
   // the same grid as one started from the same state.
   if (rebuild_grid()) predict_all();
@@ -79,6 +82,7 @@ AggregationEngine::AggregationEngine(const StateReader& in) {
     large_.assign(fine, [this](int i) { return size_class(i); });
   }
   calendar_.load(in, "aggregation/calendar/");
+  calendar_.break_ties_by(id_.data());
 }
 
 void AggregationEngine::save(StateWriter& out) const {
@@ -99,18 +103,23 @@ void AggregationEngine::save(StateWriter& out) const {
 EngineFrame AggregationEngine::frame() const {
   EngineFrame f(now_, c_);
   const std::size_t n = m_.size();
-  f.position.resize(n);
-  f.velocity.resize(n);
-  f.image = image_;
-  for (std::size_t i = 0; i < n; ++i) {
-    f.velocity[i] = m_[i].v;
-    if (!present(int(i))) continue;  // an empty slot: all zero
-    f.position[i] = position_at(m_[i], now_);
-    wrap_into_box(f.position[i], f.image[i], L_);
+  f.position.assign(n, Vec3{});  // an absent id: all zero, id -1
+  f.velocity.assign(n, Vec3{});
+  f.image.assign(n, Image{0, 0, 0});
+  f.id.assign(n, -1);
+  f.mass.assign(n, 0.0);
+  f.diameter.assign(n, 0.0);
+  for (std::size_t s = 0; s < n; ++s) {
+    if (!present(int(s))) continue;
+    const auto k = std::size_t(id_[s]);
+    f.id[k] = id_[s];
+    f.velocity[k] = m_[s].v;
+    f.image[k] = image_[s];
+    f.position[k] = position_at(m_[s], now_);
+    wrap_into_box(f.position[k], f.image[k], L_);
+    f.mass[k] = mass_[s];
+    f.diameter[k] = diam_[s];
   }
-  f.id = id_;
-  f.mass = mass_;
-  f.diameter = diam_;
   return f;
 }
 
@@ -145,12 +154,14 @@ int AggregationEngine::reach_of(int i) const {
 // A large aggregate's class in the index: its reach, less 2 (the least).
 int AggregationEngine::size_class(int i) const { return reach_of(i) - 2; }
 
-// Every aggregate to now_, wrapped, into a new grid: fine cells about
+// Every aggregate to now_, wrapped, into a new grid, its slots first put in
+// the order of its cells (order_in_space; *follow becomes the new slot of
+// slot *follow): fine cells about
 // kSpacingFactor mean distances wide (at most L/3: three cells per side),
 // a whole number of index blocks per side. Returns false
 // (aggregates moved and wrapped, no grid) when the largest aggregate is half
 // the box wide; run_until() then reports it.
-bool AggregationEngine::rebuild_grid() {
+bool AggregationEngine::rebuild_grid(int* follow) {
   for (std::size_t i = 0; i < m_.size(); ++i) {
     if (!present(int(i))) continue;
     advance(int(i));
@@ -165,12 +176,52 @@ bool AggregationEngine::rebuild_grid() {
   const int block = fine >= 3 * kBlock ? kBlock : 1;
   const int n = fine / block * block;  // whole blocks
   grid_ = std::make_unique<CellGrid>(L_, L_ / (n + 0.5), m_.size());  // exactly n cells per side
+  const int moved = order_in_space(follow ? *follow : -1);
+  if (follow) *follow = moved;
   grid_->bind_next_links(&m_[0].next, sizeof(Motion) / sizeof(std::int32_t));  // one cache line per candidate
   grid_request_ = grid_->width() / (1.0 + 1e-6);
   large_ = LargeAggregateIndex(n, block, m_.size());
   for (std::size_t i = 0; i < m_.size(); ++i)
     if (present(int(i))) place(int(i), grid_->cell_of(m_[i].r.x, m_[i].r.y, m_[i].r.z));
   return true;
+}
+
+// The slots reordered along a Morton curve through the new grid's cells, the
+// empty ones last, so that aggregates close in space are close in memory and
+// a search's candidates mostly hit cache instead of main memory (W3 at
+// N = 1e6: tests/bench/README.md). Ids never change: slot s holds aggregate
+// id_[s]. Called before anything is listed in the grid, the index or the
+// calendar, which are all built afresh after it. Returns the new slot of
+// slot `follow`.
+int AggregationEngine::order_in_space(int follow) {
+  const std::size_t n = m_.size();
+  int shift = 0;  // keys of 30 bits: 1024 cells per side at most
+  while ((grid_->cells_per_side() - 1) >> shift >= 1024) ++shift;
+  std::vector<std::uint64_t> key;  // the Morton key of its cell << 32 | slot, for each present slot
+  key.reserve(alive_);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!present(int(i))) continue;
+    const CellCoord c = grid_->coord(grid_->cell_of(m_[i].r.x, m_[i].r.y, m_[i].r.z));
+    key.push_back(morton_key(std::uint32_t(c.x >> shift), std::uint32_t(c.y >> shift), std::uint32_t(c.z >> shift))
+                      << 32 |
+                  std::uint64_t(i));
+  }
+  std::sort(key.begin(), key.end());
+  std::vector<std::int32_t> order(n);  // order[k]: the slot that becomes slot k
+  for (std::size_t k = 0; k < key.size(); ++k) order[k] = std::int32_t(key[k] & 0xffffffffu);
+  std::size_t k = key.size();
+  key = {};
+  for (std::size_t i = 0; i < n; ++i)
+    if (!present(int(i))) order[k++] = std::int32_t(i);
+  int moved = follow;
+  for (std::size_t j = 0; j < n; ++j)
+    if (order[j] == follow) moved = int(j);
+  apply_permutation(m_, order);
+  apply_permutation(image_, order);
+  apply_permutation(mass_, order);
+  apply_permutation(diam_, order);
+  apply_permutation(id_, order);
+  return moved;
 }
 
 void AggregationEngine::throw_too_large() const {
@@ -275,12 +326,13 @@ Vec3 AggregationEngine::separation(int a, int b) const {
   return d;
 }
 
-// Merges a and b (both present) at now_ into the smaller slot; returns it.
+// Merges a and b (both present) at now_ into the slot of the smaller id; returns it.
 int AggregationEngine::merge(int a, int b) {
   const Vec3 d = separation(a, b);
   advance(a);
   advance(b);
-  const int keep = std::min(a, b), gone = std::max(a, b);
+  const int keep = id_[a] < id_[b] ? a : b, gone = keep == a ? b : a;
+  const std::int32_t gone_id = id_[gone];
   const double ma = mass_[a], mb = mass_[b], M = ma + mb;
   Motion merged = m_[a];
   for (int k = 0; k < 3; ++k) {
@@ -306,18 +358,18 @@ int AggregationEngine::merge(int a, int b) {
   --alive_;
   dmax_ = std::max(dmax_, diam_[keep]);
   ++c_.collisions;
-  if (log_) log_->push_back({keep, gone, now_});
+  if (log_) log_->push_back({id_[keep], gone_id, now_});
   return keep;
 }
 
-// The smallest id overlapping aggregate k at now_ (periodic), or -1: those
+// The slot of the smallest id overlapping aggregate k at now_ (periodic), or -1: those
 // within its reach and the large ones, at the images the cells allow (below
 // the L/2 limit an overlap is through one image only).
 int AggregationEngine::first_overlap(int k) const {
   int found = -1;
   const Motion& mk = m_[k];  // at now_: merge() advanced it
   auto check = [&](int j, const Vec3& shift) {
-    if (j == k || (found >= 0 && j > found)) return;
+    if (j == k || (found >= 0 && id_[j] > id_[found])) return;
     const Motion& mj = m_[j];
     const double dtj = now_ - mj.t;
     const Vec3 d{mj.r.x + mj.v.x * dtj + shift.x - mk.r.x, mj.r.y + mj.v.y * dtj + shift.y - mk.r.y,
@@ -343,7 +395,7 @@ void AggregationEngine::merge_chain(int i, int j) {
       throw_too_large();
     }
     if (grid_outdated()) {
-      rebuild_grid();
+      rebuild_grid(&k);
       rebuilt = true;
     }
     const int o = first_overlap(k);
@@ -388,7 +440,11 @@ Observables AggregationEngine::observables() const {
   CompensatedSum energy, p[3];
   AggregateStats a;
   double total = 0;
-  for (std::size_t i = 0; i < m_.size(); ++i) {
+  std::vector<std::int32_t> slot_of(m_.size(), -1);  // summed in id order, whatever the slots' order
+  for (std::size_t s = 0; s < m_.size(); ++s)
+    if (present(int(s))) slot_of[std::size_t(id_[s])] = std::int32_t(s);
+  for (const std::int32_t i : slot_of) {
+    if (i < 0) continue;
     const double mi = mass_[i];
     if (mi == 0) continue;
     ++a.aggregates;

@@ -28,9 +28,12 @@
 // through two images at once, or itself; the run stops there (RunStopped).
 // The cells impose nothing: a reach wider than the box visits every image.
 //
-// Ids are stable: aggregate i lives in slot i for ever; a merge keeps the
-// smaller id and empties the other slot (id -1, mass and diameter 0, position
-// and velocity 0), which is how dumps mark absent aggregates.
+// Ids are stable: a merge keeps the smaller id and empties the other
+// aggregate's slot (id -1, mass and diameter 0, position and velocity 0);
+// frames list every id, an absent one as such an empty entry. The slots are
+// renumbered in the order of space at each grid rebuild (order_in_space),
+// which changes where an aggregate is stored but never its id, nor which
+// aggregates merge when: merges, frames and observables are those of ids.
 #pragma once
 #include <memory>
 #include <vector>
@@ -68,6 +71,9 @@ class AggregationEngine final : public EngineBase {
   AggregationEngine(Particles particles, AggregateState aggregates, double now, const EngineCounters& counters = {});
   // The engine whose exact state save() wrote.
   explicit AggregationEngine(const StateReader& state);
+  // Not copyable: the calendar breaks ties by this engine's own id array.
+  AggregationEngine(const AggregationEngine&) = delete;
+  AggregationEngine& operator=(const AggregationEngine&) = delete;
 
   // Counters: `collisions` counts merges (each merge of a chain is one).
   // Throws RunStopped (kAggregateTooLarge) once the largest aggregate is
@@ -96,7 +102,8 @@ class AggregationEngine final : public EngineBase {
  private:
   bool present(int i) const { return id_[i] >= 0; }
   void advance(int i);
-  bool rebuild_grid();
+  bool rebuild_grid(int* follow = nullptr);
+  int order_in_space(int follow = -1);
   double typical_width() const;
   void place(int i, int fine);
   int fine_cell(int i) const { return large_.contains(i) ? large_.fine_cell(i) : grid_->cell(i); }

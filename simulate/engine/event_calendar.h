@@ -7,7 +7,8 @@
 //     one; an event at +inf is no event. assign() sets an event without
 //     queueing it, for bulk set-up followed by reset().
 //   - top() returns the particle with the earliest (time, id); ties go to the
-//     smaller id, so the order is deterministic.
+//     smaller id, so the order is deterministic. The id is the particle's
+//     index, or the key break_ties_by() gives (an engine whose slots move).
 //   - an event time is never earlier than the time of the last top() (events
 //     are never scheduled in the past).
 //
@@ -72,6 +73,10 @@ class EventCalendar {
   // Queues every finite event, with the year starting at `now`.
   void reset(double now);
   void schedule(int particle, const Event& e);
+  // Ties between equal times go to the smaller key[particle], not the smaller
+  // index: the order stays that of ids when slots are renumbered. key must
+  // outlive the calendar and hold distinct values for the particles with events.
+  void break_ties_by(const std::int32_t* key) { tie_key_ = key; }
   const Event& event(int particle) const { return entry_[particle].event; }
   // The particle with the earliest event; -1 if there are no events.
   int top();
@@ -104,7 +109,7 @@ class EventCalendar {
   double time(int p) const { return entry_[p].event.time; }
   bool earlier(int a, int b) const {
     const double ta = time(a), tb = time(b);
-    return ta < tb || (ta == tb && a < b);
+    return ta < tb || (ta == tb && (tie_key_ ? tie_key_[a] < tie_key_[b] : a < b));
   }
   void insert(int p);
   void erase(int p);
@@ -124,6 +129,7 @@ class EventCalendar {
   std::int32_t nb_ = 1, current_ = 0;
   std::int32_t ahead_ = kNone;  // how far top() has prefetched along the next bucket's list
   std::int64_t years_ = 0;
+  const std::int32_t* tie_key_ = nullptr;
 };
 
 }  // namespace coolgas
