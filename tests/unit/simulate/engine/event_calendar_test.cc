@@ -64,6 +64,23 @@ TEST(EventCalendar, TiesGoToTheSmallerId) {
   EXPECT_EQ(cal.top(), 2);
 }
 
+// An engine whose slots are renumbered (the aggregation engine's) breaks ties
+// by its ids: four equal times pop in the order of the keys, not the slots.
+TEST(EventCalendar, TiesGoToTheSmallerKeyWhenGivenKeys) {
+  EventCalendar cal;
+  cal.resize(5);
+  const std::int32_t key[] = {7, 3, 9, 1, 5};
+  cal.break_ties_by(key);
+  for (int i = 0; i < 4; ++i) cal.assign(i, Event(1.0));
+  cal.assign(4, Event(0.5));
+  cal.reset(0.0);
+  for (const int expected : {4, 3, 1, 0, 2}) {
+    ASSERT_EQ(cal.top(), expected);
+    cal.schedule(expected, Event{});
+  }
+  EXPECT_EQ(cal.top(), -1);
+}
+
 TEST(EventKind, CrossingFaceZeroIsNeitherNoEventNorACollision) {
   EXPECT_EQ(Event{}.kind(), EventKind::kNone);
   for (int face = 0; face < 6; ++face) {
