@@ -250,27 +250,6 @@ void AggregationEngine::for_each_cell_in_reach(int i, int reach, F&& f) const {
   }
 }
 
-// Earliest contact of aggregate i with j's image shifted by `shift`.
-inline void AggregationEngine::consider(int i, int j, const Vec3& shift, double& best, int& partner) const {
-  const Motion& mi = m_[i];
-  const Motion& mj = m_[j];
-  const double dtj = now_ - mj.t;
-  Vec3 dr, dv;
-  for (int d = 0; d < 3; ++d) {
-    dr[d] = mj.r[d] + mj.v[d] * dtj + shift[d] - mi.r[d];
-    dv[d] = mj.v[d] - mi.v[d];
-  }
-  const double sigma = 0.5 * (diam_[i] + diam_[j]);
-  const double t = time_to_contact_before(dr, dv, best, sigma * sigma);
-  if (t < best) best = t, partner = j;
-}
-
-// Earliest contact of aggregate i with those of one cell, whose images are shifted by `shift`.
-void AggregationEngine::scan_cell(int i, int cell, const Vec3& shift, double& best, int& partner) const {
-  for (int j = grid_->first(cell); j >= 0; j = grid_->next(j))
-    if (j != i) consider(i, j, shift, best, partner);
-}
-
 // Calls f(j, shift) for every large aggregate j (not i) at every periodic
 // image its pair's reach allows.
 template <class F>
@@ -295,18 +274,52 @@ void AggregationEngine::for_each_large_image(int i, F&& f) const {
     large_.for_each_near(fine, c, cell_reach(0.5 * (di + (2 * c + 3) * w), w), images);
 }
 
-// Aggregate i is at now_; its event is the first face of its fine cell it
-// will cross, or an earlier contact with an aggregate within its reach or a
-// large one.
-Event AggregationEngine::find_event(int i) const {
+// Calls f(j, shift) for every aggregate j (not i) that could touch i: those
+// listed in the cells within i's reach, and the large ones at the images
+// their pair's reach allows.
+template <class F>
+void AggregationEngine::for_each_candidate(int i, F&& f) const {
+  for_each_cell_in_reach(i, reach_of(i), [&](int cell, const Vec3& shift) {
+    for (int j = grid_->first(cell); j >= 0; j = grid_->next(j))
+      if (j != i) f(j, shift);
+  });
+  for_each_large_image(i, f);
+}
+
+// One walk over aggregate i's candidates, i at now_. Its event: the first
+// face of its fine cell it will cross, or an earlier contact. With kOverlaps,
+// also the slot of the smallest id it overlaps (-1 if none): a chain's test,
+// which makes the event moot when it finds one. Both from the same
+// separation, computed once.
+template <bool kOverlaps>
+AggregationEngine::Search AggregationEngine::search(int i) const {
   const CellExit exit = first_cell_exit(*grid_, fine_cell(i), m_[i].r, m_[i].v);
   double best = exit.time;
-  int partner = -1;
-  for_each_cell_in_reach(i, reach_of(i), [&](int cell, const Vec3& shift) { scan_cell(i, cell, shift, best, partner); });
-  for_each_large_image(i, [&](int j, const Vec3& shift) { consider(i, j, shift, best, partner); });
-  if (partner >= 0) return Event::collision(now_ + best, partner, m_[partner].count);
-  return exit.face >= 0 ? Event::crossing(now_ + best, exit.face) : Event{};
+  int partner = -1, overlap = -1;
+  const Motion& mi = m_[i];
+  for_each_candidate(i, [&](int j, const Vec3& shift) {
+    if (kOverlaps && overlap >= 0 && id_[j] > id_[overlap]) return;
+    const Motion& mj = m_[j];
+    const double dtj = now_ - mj.t;
+    Vec3 dr, dv;
+    for (int d = 0; d < 3; ++d) {
+      dr[d] = mj.r[d] + mj.v[d] * dtj + shift[d] - mi.r[d];
+      dv[d] = mj.v[d] - mi.v[d];
+    }
+    const double sigma = 0.5 * (diam_[i] + diam_[j]);
+    if (kOverlaps && dot(dr, dr) < sigma * sigma) {
+      overlap = j;
+      return;
+    }
+    if (kOverlaps && overlap >= 0) return;
+    const double t = time_to_contact_before(dr, dv, best, sigma * sigma);
+    if (t < best) best = t, partner = j;
+  });
+  if (partner >= 0) return {Event::collision(now_ + best, partner, m_[partner].count), overlap};
+  return {exit.face >= 0 ? Event::crossing(now_ + best, exit.face) : Event{}, overlap};
 }
+
+Event AggregationEngine::find_event(int i) const { return search<false>(i).event; }
 
 void AggregationEngine::cross(int i, int face) {
   advance(i);
@@ -362,28 +375,6 @@ int AggregationEngine::merge(int a, int b) {
   return keep;
 }
 
-// The slot of the smallest id overlapping aggregate k at now_ (periodic), or -1: those
-// within its reach and the large ones, at the images the cells allow (below
-// the L/2 limit an overlap is through one image only).
-int AggregationEngine::first_overlap(int k) const {
-  int found = -1;
-  const Motion& mk = m_[k];  // at now_: merge() advanced it
-  auto check = [&](int j, const Vec3& shift) {
-    if (j == k || (found >= 0 && id_[j] > id_[found])) return;
-    const Motion& mj = m_[j];
-    const double dtj = now_ - mj.t;
-    const Vec3 d{mj.r.x + mj.v.x * dtj + shift.x - mk.r.x, mj.r.y + mj.v.y * dtj + shift.y - mk.r.y,
-                 mj.r.z + mj.v.z * dtj + shift.z - mk.r.z};
-    const double sigma = 0.5 * (diam_[k] + diam_[j]);
-    if (dot(d, d) < sigma * sigma) found = j;
-  };
-  for_each_cell_in_reach(k, reach_of(k), [&](int cell, const Vec3& shift) {
-    for (int j = grid_->first(cell); j >= 0; j = grid_->next(j)) check(j, shift);
-  });
-  for_each_large_image(k, check);
-  return found;
-}
-
 // i and j touch: merge them, then whatever the new aggregate overlaps, until
 // nothing does; then predict again.
 void AggregationEngine::merge_chain(int i, int j) {
@@ -398,14 +389,19 @@ void AggregationEngine::merge_chain(int i, int j) {
       rebuild_grid(&k);
       rebuilt = true;
     }
-    const int o = first_overlap(k);
-    if (o < 0) break;
-    k = merge(k, o);
-  }
-  if (rebuilt) {
-    predict_all();
-  } else {
-    calendar_.schedule(k, find_event(k));
+    // Overlaps with the new aggregate are found among its candidates, at the
+    // images the cells allow (below the L/2 limit an overlap is through one
+    // image only); without one, the same walk gave its event.
+    const Search found = search<true>(k);
+    if (found.overlap < 0) {
+      if (rebuilt) {
+        predict_all();
+      } else {
+        calendar_.schedule(k, found.event);
+      }
+      return;
+    }
+    k = merge(k, found.overlap);
   }
 }
 

@@ -115,15 +115,20 @@ class AggregationEngine final : public EngineBase {
   [[noreturn]] void throw_too_large() const;
   bool grid_outdated() const;
   void predict_all();
+  struct Search {
+    Event event;
+    int overlap;
+  };
+  template <bool kOverlaps>
+  Search search(int i) const;
   Event find_event(int i) const;
-  void scan_cell(int i, int cell, const Vec3& shift, double& best, int& partner) const;
+  template <class F>
+  void for_each_candidate(int i, F&& f) const;
   template <class F>
   void for_each_large_image(int i, F&& f) const;
-  void consider(int i, int j, const Vec3& shift, double& best, int& partner) const;
   void cross(int i, int face);
   void merge_chain(int i, int j);
   int merge(int a, int b);
-  int first_overlap(int k) const;
   Vec3 separation(int a, int b) const;  // r_b - r_a at now_, minimum image
 
   double L_;
