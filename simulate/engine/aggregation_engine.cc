@@ -77,6 +77,7 @@ AggregationEngine::AggregationEngine(const StateReader& in) {
     grid_->bind_next_links(&m_[0].next, sizeof(Motion) / sizeof(std::int32_t));
     grid_->load(in, "aggregation/grid/");
     large_ = LargeAggregateIndex(grid_->cells_per_side(), s.block, n);
+    large_.bind_links(&m_[0].next, sizeof(Motion) / sizeof(std::int32_t));
     const auto fine = in.get<std::int32_t>("aggregation/large_cell");
     if (fine.size() != n) in.fail("the aggregation engine's arrays differ in length");
     large_.assign(fine, [this](int i) { return size_class(i); });
@@ -181,6 +182,7 @@ bool AggregationEngine::rebuild_grid(int* follow) {
   grid_->bind_next_links(&m_[0].next, sizeof(Motion) / sizeof(std::int32_t));  // one cache line per candidate
   grid_request_ = grid_->width() / (1.0 + 1e-6);
   large_ = LargeAggregateIndex(n, block, m_.size());
+  large_.bind_links(&m_[0].next, sizeof(Motion) / sizeof(std::int32_t));  // a large aggregate is in no fine list
   for (std::size_t i = 0; i < m_.size(); ++i)
     if (present(int(i))) place(int(i), grid_->cell_of(m_[i].r.x, m_[i].r.y, m_[i].r.z));
   return true;

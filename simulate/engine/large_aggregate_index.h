@@ -9,9 +9,12 @@
 // far only for the few very large ones: a search for a class's aggregates
 // within `reach` fine cells of a fine cell (aggregation_reach.h) walks the
 // coarse cells that overlap that range, each once even where the range
-// wraps the box. Each coarse cell lists its aggregates in id order,
-// so the index is rebuilt identically from the fine cells alone (a resumed
-// run searches in the same order as the original).
+// wraps the box. Each coarse cell's list is linked through the engine's own
+// records (bind_links), as the fine grid's are, so walking it touches the
+// records the search reads anyway, and a class costs 4 bytes per coarse
+// cell. Each list is kept in slot order, so the index is rebuilt
+// identically from the fine cells alone (a resumed run searches in the same
+// order as the original).
 #pragma once
 #include <algorithm>
 #include <cstdint>
@@ -28,6 +31,12 @@ class LargeAggregateIndex {
   LargeAggregateIndex(int n_fine, int block, std::size_t n)
       : block_(block), n_(n_fine / block), inv_fine_(1.0 / n_fine), fine_(n, -1), class_(n, -1) {}
 
+  // The forward links live at base[i * stride] (one per slot, unused by the fine grid for these).
+  void bind_links(std::int32_t* base, std::size_t stride) {
+    next_ = base;
+    stride_ = stride;
+  }
+
   int block() const { return block_; }
   std::size_t size() const { return count_; }
   bool contains(int i) const { return fine_[std::size_t(i)] >= 0; }
@@ -40,14 +49,17 @@ class LargeAggregateIndex {
     class_[std::size_t(i)] = size_class;
     if (size_class >= classes()) levels_.resize(std::size_t(size_class) + 1);
     auto& level = levels_[std::size_t(size_class)];
-    if (level.empty()) level.resize(std::size_t(n_) * std::size_t(n_) * std::size_t(n_));
-    auto& l = level[coarse_of(fine)];
-    l.insert(std::lower_bound(l.begin(), l.end(), i), i);
+    if (level.empty()) level.assign(std::size_t(n_) * std::size_t(n_) * std::size_t(n_), -1);
+    std::int32_t* at = &level[coarse_of(fine)];  // the link that will point to i
+    while (*at >= 0 && *at < i) at = &link(*at);
+    link(i) = *at;
+    *at = i;
     ++count_;
   }
   void remove(int i) {
-    auto& l = levels_[std::size_t(class_[std::size_t(i)])][coarse_of(fine_[std::size_t(i)])];
-    l.erase(std::lower_bound(l.begin(), l.end(), i));
+    std::int32_t* at = &levels_[std::size_t(class_[std::size_t(i)])][coarse_of(fine_[std::size_t(i)])];
+    while (*at != i) at = &link(*at);
+    *at = link(i);
     fine_[std::size_t(i)] = class_[std::size_t(i)] = -1;
     --count_;
   }
@@ -79,7 +91,8 @@ class LargeAggregateIndex {
       for (int y = 0; y < count[1]; ++y) {
         const std::size_t cy = std::size_t(wrap(lo[1] + y));
         for (int x = 0; x < count[0]; ++x)
-          for (const int j : level[(cz * std::size_t(n_) + cy) * std::size_t(n_) + std::size_t(wrap(lo[0] + x))])
+          for (int j = level[(cz * std::size_t(n_) + cy) * std::size_t(n_) + std::size_t(wrap(lo[0] + x))]; j >= 0;
+               j = link(j))
             f(j);
       }
     }
@@ -97,6 +110,7 @@ class LargeAggregateIndex {
  private:
   static int floor_div(int a, int b) { return a >= 0 ? a / b : -((b - 1 - a) / b); }
   int wrap(int x) const { return x - floor_div(x, n_) * n_; }
+  std::int32_t& link(int i) const { return next_[std::size_t(i) * stride_]; }
   CellCoord coarse_coord(int fine) const {
     const CellCoord f = CellGrid::coord_in(fine, n_ * block_, inv_fine_);
     return {f.x / block_, f.y / block_, f.z / block_};
@@ -110,7 +124,9 @@ class LargeAggregateIndex {
   double inv_fine_ = 1;
   std::size_t count_ = 0;
   std::vector<std::int32_t> fine_, class_;  // each slot's fine cell and class, -1 if not listed
-  std::vector<std::vector<std::vector<int>>> levels_;  // per class (empty until used), per coarse cell
+  std::vector<std::vector<std::int32_t>> levels_;  // per class (empty until used), per coarse cell: its first slot, or -1
+  std::int32_t* next_ = nullptr;  // slot i's successor in its list: next_[i * stride_]
+  std::size_t stride_ = 1;
 };
 
 }  // namespace coolgas

@@ -14,7 +14,7 @@ struct alignas(64) Motion {
   Vec3 v;               // velocity
   double t;             // time at which r is valid
   std::uint32_t count;  // collisions since the last rebuild (lazy invalidation)
-  std::int32_t next;    // next particle in the same cell (the cell grid's list link)
+  std::int32_t next;    // next particle in the same cell (the cell grid's list link, or the large-aggregate index's)
 };
 static_assert(sizeof(Motion) == 64, "one cache line per particle");
 
