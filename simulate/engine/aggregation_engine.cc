@@ -23,6 +23,9 @@ namespace {
 constexpr double kSpacingFactor = 1.0;
 constexpr double kCellsPerAggregateLimit = 4.0;
 constexpr int kBlock = 2;
+// The grid's and the large index's list links live in the motion records
+// (Motion::next), so walking a list reads one cache line per candidate.
+constexpr std::size_t kLinkStride = sizeof(Motion) / sizeof(std::int32_t);
 }  // namespace
 
 AggregateState AggregateState::unit_spheres(std::size_t n) {
@@ -74,10 +77,10 @@ AggregationEngine::AggregationEngine(const StateReader& in) {
     in.fail("the aggregation engine's arrays differ in length");
   if (s.has_grid) {
     grid_ = std::make_unique<CellGrid>(L_, grid_request_, n);
-    grid_->bind_next_links(&m_[0].next, sizeof(Motion) / sizeof(std::int32_t));
+    grid_->bind_next_links(&m_[0].next, kLinkStride);
     grid_->load(in, "aggregation/grid/");
     large_ = LargeAggregateIndex(grid_->cells_per_side(), s.block, n);
-    large_.bind_links(&m_[0].next, sizeof(Motion) / sizeof(std::int32_t));
+    large_.bind_links(&m_[0].next, kLinkStride);
     const auto fine = in.get<std::int32_t>("aggregation/large_cell");
     if (fine.size() != n) in.fail("the aggregation engine's arrays differ in length");
     large_.assign(fine, [this](int i) { return size_class(i); });
@@ -179,10 +182,10 @@ bool AggregationEngine::rebuild_grid(int* follow) {
   grid_ = std::make_unique<CellGrid>(L_, L_ / (n + 0.5), m_.size());  // exactly n cells per side
   const int moved = order_in_space(follow ? *follow : -1);
   if (follow) *follow = moved;
-  grid_->bind_next_links(&m_[0].next, sizeof(Motion) / sizeof(std::int32_t));  // one cache line per candidate
+  grid_->bind_next_links(&m_[0].next, kLinkStride);
   grid_request_ = grid_->width() / (1.0 + 1e-6);
   large_ = LargeAggregateIndex(n, block, m_.size());
-  large_.bind_links(&m_[0].next, sizeof(Motion) / sizeof(std::int32_t));  // a large aggregate is in no fine list
+  large_.bind_links(&m_[0].next, kLinkStride);  // a large aggregate is in no fine list
   for (std::size_t i = 0; i < m_.size(); ++i)
     if (present(int(i))) place(int(i), grid_->cell_of(m_[i].r.x, m_[i].r.y, m_[i].r.z));
   return true;
