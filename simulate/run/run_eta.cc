@@ -18,8 +18,13 @@ constexpr double kFitWindow = 3;  // the exponent is fitted over t/3 .. t
 // E ~ t^-6/5 would give 0.4: the collisions inside the clusters, below
 // delta, fall off more slowly.
 constexpr double kClustering = 0.5;
-constexpr double kKnee = 0.5;     // the finite-size regime, from t = kKnee L^(5/2) on,
-constexpr double kTail = 0.25;    // where C grows as t^0.25 at most
+constexpr double kKnee = 0.5;  // the finite-size regime, from t = kKnee L^(5/2) on,
+// where C grows at most as t^b, b = kTail (t / t_knee)^-kTailFall: the
+// demo's gases fall from 0.25-0.3 at x = t/L^(5/2) = 2 to 0.1-0.13 at x = 10
+// (tests/bench/README.md, "ETA").
+constexpr double kTail = 0.35;
+constexpr double kTailFall = 0.35;
+constexpr int kStepsPerUnit = 64;  // the tail's integral: midpoints per unit of ln t
 constexpr double kLogSpacing = 1.01;
 constexpr double kRateWindow = 0.25;  // the rate is taken over this last fraction of the busy time
 
@@ -49,6 +54,8 @@ class HaffPath {
     if (!haff_) return a_ * (u1 - u0);
     return haff_integral(x0_ * std::exp(u1)) - haff_integral(x0_ * std::exp(u0));
   }
+  // The exponent itself at u.
+  double at(double u) const { return haff_ ? haff_exponent(x0_ * std::exp(u)) : a_; }
   // Where the exponent falls to v: -inf if it is below v from the start, +inf if never.
   double crossing(double v) const {
     if (!haff_) return a_ > v ? INFINITY : -INFINITY;
@@ -63,19 +70,33 @@ class HaffPath {
   double x0_;
 };
 
+// The integral over [u0, u1] of min(path, tail e^(-fall (u - u0))), by
+// midpoints (the two may cross more than once).
+double capped_integral(const HaffPath& path, double u0, double u1, double tail, double fall) {
+  const int n = int(std::ceil((u1 - u0) * kStepsPerUnit));
+  if (n <= 0) return 0;
+  const double du = (u1 - u0) / n;
+  double sum = 0;
+  for (int i = 0; i < n; ++i) {
+    const double v = (i + 0.5) * du;
+    sum += std::min(path.at(u0 + v), tail * std::exp(-fall * v));
+  }
+  return sum * du;
+}
+
 }  // namespace
 
-double log_growth(double t, double t_end, double a, double clustering, double t_knee, double tail) {
+double log_growth(double t, double t_end, double a, double clustering, double t_knee, double tail, double tail_fall) {
   if (!(t_end > t)) return 0;
   const HaffPath path(a);
   const double u_end = std::log(t_end / t), u_knee = std::clamp(std::log(t_knee / t), 0.0, u_end);
   // Before the knee max(clustering, path): the path until it falls to the floor.
   const double floor_from = std::clamp(path.crossing(clustering), 0.0, u_knee);
   const double before = path.integral(0, floor_from) + clustering * (u_knee - floor_from);
-  // After it min(tail, path): the tail until the path falls below it.
-  const double tail_until = std::clamp(path.crossing(tail), u_knee, u_end);
-  const double after = tail * (tail_until - u_knee) + path.integral(tail_until, u_end);
-  return before + after;
+  // After it min(path, the falling tail); the tail began at the knee, also
+  // for a run already beyond it.
+  const double tail_now = tail * std::pow(std::max(t / t_knee, 1.0), -tail_fall);
+  return before + capped_integral(path, u_knee, u_end, tail_now, tail_fall);
 }
 
 void RunEta::add(const RunSample& s) {
@@ -117,7 +138,7 @@ double RunEta::expected_collisions(double t_end) const {
   const double a = exponent(t / kFitWindow, t);
   if (!std::isfinite(a)) return NAN;
   const double knee = kKnee * std::pow(L_, 2.5);
-  return std::min(most_, now.collisions * std::exp(log_growth(t, t_end, a, kClustering, knee, kTail)));
+  return std::min(most_, now.collisions * std::exp(log_growth(t, t_end, a, kClustering, knee, kTail, kTailFall)));
 }
 
 double RunEta::seconds_left(double t_end) const {

@@ -9,8 +9,8 @@
 // x/((1 + x) ln(1 + x)), x = t/tau, with tau set by the measured a. Two
 // regimes of the paper's gas bound it (Pathak et al. 2014): before
 // t = 0.5 L^(5/2) the clustering regime, where a stays at least 0.5, and
-// beyond it the finite-size regime, where a is at most 0.25 (the constants
-// and how they were chosen: run_eta.cc). A run that has not yet covered a
+// beyond it the finite-size regime, where a is at most 0.35 (t/t_knee)^-0.35
+// (the constants and how they were chosen: run_eta.cc). A run that has not yet covered a
 // factor 3 of t is not extrapolated. A gas that does not cool (a >= 1)
 // keeps its exponent; pass L = INFINITY where no finite-size regime comes.
 //
@@ -55,7 +55,9 @@ class RunEta {
 
 // ln(C(t_end) / C(t)) for a local exponent that is a at t and then falls
 // as under Haff's law, is at least `clustering` before t_knee and at most
-// `tail` beyond it (the rule of RunEta, in closed form per piece).
-double log_growth(double t, double t_end, double a, double clustering, double t_knee, double tail);
+// tail (t'/t_knee)^-tail_fall at t' beyond it (the rule of RunEta; in closed
+// form before the knee, by midpoints beyond it).
+double log_growth(double t, double t_end, double a, double clustering, double t_knee, double tail,
+                  double tail_fall);
 
 }  // namespace coolgas

@@ -39,22 +39,34 @@ TEST(RunEta, AGasThatDoesNotCoolIsExtrapolatedExactly) {
 
 // From t = 10 (x0 = 2, so tau = 5) to 1e4 (x1 = 2000), without floor, knee or tail.
 TEST(RunEta, TheExponentFallsAsUnderHaffsLaw) {
-  EXPECT_NEAR(log_growth(10, 1e4, h(2), 0, INFINITY, 1), haff(2, 2000), 1e-12);
+  EXPECT_NEAR(log_growth(10, 1e4, h(2), 0, INFINITY, 1, 0), haff(2, 2000), 1e-12);
 }
 
 // The same with a clustering floor h(20): Haff's law until x = 20, then the
 // floor over ln(2000 / 20). An exponent already below the floor is raised to it.
 TEST(RunEta, BeforeTheKneeTheExponentIsAtLeastTheClusteringOne) {
   const double floor = h(20);
-  EXPECT_NEAR(log_growth(10, 1e4, h(2), floor, INFINITY, 1), haff(2, 20) + floor * std::log(100.0), 1e-12);
-  EXPECT_NEAR(log_growth(10, 1e4, 0.3, 0.5, INFINITY, 1), 0.5 * std::log(1000.0), 1e-12);
+  EXPECT_NEAR(log_growth(10, 1e4, h(2), floor, INFINITY, 1, 0), haff(2, 20) + floor * std::log(100.0), 1e-12);
+  EXPECT_NEAR(log_growth(10, 1e4, 0.3, 0.5, INFINITY, 1, 0), 0.5 * std::log(1000.0), 1e-12);
 }
 
-// The knee at t = 100 (x = 20) and a tail h(200): Haff's law to the knee,
-// the tail while Haff's exponent is above it (x = 20 .. 200), then Haff's law.
+// The knee at t = 100 (x = 20) and a constant tail h(200): Haff's law to the
+// knee, the tail while Haff's exponent is above it (x = 20 .. 200), then
+// Haff's law. Beyond the knee the integral is taken by midpoints, 64 per unit
+// of ln t: an error of order 1e-5 here (the kink where the two meet).
 TEST(RunEta, BeyondTheKneeTheTailCapsTheExponent) {
   const double tail = h(200);
-  EXPECT_NEAR(log_growth(10, 1e4, h(2), 0, 100, tail), haff(2, 20) + tail * std::log(10.0) + haff(200, 2000), 1e-12);
+  EXPECT_NEAR(log_growth(10, 1e4, h(2), 0, 100, tail, 0), haff(2, 20) + tail * std::log(10.0) + haff(200, 2000),
+              1e-4);
+}
+
+// A falling tail caps a gas that does not cool (a = 1): beyond the knee at
+// t = 100 the exponent is 0.3 (t/100)^-0.5, whose integral over ln t from
+// 100 to 1e4 is (0.3 / 0.5) (1 - 100^-0.5) = 0.54. A run already beyond the
+// knee (t = 1e3) gets the tail as it is by then: 0.6 (10^-0.5 - 100^-0.5).
+TEST(RunEta, BeyondTheKneeTheTailFallsAsAPowerOfTime) {
+  EXPECT_NEAR(log_growth(10, 1e4, 1, 0, 100, 0.3, 0.5), std::log(10.0) + 0.54, 1e-5);
+  EXPECT_NEAR(log_growth(1e3, 1e4, 1, 0, 100, 0.3, 0.5), 0.6 * (std::pow(10.0, -0.5) - 0.1), 1e-5);
 }
 
 // C = 1000 t^0.2, below the clustering regime's 0.5, before the knee: the
