@@ -12,12 +12,19 @@ namespace {
 // not used to choose them (other seeds, sizes, phi, r0 and delta; and gases
 // with r0 = 0.7 and 0.9, which stay homogeneous for long).
 constexpr double kFitWindow = 3;  // the exponent is fitted over t/3 .. t
-// Before the knee the exponent is at least 0.5: in the clustering regime
-// (t = 1e3-1e4) the demo's gases grow C as t^0.35-0.45 (delta = 1e-3) to
-// t^0.6-0.96 (delta = 1e-4, 1e-5). The rate per particle ~ sqrt(E) with
-// E ~ t^-6/5 would give 0.4: the collisions inside the clusters, below
-// delta, fall off more slowly.
-constexpr double kClustering = 0.5;
+// Before the knee the exponent is at least the clustering regime's. There
+// (t = 1e2 up to the knee) the replayed gases grow C on average as t^0.42
+// (delta = 1e-3) to t^0.6 (delta = 1e-4) and t^0.75 (delta = 1e-5) at
+// phi = 0.208, r0 = 0.1; as t^0.42-0.49 at phi = 0.052; as t^0.35-0.44 at
+// r0 = 0.5-0.9. The rate per particle ~ sqrt(E) with E ~ t^-6/5 would give
+// 0.4: the collisions inside the clusters, below delta, fall off more slowly,
+// the more so the denser and the more dissipative the gas and the smaller
+// delta. The floor is linear in phi, r0 and log10 delta, within [0.3, 0.9].
+constexpr double kClusteringPaper = 0.6;  // phi = 0.208, r0 = 0.1, delta = 1e-4
+constexpr double kClusteringPerDecadeOfDelta = 0.1;  // per factor 10 smaller
+constexpr double kClusteringPerPhi = 0.8;            // 0.08 per 0.1 of phi
+constexpr double kClusteringPerR0 = -0.2;
+constexpr double kClusteringLow = 0.3, kClusteringHigh = 0.9;
 constexpr double kKnee = 0.5;  // the finite-size regime, from t = kKnee L^(5/2) on,
 // where C grows at most as t^b, b = kTail (t / t_knee)^-kTailFall: the
 // demo's gases fall from 0.25-0.3 at x = t/L^(5/2) = 2 to 0.1-0.13 at x = 10
@@ -99,6 +106,19 @@ double log_growth(double t, double t_end, double a, double clustering, double t_
   return before + capped_integral(path, u_knee, u_end, tail_now, tail_fall);
 }
 
+double clustering_floor(double phi, double r0, double delta) {
+  const double f = kClusteringPaper + kClusteringPerDecadeOfDelta * std::log10(1e-4 / delta) +
+                   kClusteringPerPhi * (phi - 0.208) + kClusteringPerR0 * (r0 - 0.1);
+  return std::isnan(f) ? kClusteringHigh : std::clamp(f, kClusteringLow, kClusteringHigh);
+}
+
+RunEta run_eta_for(const RunParameters& p) {
+  if (p.model == "elastic") return RunEta(INFINITY);  // no cooling, no finite-size regime
+  if (p.model == "aggregation") return RunEta(p.L, double(p.N - 1));
+  if (p.model == "inelastic" && p.r0 && p.delta) return RunEta(p.L, INFINITY, clustering_floor(p.phi, *p.r0, *p.delta));
+  return RunEta(p.L);
+}
+
 void RunEta::add(const RunSample& s) {
   // The last sample always moves to the newest; the others stay 1 % of t apart.
   const std::size_t n = samples_.size();
@@ -138,7 +158,7 @@ double RunEta::expected_collisions(double t_end) const {
   const double a = exponent(t / kFitWindow, t);
   if (!std::isfinite(a)) return NAN;
   const double knee = kKnee * std::pow(L_, 2.5);
-  return std::min(most_, now.collisions * std::exp(log_growth(t, t_end, a, kClustering, knee, kTail, kTailFall)));
+  return std::min(most_, now.collisions * std::exp(log_growth(t, t_end, a, clustering_, knee, kTail, kTailFall)));
 }
 
 double RunEta::seconds_left(double t_end) const {

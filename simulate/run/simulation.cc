@@ -94,6 +94,25 @@ FrameView view_of(const EngineFrame& f) {
 }
 
 // Drives the engine from stop to stop, writing as it goes.
+RunParameters parameters_of(const Scene& s) {
+  RunParameters p;
+  p.scene_toml = s.to_toml();
+  p.seed = s.seed;
+  p.N = s.N;
+  p.L = s.L;
+  p.phi = s.phi;
+  p.T0 = initial_temperature(s);
+  p.model = s.model_name();
+  // Only the parameters the model has (common/trajectory/collision_models.h).
+  const auto if_used = [&](const char* name, double v) {
+    return model_uses(p.model, name) ? std::optional<double>(v) : std::nullopt;
+  };
+  p.r0 = if_used("r0", s.r0);
+  p.delta = if_used("delta", s.delta);
+  p.viscoelastic_b = if_used("viscoelastic_b", s.viscoelastic_b);
+  return p;
+}
+
 class Driver {
  public:
   // `interval`: wall-clock seconds between periodic checkpoints.
@@ -217,9 +236,7 @@ class Driver {
   std::string path_;
   double e0_;
   Progress progress_;
-  // An elastic gas does not cool, so no finite-size regime slows its collisions.
-  RunEta eta_{scene_.model == CollisionModel::kElastic ? INFINITY : scene_.L,
-              scene_.model == CollisionModel::kAggregation ? double(scene_.N - 1) : INFINITY};
+  RunEta eta_ = run_eta_for(parameters_of(scene_));
   double busy_seconds_ = 0;  // wall seconds inside the engine (no dumps, no checkpoints)
   double interval_;
   clock::time_point last_checkpoint_;
@@ -227,25 +244,6 @@ class Driver {
   double last_dump_ = -1;  // the time of the file's last complete dump
   std::vector<ObservableRow> pending_;  // observables written after that dump
 };
-
-RunParameters parameters_of(const Scene& s) {
-  RunParameters p;
-  p.scene_toml = s.to_toml();
-  p.seed = s.seed;
-  p.N = s.N;
-  p.L = s.L;
-  p.phi = s.phi;
-  p.T0 = initial_temperature(s);
-  p.model = s.model_name();
-  // Only the parameters the model has (common/trajectory/collision_models.h).
-  const auto if_used = [&](const char* name, double v) {
-    return model_uses(p.model, name) ? std::optional<double>(v) : std::nullopt;
-  };
-  p.r0 = if_used("r0", s.r0);
-  p.delta = if_used("delta", s.delta);
-  p.viscoelastic_b = if_used("viscoelastic_b", s.viscoelastic_b);
-  return p;
-}
 
 std::string default_output(const std::string& scene_path) {
   return std::filesystem::path(scene_path).stem().string() + ".h5";

@@ -33,8 +33,8 @@ struct Replay {
 
 // The run as if it had ended at its row `end` (a run is the same up to any
 // time whatever its t_end).
-Replay replay(const ObservableSeries& c, std::size_t end, double L, double most) {
-  RunEta eta(L, most);
+Replay replay(const ObservableSeries& c, std::size_t end, const coolgas::RunParameters& p) {
+  RunEta eta = coolgas::run_eta_for(p);  // as coolgas-simulate's
   const double total = c.value[end], t_end = c.time[end];
   Replay r;
   int next_decile = 1;
@@ -64,7 +64,6 @@ int main(int argc, char** argv) {
     const std::string path = argv[a];
     const auto info = coolgas::read_run_info(path);
     const auto c = coolgas::read_observable(path, coolgas::layout::kCollisions);
-    const double most = info.params.model == "aggregation" ? double(info.params.N - 1) : INFINITY;
     // Ends at t = 1e3, 1e4, ... below the run's own, and its own.
     std::vector<std::size_t> ends;
     for (std::size_t i = 0; i + 1 < c.time.size(); ++i) {
@@ -73,8 +72,7 @@ int main(int argc, char** argv) {
     }
     ends.push_back(c.time.size() - 1);
     for (std::size_t end : ends) {
-      const double L = info.params.model == "elastic" ? INFINITY : info.params.L;  // as simulate/run/simulation.cc
-      const Replay r = replay(c, end, L, most);
+      const Replay r = replay(c, end, info.params);
       std::printf("%s\t%.4g\t%s\t%.4g\t%.3f\t%.3g\t%.3f\t%.3g\t", path.c_str(), info.params.L,
                   info.params.model.c_str(), c.time[end], r.lo, r.t_lo, r.hi, r.t_hi);
       for (double d : r.at_decile) std::printf(" %.2f", d);

@@ -18,13 +18,19 @@ double h(double x) { return x / ((1 + x) * std::log1p(x)); }
 double haff(double x0, double x1) { return std::log(std::log1p(x1) / std::log1p(x0)); }
 
 // Samples at 20 per decade of t, from 0.01 to 100, of C = 1000 t^p.
-RunEta power_law_run(double L, double p) {
-  RunEta eta(L);
+RunEta power_law_run(RunEta eta, double p) {
   for (int k = -40; k <= 40; ++k) {
     const double t = std::pow(10.0, k / 20.0), c = 1000 * std::pow(t, p);
     eta.add({t, c, c / kRate});
   }
   return eta;
+}
+RunEta power_law_run(double L, double p) { return power_law_run(RunEta(L), p); }
+
+RunParameters gas(const std::string& model, double L, double phi, double r0, double delta) {
+  RunParameters p;
+  p.model = model, p.N = 1000, p.L = L, p.phi = phi, p.r0 = r0, p.delta = delta;
+  return p;
 }
 
 // An elastic gas: C = 1000 t (the collision rate does not change).
@@ -78,6 +84,36 @@ TEST(RunEta, ASlowGrowthBeforeTheKneeIsRaisedToTheClusteringRegimes) {
   const RunEta beyond = power_law_run(2, 0.2);
   EXPECT_LT(beyond.expected_collisions(1e4), now * std::pow(100.0, 0.2));
   EXPECT_GT(beyond.expected_collisions(1e4), now);
+}
+
+// The floor, linear in phi, r0 and log10 delta (run_eta.cc): 0.6 for the
+// paper's gas; + 0.1 for delta ten times smaller; - 0.08 per 0.1 of phi less
+// (phi = 0.052: 0.6 - 0.8 * 0.156); - 0.2 per unit of r0 more; held within
+// [0.3, 0.9], also without a cut-off (delta = 0: an infinite log).
+TEST(RunEta, TheClusteringFloorFollowsTheGas) {
+  EXPECT_NEAR(clustering_floor(0.208, 0.1, 1e-4), 0.6, 1e-12);
+  EXPECT_NEAR(clustering_floor(0.208, 0.1, 1e-5), 0.7, 1e-12);
+  EXPECT_NEAR(clustering_floor(0.052, 0.1, 1e-4), 0.4752, 1e-12);
+  EXPECT_NEAR(clustering_floor(0.208, 0.9, 1e-4), 0.44, 1e-12);
+  EXPECT_EQ(clustering_floor(0.208, 0.1, 1e-9), 0.9);
+  EXPECT_EQ(clustering_floor(0.208, 0.1, 0), 0.9);
+  EXPECT_EQ(clustering_floor(0.01, 0.99, 1e-2), 0.3);
+}
+
+// A run's own rule: C = 1000 t^0.2 before the knee is carried on at the
+// gas's floor (0.6 for the paper's gas, 0.5 for a viscoelastic one); an
+// elastic gas is extrapolated at its own exponent whatever its box (no knee);
+// aggregation is held to N - 1 merges.
+TEST(RunEta, EachModelGetsItsOwnRule) {
+  const double now = 1000 * std::pow(100.0, 0.2), tol = 1e-9 * now * 100;
+  EXPECT_NEAR(power_law_run(run_eta_for(gas("inelastic", 1e6, 0.208, 0.1, 1e-4)), 0.2).expected_collisions(1e4),
+              now * std::pow(100.0, 0.6), tol);
+  RunParameters visco = gas("viscoelastic", 1e6, 0.208, 1, 0);
+  visco.r0 = visco.delta = std::nullopt;
+  EXPECT_NEAR(power_law_run(run_eta_for(visco), 0.2).expected_collisions(1e4), now * std::pow(100.0, 0.5), tol);
+  RunParameters elastic = gas("elastic", 2, 0.208, 1, 0);
+  EXPECT_NEAR(power_law_run(run_eta_for(elastic), 1).expected_collisions(1e4), 1e7, 1e-9 * 1e7);
+  EXPECT_EQ(power_law_run(run_eta_for(gas("aggregation", 1e6, 0.208, 1, 0)), 0.5).expected_collisions(1e4), 999);
 }
 
 // Ballistic aggregation: at most N - 1 merges, whatever the extrapolation
