@@ -6,7 +6,11 @@
 // event, never by reading the position, so round-off cannot lose a particle.
 // The forward links of the lists may live inside the caller's particle
 // records (bind_next_links), so that walking a cell touches one cache line
-// per particle.
+// per particle. The list heads are stored in blocks of 4 x 2 x 2 cells, one
+// cache line each (slot()): the 27 cells around one then span 6 lines on
+// average instead of 9 rows of 3, and the 9 beyond a face 3.3 instead of 5.3.
+// Cells keep their plain index (z n + y) n + x everywhere else, checkpoints
+// included.
 #pragma once
 #include <cstdint>
 #include <string>
@@ -47,7 +51,10 @@ class CellGrid {
 
   int cell(int particle) const { return cell_[particle]; }
   void prefetch_cell(int particle) const { __builtin_prefetch(&cell_[std::size_t(particle)]); }
-  int first(int cell) const { return head_[cell]; }
+  // Where a cell's list head is stored: a sum of one term per axis.
+  int slot(const CellCoord& c) const { return slot_x_[c.x] + slot_y_[c.y] + slot_z_[c.z]; }
+  int first_in_slot(int slot) const { return head_[slot]; }
+  int first(int cell) const { return head_[slot(coord(cell))]; }
   int next(int particle) const { return next_[std::size_t(particle) * stride_]; }
   // Keeps the forward links at base[i * stride] instead of in the grid.
   void bind_next_links(std::int32_t* base, std::size_t stride) {
@@ -74,7 +81,8 @@ class CellGrid {
   int n_ = 0;
   double w_ = 0;
   double inv_n_ = 0;  // 1 / n_
-  std::vector<std::int32_t> head_;  // first particle of each cell, -1 if empty
+  std::vector<std::int32_t> head_;  // first particle of each cell, -1 if empty, at slot(cell)
+  std::vector<std::int32_t> slot_x_, slot_y_, slot_z_;  // slot()'s terms, one per coordinate
   std::vector<std::int32_t> prev_, cell_;
   std::vector<std::int32_t> own_next_;  // forward links, unless bound to the caller's records
   std::int32_t* next_ = nullptr;
@@ -123,24 +131,23 @@ void for_each_neighbour_cell(int n, double L, const CellCoord& c, F&& f) {
 }
 
 // The same walk, specialised for the engine's partner search: writes the
-// cell indices to `cells` and returns how many. An interior cell (~90 % of
-// them) needs no shifts: its rows are runs of consecutive indices, and
-// `shifts` is left untouched (wraps = false); otherwise shifts[k] holds the
-// shift of cells[k] (wraps = true).
-inline int neighbour_cells(const CellGrid& grid, double L, const CellCoord& c, const int* lo, const int* hi,
-                           int* cells, double (*shifts)[3], bool& wraps) {
+// cells' head slots (CellGrid::slot) to `slots` and returns how many. An
+// interior cell (~90 % of them) needs no shifts, and `shifts` is left
+// untouched (wraps = false); otherwise shifts[k] holds the shift of the k-th
+// cell (wraps = true).
+inline int neighbour_slots(const CellGrid& grid, double L, const CellCoord& c, const int* lo, const int* hi,
+                           int* slots, double (*shifts)[3], bool& wraps) {
   const int n = grid.cells_per_side();
   int k = 0;
   wraps = !(c.x > 0 && c.y > 0 && c.z > 0 && c.x < n - 1 && c.y < n - 1 && c.z < n - 1);
   if (!wraps) {
-    const int home = grid.index(c);
     for (int oz = lo[2]; oz <= hi[2]; ++oz)
       for (int oy = lo[1]; oy <= hi[1]; ++oy)
-        for (int ox = lo[0]; ox <= hi[0]; ++ox, ++k) cells[k] = home + (oz * n + oy) * n + ox;
+        for (int ox = lo[0]; ox <= hi[0]; ++ox, ++k) slots[k] = grid.slot({c.x + ox, c.y + oy, c.z + oz});
     return k;
   }
   for_each_neighbour_cell(n, L, c, lo, hi, [&](const NeighbourCell& nb) {
-    cells[k] = nb.index;
+    slots[k] = grid.slot(nb.cell);
     shifts[k][0] = nb.shift.x, shifts[k][1] = nb.shift.y, shifts[k][2] = nb.shift.z;
     ++k;
   });

@@ -265,11 +265,11 @@ void Engine<Rule>::scan_list(const Vec3& ri, const Vec3& vi, int first, const do
 // latency). Two searches started one after the other overlap too.
 template <class Rule>
 void Engine<Rule>::start_search(int home, const int* lo, const int* hi, Search& s) const {
-  int cells[27];
-  const int count = neighbour_cells(grid_, L_, grid_.coord(home), lo, hi, cells, s.shifts, s.wraps);
+  int slots[27];
+  const int count = neighbour_slots(grid_, L_, grid_.coord(home), lo, hi, slots, s.shifts, s.wraps);
   s.n = 0;
   for (int k = 0; k < count; ++k) {
-    s.heads[s.n] = grid_.first(cells[k]);
+    s.heads[s.n] = grid_.first_in_slot(slots[k]);
     s.which[s.n] = k;
     s.n += s.heads[s.n] >= 0;
   }

@@ -53,14 +53,14 @@ TEST(NeighbourCells, SpecialisedSearchMatchesThePeriodicWalker) {
       if (slab >= 0) lo[slab / 2] = hi[slab / 2] = slab % 2 ? 1 : -1;
       for (int cell = 0; cell < n * n * n; ++cell) {
         const CellCoord c = grid.coord(cell);
-        int cells[27];
+        int slots[27];
         double shifts[27][3];
         bool wraps = false;
-        const int count = neighbour_cells(grid, L, c, lo, hi, cells, shifts, wraps);
+        const int count = neighbour_slots(grid, L, c, lo, hi, slots, shifts, wraps);
         int k = 0;
         for_each_neighbour_cell(n, L, c, lo, hi, [&](const NeighbourCell& nb) {
           ASSERT_LT(k, count);
-          EXPECT_EQ(cells[k], nb.index) << "n " << n << " cell " << cell << " slab " << slab;
+          EXPECT_EQ(slots[k], grid.slot(grid.coord(nb.index))) << "n " << n << " cell " << cell << " slab " << slab;
           EXPECT_EQ(grid.index(nb.cell), nb.index);
           for (int d = 0; d < 3; ++d) EXPECT_EQ(wraps ? shifts[k][d] : 0.0, nb.shift[d]);
           ++k;
