@@ -10,7 +10,7 @@
 #
 # Every figure comes from a measurement on this project's machine:
 #   N        = PHI L^3 / (pi/6)
-#   memory   = 180 bytes per particle (gas) or 224 (aggregation), the measured
+#   memory   = 180 bytes per particle (gas) or 187 (aggregation), the measured
 #              peaks at N = 8e6 and 1e6 (tests/bench/README.md), times 1.5,
 #              plus 256 MB, rounded up to whole GB
 #   dumps    = t = 0, the grid 10^(k/DUMPS_PER_DECADE) from t = 0.01 below
@@ -43,8 +43,13 @@
 #     203 000 per CPU second, over the same at N = 1.25e5, 391 000; taken for
 #     N = 8e6 too, not measured: both sizes are far beyond the 32 MB cache).
 #     Set-up: 5 equilibration collisions per particle.
-#     Aggregation: at most N - 1 merges at 5 400 merges per second (W3,
-#     N = 1e6, tests/bench/README.md), a bound, and the same set-up.
+#     Aggregation: at most N - 1 merges (a bound), at the merge rate and
+#     with the set-up time per particle of W3b (build/bench/aggregation_bench
+#     at N = 8e6 to t = 1e5, tests/bench/README.md, wall times within 11 %
+#     of CPU): 35 971 merges per second and 153.2 s of set-up at phi =
+#     0.208; 12 813 and 688.5 s at phi = 0.005 (its dilute equilibration);
+#     for the phi between, both interpolated in log phi, and the set-up
+#     scaled with N.
 set -e
 L=$1 t_end=$2 phi=${3:-0.208} r0=${4:-0.1} delta=${5:-1e-4} per_decade=${6:-1} dump_times=${7:-}
 awk -v L="$L" -v t="$t_end" -v phi="$phi" -v r0="$r0" -v delta="$delta" -v per_decade="$per_decade" \
@@ -103,8 +108,9 @@ BEGIN {
   for (i = 1; i <= m; i++) if (extra[i] + 0 > 0 && extra[i] + 0 < t && !(sprintf("%.6g", extra[i] + 0) in grid)) dumps++
 
   if (ba) {
-    peak = 224 * N
-    seconds = N / 5400 + N * 5 / 2 / (N <= 1.3e5 ? rate_small : rate_large)
+    peak = 187 * N
+    f = (log(phi) - log(0.005)) / (log(0.208) - log(0.005))  # between the two phi of W3b
+    seconds = N / exp(log(12813) + f * log(35971 / 12813)) + N / 8e6 * exp(log(688.5) + f * log(153.2 / 688.5))
     bytes = 62
   } else {
     peak = 180 * N
