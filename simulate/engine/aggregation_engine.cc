@@ -249,7 +249,7 @@ template <class F>
 void AggregationEngine::for_each_cell_in_reach(int i, int reach, F&& f) const {
   const CellCoord c = grid_->coord(fine_cell(i));
   if (reach == 1) {
-    for_each_neighbour_cell(grid_->cells_per_side(), L_, c, [&](const NeighbourCell& nb) { f(nb.index, nb.shift); });
+    for_each_neighbour_cell(grid_->cells_per_side(), L_, c, [&](const NeighbourCell& nb) { f(nb.cell, nb.shift); });
   } else {
     for_each_cell_within(grid_->cells_per_side(), L_, c, reach, f);
   }
@@ -284,8 +284,8 @@ void AggregationEngine::for_each_large_image(int i, F&& f) const {
 // their pair's reach allows.
 template <class F>
 void AggregationEngine::for_each_candidate(int i, F&& f) const {
-  for_each_cell_in_reach(i, reach_of(i), [&](int cell, const Vec3& shift) {
-    for (int j = grid_->first(cell); j >= 0; j = grid_->next(j))
+  for_each_cell_in_reach(i, reach_of(i), [&](const CellCoord& cell, const Vec3& shift) {
+    for (int j = grid_->first_in_slot(grid_->slot(cell)); j >= 0; j = grid_->next(j))
       if (j != i) f(j, shift);
   });
   for_each_large_image(i, f);

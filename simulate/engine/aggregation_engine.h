@@ -109,7 +109,7 @@ class AggregationEngine final : public EngineBase {
   int fine_cell(int i) const { return large_.contains(i) ? large_.fine_cell(i) : grid_->cell(i); }
   int reach_of(int i) const;
   int size_class(int i) const;
-  // Calls f(cell, shift) for the cells within `reach` of aggregate i's.
+  // Calls f(cell coordinates, shift) for the cells within `reach` of aggregate i's.
   template <class F>
   void for_each_cell_in_reach(int i, int reach, F&& f) const;
   [[noreturn]] void throw_too_large() const;

@@ -33,8 +33,9 @@ inline AxisStep axis_step(int c, int o, int n, double L) {
   return {x - q * n, q * L};
 }
 
-// Calls f(cell index, shift) for every offset in [-reach, reach]³ around c
-// of a grid of n³ cells in a box of side L (z slowest, x fastest).
+// Calls f(cell coordinates, wrapped; shift) for every offset in
+// [-reach, reach]³ around c of a grid of n³ cells in a box of side L
+// (z slowest, x fastest).
 template <class F>
 void for_each_cell_within(int n, double L, const CellCoord& c, int reach, F&& f) {
   std::vector<AxisStep> x(std::size_t(2 * reach + 1)), y(x.size());
@@ -45,7 +46,7 @@ void for_each_cell_within(int n, double L, const CellCoord& c, int reach, F&& f)
   for (int oz = -reach; oz <= reach; ++oz) {
     const AxisStep z = axis_step(c.z, oz, n, L);
     for (const AxisStep& sy : y)
-      for (const AxisStep& sx : x) f((z.cell * n + sy.cell) * n + sx.cell, Vec3{sx.shift, sy.shift, z.shift});
+      for (const AxisStep& sx : x) f(CellCoord{sx.cell, sy.cell, z.cell}, Vec3{sx.shift, sy.shift, z.shift});
   }
 }
 
