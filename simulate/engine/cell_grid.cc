@@ -66,7 +66,7 @@ int CellGrid::cell_of(double x, double y, double z) const {
 }
 
 void CellGrid::insert(int p, int cell) {
-  std::int32_t& head = head_[std::size_t(slot(coord(cell)))];
+  std::int32_t& head = head_of(cell);
   cell_[p] = cell;
   prev_[p] = -1;
   link(p) = head;
@@ -78,7 +78,7 @@ void CellGrid::remove(int p) {
   const int c = cell_[p];
   const int nxt = link(p);
   if (prev_[p] >= 0) link(prev_[p]) = nxt;
-  else head_[std::size_t(slot(coord(c)))] = nxt;
+  else head_of(c) = nxt;
   if (nxt >= 0) prev_[nxt] = prev_[p];
   cell_[p] = -1;
 }
@@ -145,7 +145,7 @@ void CellGrid::load(const StateReader& in, const std::string& prefix) {
   same_size(prev, prev_, "prev");
   same_size(cell, cell_, "cell");
   same_size(own, own_next_, "own_next");
-  for (std::size_t c = 0; c < heads.size(); ++c) head_[std::size_t(slot(coord(int(c))))] = heads[c];
+  for (std::size_t c = 0; c < heads.size(); ++c) head_of(int(c)) = heads[c];
   prev_ = std::move(prev);
   cell_ = std::move(cell);
   own_next_ = std::move(own);

@@ -54,7 +54,7 @@ class CellGrid {
   // Where a cell's list head is stored: a sum of one term per axis.
   int slot(const CellCoord& c) const { return slot_x_[c.x] + slot_y_[c.y] + slot_z_[c.z]; }
   int first_in_slot(int slot) const { return head_[slot]; }
-  int first(int cell) const { return head_[slot(coord(cell))]; }
+  int first(int cell) const { return head_[std::size_t(slot(coord(cell)))]; }
   int next(int particle) const { return next_[std::size_t(particle) * stride_]; }
   // Keeps the forward links at base[i * stride] instead of in the grid.
   void bind_next_links(std::int32_t* base, std::size_t stride) {
@@ -88,6 +88,7 @@ class CellGrid {
   std::int32_t* next_ = nullptr;
   std::size_t stride_ = 1;
   std::int32_t& link(int p) { return next_[std::size_t(p) * stride_]; }
+  std::int32_t& head_of(int cell) { return head_[std::size_t(slot(coord(cell)))]; }
 };
 
 // One cell of a neighbour walk.

@@ -93,7 +93,7 @@ FrameView view_of(const EngineFrame& f) {
   return v;
 }
 
-// Drives the engine from stop to stop, writing as it goes.
+// The /parameters of a run of this scene (and what its ETA is made from).
 RunParameters parameters_of(const Scene& s) {
   RunParameters p;
   p.scene_toml = s.to_toml();
@@ -113,6 +113,7 @@ RunParameters parameters_of(const Scene& s) {
   return p;
 }
 
+// Drives the engine from stop to stop, writing as it goes.
 class Driver {
  public:
   // `interval`: wall-clock seconds between periodic checkpoints.
