@@ -7,6 +7,10 @@
 
 #include "simulate/engine/cell_grid.h"
 
+#include <cstdio>
+#include <set>
+#include <vector>
+
 namespace coolgas {
 namespace {
 
@@ -37,6 +41,41 @@ TEST(CellGrid, CoordInvertsIndexAcrossTheLargestGrid) {
   for (long long k = 1; k < 1LL * n * n; ++k) {
     expect_round_trip(n, k * n - 1);
     expect_round_trip(n, k * n);
+  }
+}
+
+// The heads are stored in blocks (slot()), padded where n is not a
+// multiple of a block's side: each cell still has a slot of its own, and a
+// checkpoint holds the heads by plain cell index, so checkpoints written
+// before the blocks load unchanged. One particle per cell, particle c in cell
+// c; n = 5 pads every axis.
+TEST(CellGrid, HeadsHaveDistinctSlotsAndCheckpointsHoldThemByCellIndex) {
+  const int n = 5, cells = n * n * n;
+  CellGrid grid(n * 1.01, 1.0, std::size_t(cells));
+  std::set<int> slots;
+  for (int c = 0; c < cells; ++c) {
+    slots.insert(grid.slot(grid.coord(c)));
+    grid.insert(c, c);
+  }
+  EXPECT_EQ(int(slots.size()), cells);
+  std::FILE* f = std::tmpfile();
+  ASSERT_NE(f, nullptr);
+  StateWriter out(f);
+  grid.save(out, "g/");
+  out.finish();
+  std::vector<char> bytes(std::size_t(std::ftell(f)));
+  std::rewind(f);
+  ASSERT_EQ(std::fread(bytes.data(), 1, bytes.size(), f), bytes.size());
+  std::fclose(f);
+  const StateReader in(bytes, "memory");
+  const std::vector<std::int32_t> heads = in.get<std::int32_t>("g/heads");
+  ASSERT_EQ(int(heads.size()), cells);
+  CellGrid back(n * 1.01, 1.0, std::size_t(cells));
+  back.load(in, "g/");
+  for (int c = 0; c < cells; ++c) {
+    EXPECT_EQ(heads[std::size_t(c)], c);
+    EXPECT_EQ(back.first(c), c);
+    EXPECT_EQ(back.next(c), -1);
   }
 }
 
