@@ -35,6 +35,10 @@ constexpr int kStepsPerUnit = 64;  // the tail's integral: midpoints per unit of
 constexpr double kLogSpacing = 1.01;
 constexpr double kRateWindow = 0.25;  // the rate is taken over this last fraction of the busy time
 
+double collisions_of(const RunSample& s) { return s.collisions; }
+double events_of(const RunSample& s) { return s.events; }
+double others_of(const RunSample& s) { return s.events - s.collisions; }  // crossings (and stale events)
+
 // Haff's law, E ~ (1 + t/tau)^-2 with a collision rate ~ sqrt(E), gives
 // C ~ ln(1 + x), x = t/tau: its exponent h(x) = x / ((1 + x) ln(1 + x))
 // falls from 1 to 0, and its integral over ln t is ln ln(1 + x).
@@ -115,7 +119,8 @@ double clustering_floor(double phi, double r0, double delta) {
 RunEta run_eta_for(const RunParameters& p) {
   if (p.model == "elastic") return RunEta(INFINITY);  // no cooling, no finite-size regime
   if (p.model == "aggregation") return RunEta(p.L, double(p.N - 1));
-  if (p.model == "inelastic" && p.r0 && p.delta) return RunEta(p.L, INFINITY, clustering_floor(p.phi, *p.r0, *p.delta));
+  if (p.model == "inelastic" && p.r0 && p.delta)
+    return RunEta(p.L, INFINITY, clustering_floor(p.phi, *p.r0, *p.delta), kCrossingFloor);
   return RunEta(p.L);
 }
 
@@ -126,7 +131,10 @@ void RunEta::add(const RunSample& s) {
   else samples_.push_back(s);
 }
 
-double RunEta::collision_rate() const {
+double RunEta::collision_rate() const { return rate_of(collisions_of); }
+double RunEta::event_rate() const { return rate_of(events_of); }
+
+double RunEta::rate_of(Count count) const {
   if (samples_.size() < 2) return 0;
   const RunSample& b = samples_.back();
   // The newest sample at least kRateWindow of the busy time back (else the first).
@@ -134,14 +142,18 @@ double RunEta::collision_rate() const {
   const RunSample* a = &samples_.front();
   for (const RunSample& s : samples_)
     if (s.busy_seconds <= from && &s != &b) a = &s;
-  return b.busy_seconds > a->busy_seconds ? (b.collisions - a->collisions) / (b.busy_seconds - a->busy_seconds) : 0;
+  const double r = (count(b) - count(*a)) / (b.busy_seconds - a->busy_seconds);
+  return b.busy_seconds > a->busy_seconds && std::isfinite(r) ? r : 0;
 }
 
-double RunEta::exponent(double lo, double hi) const {
+double RunEta::exponent(double lo, double hi) const { return exponent_of(collisions_of, lo, hi); }
+
+double RunEta::exponent_of(Count count, double lo, double hi) const {
   double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
   for (const RunSample& s : samples_) {
-    if (!(s.t > 0 && s.collisions > 0 && s.t >= lo && s.t <= hi)) continue;
-    const double x = std::log(s.t), y = std::log(s.collisions);
+    const double c = count(s);
+    if (!(s.t > 0 && c > 0 && s.t >= lo && s.t <= hi)) continue;
+    const double x = std::log(s.t), y = std::log(c);
     n += 1, sx += x, sy += y, sxx += x * x, sxy += x * y;
   }
   const double det = n * sxx - sx * sx;
@@ -161,11 +173,34 @@ double RunEta::expected_collisions(double t_end) const {
   return std::min(most_, now.collisions * std::exp(log_growth(t, t_end, a, clustering_, knee, kTail, kTailFall)));
 }
 
+double RunEta::expected_events(double t_end) const {
+  if (std::isnan(crossings_) || samples_.empty() || !(samples_.back().events >= samples_.back().collisions)) return NAN;
+  const double collisions = expected_collisions(t_end);
+  if (!std::isfinite(collisions)) return NAN;
+  const RunSample& now = samples_.back();
+  const double others = now.events - now.collisions;
+  if (now.t >= t_end || !(others > 0)) return collisions + others;
+  const double a = exponent_of(others_of, now.t / kFitWindow, now.t);
+  if (!std::isfinite(a)) return NAN;
+  // Never below the floor, nor below the exponent now if that is lower (a gas
+  // still cooling faster than t^-6/5 keeps at least its present rate of fall).
+  return collisions + others * std::exp(log_growth(now.t, t_end, a, std::min(a, crossings_), INFINITY, kTail, kTailFall));
+}
+
 double RunEta::seconds_left(double t_end) const {
-  const double rate = collision_rate();
-  const double expected = expected_collisions(t_end);
+  const double events = expected_events(t_end);
+  const bool in_events = std::isfinite(events);
+  const double rate = in_events ? event_rate() : collision_rate();
+  const double expected = in_events ? events : expected_collisions(t_end);
   if (!(rate > 0) || !std::isfinite(expected)) return NAN;
-  return std::max(0.0, expected - samples_.back().collisions) / rate;
+  const RunSample& now = samples_.back();
+  return std::max(0.0, expected - (in_events ? now.events : now.collisions)) / rate;
+}
+
+double output_seconds_left(int dumps_left, double engine_seconds_left, double interval, const OutputCost& dumps,
+                           const OutputCost& checkpoints) {
+  const double dump = dumps.latest(0), checkpoint = checkpoints.latest(dump);
+  return std::max(dumps_left, 0) * dump + (1 + engine_seconds_left / std::max(interval, 1.0)) * checkpoint;
 }
 
 }  // namespace coolgas

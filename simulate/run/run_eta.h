@@ -1,6 +1,14 @@
 // The wall time a cooling-gas run still needs, for the progress line: the
-// collisions still expected, divided by the recent collision rate (per
-// second spent in the engine: dump and checkpoint I/O excluded).
+// engine's work still expected, divided by its recent rate (per second spent
+// in the engine), plus the dumps and checkpoints still due at the cost
+// measured for those already written.
+//
+// The engine's work is counted in collisions or, where the cell crossings
+// are modelled (the inelastic gas), in events: a collision and a crossing
+// cost about the same (measured: 1.0-1.4e6 events per busy second before and
+// after a dilute gas clusters, while its collisions per second double), and
+// crossings, which follow the temperature, grow more slowly than the
+// collisions inside clusters (tests/bench/README.md, "ETA").
 //
 // The collisions still expected come from the run so far. The local exponent
 // a of the cumulative collisions C(t) (the slope of ln C on ln t, fitted over
@@ -11,7 +19,11 @@
 // t = 0.5 L^(5/2) the clustering regime, where a stays at least a floor
 // (0.6 for the paper's gas; clustering_floor() for others), and
 // beyond it the finite-size regime, where a is at most 0.35 (t/t_knee)^-0.35
-// (the constants and how they were chosen: run_eta.cc). A run that has not yet covered a
+// (the constants and how they were chosen: run_eta.cc). The crossings X(t)
+// are carried on the same way with the floor 1 - theta/2 = 0.4 (a crossing
+// rate ~ sqrt(E), E ~ t^-theta, theta = 6/5 in the clustered gas, the
+// paper's result), or their exponent now if it is lower, and no
+// finite-size fall. A run that has not yet covered a
 // factor 3 of t is not extrapolated. A gas that does not cool (a >= 1)
 // keeps its exponent; pass L = INFINITY where no finite-size regime comes.
 //
@@ -30,33 +42,67 @@ struct RunSample {
   double t = 0;             // simulated time
   double collisions = 0;    // cumulative, since t = 0
   double busy_seconds = 0;  // wall seconds spent advancing the engine so far
+  double events = NAN;      // cumulative events of all kinds (collisions, crossings, stale); NaN if unknown
 };
 
 class RunEta {
  public:
   // `most_collisions`: a bound C(t) cannot pass (ballistic aggregation: one
   // merge per aggregate lost, so N - 1). `clustering`: the floor of the
-  // exponent before the knee.
-  explicit RunEta(double L, double most_collisions = INFINITY, double clustering = 0.5)
-      : L_(L), most_(most_collisions), clustering_(clustering) {}
+  // exponent before the knee. `crossings`: the floor of the exponent of the
+  // events other than collisions, NaN to count the work in collisions alone.
+  explicit RunEta(double L, double most_collisions = INFINITY, double clustering = 0.5, double crossings = NAN)
+      : L_(L), most_(most_collisions), clustering_(clustering), crossings_(crossings) {}
   // Keeps samples log-spaced in t (one per 1 % of t at most); the last
   // sample is always the newest.
   void add(const RunSample& s);
   // Collisions per busy second over the last quarter of the busy time (the
   // rate changes with the gas and with the machine's load); 0 if unknown.
   double collision_rate() const;
+  // The same for events of all kinds; 0 if unknown.
+  double event_rate() const;
   // The local exponent of C(t) (least squares of ln C on ln t) over
   // lo <= t <= hi; NaN without two distinct times.
   double exponent(double lo, double hi) const;
   // The cumulative collisions expected at t_end; NaN if not yet known.
   double expected_collisions(double t_end) const;
-  // Wall seconds still needed to reach t_end; NaN if not yet known.
+  // The cumulative events expected at t_end: the collisions expected and the
+  // other events carried on with the `crossings` floor; NaN if not modelled
+  // or not yet known.
+  double expected_events(double t_end) const;
+  // Seconds in the engine still needed to reach t_end (in events where they
+  // are modelled, else in collisions); NaN if not yet known.
   double seconds_left(double t_end) const;
 
  private:
-  double L_, most_, clustering_;
+  // The rate and the local exponent of one cumulative count of the samples.
+  using Count = double (*)(const RunSample&);
+  double rate_of(Count count) const;
+  double exponent_of(Count count, double lo, double hi) const;
+
+  double L_, most_, clustering_, crossings_;
   std::vector<RunSample> samples_;
 };
+
+// The floor of the exponent of the cell crossings in the clustering regime:
+// 1 - theta/2 for theta = 6/5 (the paper's energy decay, t^-theta).
+constexpr double kCrossingFloor = 0.4;
+
+// The wall seconds the latest output of one kind (dump, checkpoint) took:
+// the next one's best guess (aggregation's dumps get cheaper as aggregates
+// die; the machine's load changes).
+struct OutputCost {
+  double seconds = NAN;
+  void add(double s) { seconds = s; }
+  double latest(double otherwise) const { return std::isnan(seconds) ? otherwise : seconds; }
+};
+
+// Wall seconds the outputs still due take: `dumps_left` dumps at the cost
+// of the latest dump, and the checkpoints (one per `interval` wall seconds,
+// at least 1 s, of the engine's `engine_seconds_left`, and the last) at the
+// latest checkpoint's, or the latest dump's while none is written.
+double output_seconds_left(int dumps_left, double engine_seconds_left, double interval, const OutputCost& dumps,
+                           const OutputCost& checkpoints);
 
 // The floor of the exponent in the clustering regime of an inelastic gas
 // with the delta cut-off (the paper's Eq. 1): 0.6 at phi = 0.208, r0 = 0.1,
@@ -66,7 +112,8 @@ double clustering_floor(double phi, double r0, double delta);
 
 // The ETA of a run of these parameters: an elastic gas has no finite-size
 // regime, aggregation at most N - 1 merges, the inelastic gas its own
-// clustering floor; other cooling gases (viscoelastic) the floor 0.5.
+// clustering floor and its crossings modelled; other cooling gases
+// (viscoelastic) the floor 0.5.
 RunEta run_eta_for(const RunParameters& p);
 
 // ln(C(t_end) / C(t)) for a local exponent that is a at t and then falls

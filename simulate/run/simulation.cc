@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -133,7 +134,9 @@ class Driver {
   int run() {
     const double t0 = engine_.now();
     const std::int64_t c0 = engine_.counters().collisions;
-    for (const StopTime& stop : stop_times(scene_)) {
+    const std::vector<StopTime> stops = stop_times(scene_);
+    dumps_left_ = int(std::count_if(stops.begin(), stops.end(), [&](const StopTime& s) { return s.dump && s.t > written_; }));
+    for (const StopTime& stop : stops) {
       if (stop.t < t0) continue;  // (a stop at t0 itself may be due: a checkpoint is taken before its stop)
       if (!advance_to(stop.t)) return finish_interrupted();
       if (stop.observe) record(row_of(engine_.observables()));
@@ -151,8 +154,10 @@ class Driver {
     dump();
   }
   void checkpoint() {
+    const auto start = clock::now();
     write_checkpoint(path_, scene_, engine_, last_dump_, pending_);
     last_checkpoint_ = clock::now();
+    checkpoint_cost_.add(seconds_since(start));
   }
 
   // Called when the engine cannot go on: its state is written as the last dump.
@@ -166,6 +171,9 @@ class Driver {
 
  private:
   using clock = std::chrono::steady_clock;
+  static double seconds_since(clock::time_point start) {
+    return std::chrono::duration<double>(clock::now() - start).count();
+  }
 
   // One row of observables, unless the file holds it already.
   void record(const ObservableRow& row) {
@@ -178,8 +186,11 @@ class Driver {
   void dump() {
     const double t = engine_.now();
     if (t > written_) {
+      const auto start = clock::now();
       const EngineFrame f = engine_.frame();
       writer_.add_frame(view_of(f));
+      dump_cost_.add(seconds_since(start));
+      --dumps_left_;
     }
     last_dump_ = t;
     pending_.clear();
@@ -189,9 +200,9 @@ class Driver {
     while (true) {
       const auto slice_start = clock::now();
       const RunStatus status = engine_.run_until(t, kEventsPerSlice, interrupt_flag());
-      busy_seconds_ += std::chrono::duration<double>(clock::now() - slice_start).count();
+      busy_seconds_ += seconds_since(slice_start);
       if (status == RunStatus::kInterrupted) return false;
-      if (std::chrono::duration<double>(clock::now() - last_checkpoint_).count() >= interval_) checkpoint();
+      if (seconds_since(last_checkpoint_) >= interval_) checkpoint();
       show_progress();
       if (status == RunStatus::kReached) return true;
     }
@@ -205,13 +216,15 @@ class Driver {
     return kExitInterrupted;
   }
 
-  // Rates and the ETA count only the seconds spent in the engine
-  // (simulate/run/run_eta.h), not those of dumps and checkpoints.
+  // The rate shown counts only the seconds spent in the engine; the ETA adds
+  // the dumps and checkpoints still due (simulate/run/run_eta.h).
   void show_progress() {
     const double t = engine_.now(), coll = double(engine_.counters().collisions);
-    eta_.add({t, coll, busy_seconds_});
+    eta_.add({t, coll, busy_seconds_, double(engine_.counters().events)});
     if (!progress_.due()) return;
-    const double left = eta_.seconds_left(scene_.t_end);
+    const double engine_left = eta_.seconds_left(scene_.t_end);
+    const double left =
+        engine_left + output_seconds_left(dumps_left_, engine_left, interval_, dump_cost_, checkpoint_cost_);
     std::ostringstream s;
     s.precision(3);
     s << "t = " << t << " / " << scene_.t_end << "  collisions " << coll << " (" << eta_.collision_rate()
@@ -239,6 +252,8 @@ class Driver {
   Progress progress_;
   RunEta eta_ = run_eta_for(parameters_of(scene_));
   double busy_seconds_ = 0;  // wall seconds inside the engine (no dumps, no checkpoints)
+  OutputCost dump_cost_, checkpoint_cost_;
+  int dumps_left_ = 0;  // dumps of the run still to write
   double interval_;
   clock::time_point last_checkpoint_;
   double written_ = -1;    // the file holds every output up to this time

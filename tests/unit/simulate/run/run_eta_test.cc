@@ -142,6 +142,57 @@ TEST(RunEta, TheRateIsTheRecentOne) {
   EXPECT_NEAR(eta.collision_rate(), 2.5e5, 1e-6 * 2.5e5);
 }
 
+// The inelastic gas counts its work in events, at 2e5 per busy second:
+// C = 1000 t^0.2 is raised to its floor 0.6 before the knee; of the other
+// events (crossings), 3000 t^0.7 falls as under Haff's law to the floor
+// 1 - theta/2 = 0.4 (theta = 6/5), while 3000 t^0.1, already below it, keeps
+// its exponent. From t = 100 to 1e4. Without event counts (NaN) the same run
+// is counted in collisions, at their own rate.
+RunEta inelastic_run(double crossing_exponent, bool events_known) {
+  RunEta eta = run_eta_for(gas("inelastic", 1e6, 0.208, 0.1, 1e-4));
+  for (int k = -40; k <= 40; ++k) {
+    const double t = std::pow(10.0, k / 20.0), c = 1000 * std::pow(t, 0.2);
+    const double x = 3000 * std::pow(t, crossing_exponent);
+    eta.add({t, c, (c + x) / kRate, events_known ? c + x : NAN});
+  }
+  return eta;
+}
+
+TEST(RunEta, TheInelasticGasCountsCollisionsAndCrossings) {
+  const double c = 1000 * std::pow(100.0, 0.2), c_end = c * std::pow(100.0, 0.6);
+  const double x = 3000 * std::pow(100.0, 0.1), x_end = x * std::pow(100.0, 0.1);
+  const RunEta eta = inelastic_run(0.1, true);
+  EXPECT_NEAR(eta.event_rate(), kRate, 1e-9 * kRate);
+  EXPECT_NEAR(eta.expected_events(1e4), c_end + x_end, 1e-9 * (c_end + x_end));
+  EXPECT_NEAR(eta.seconds_left(1e4), (c_end + x_end - c - x) / kRate, 1e-9 * c_end / kRate);
+  const double y = 3000 * std::pow(100.0, 0.7), y_end = y * std::exp(log_growth(100, 1e4, 0.7, 0.4, INFINITY, 1, 0));
+  EXPECT_NEAR(inelastic_run(0.7, true).expected_events(1e4), c_end + y_end, 1e-9 * (c_end + y_end));
+  EXPECT_GT(y_end, y * std::pow(100.0, 0.4));  // the floor, reached on the way
+  const RunEta without = inelastic_run(0.1, false);
+  EXPECT_TRUE(std::isnan(without.expected_events(1e4)));
+  EXPECT_NEAR(without.seconds_left(1e4), (c_end - c) / without.collision_rate(), 1e-9 * c_end / kRate);
+  // Aggregation keeps counting merges alone (its crossings are not modelled).
+  RunEta ba = run_eta_for(gas("aggregation", 1e6, 0.208, 1, 0));
+  for (int k = -40; k <= 40; ++k) ba.add({std::pow(10.0, k / 20.0), 1.0 + k + 40, 1.0, 10.0 * (1 + k + 40)});
+  EXPECT_TRUE(std::isnan(ba.expected_events(1e4)));
+}
+
+// Outputs still due: 3 dumps at the latest dump's cost (3 s, after one of
+// 1 s); the checkpoints, one per 300 s of the 600 s the engine still needs
+// and the last, at the latest dump's cost while none is written, then at the
+// latest checkpoint's (5 s); an interval of 0 (a checkpoint after every
+// slice) counts as one per second.
+TEST(RunEta, OutputsStillDueCostWhatTheLatestOfTheirKindCost) {
+  OutputCost dumps, checkpoints;
+  EXPECT_EQ(output_seconds_left(3, 600, 300, dumps, checkpoints), 0);
+  dumps.add(1), dumps.add(3);
+  EXPECT_DOUBLE_EQ(output_seconds_left(3, 600, 300, dumps, checkpoints), 3 * 3 + 3 * 3);
+  checkpoints.add(5);
+  EXPECT_DOUBLE_EQ(output_seconds_left(3, 600, 300, dumps, checkpoints), 3 * 3 + 3 * 5);
+  EXPECT_DOUBLE_EQ(output_seconds_left(0, 10, 0, dumps, checkpoints), 11 * 5);
+  EXPECT_DOUBLE_EQ(output_seconds_left(-1, 0, 300, dumps, checkpoints), 5);  // no dump is ever owed back
+}
+
 TEST(RunEta, UnknownUntilAWholeFitWindowAndSamplesStayLogSpaced) {
   RunEta eta(INFINITY);  // C = 1000 t, as in AGasThatDoesNotCoolIsExtrapolatedExactly
   EXPECT_TRUE(std::isnan(eta.seconds_left(10)));
