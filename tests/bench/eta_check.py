@@ -9,10 +9,10 @@ which it was printed, and once the run has ended compares each with the truth:
 the wall time the run really still took. Prints, per scene, the ratio
 ETA / true remaining time at 10 %, 20 %, ... 90 % of the run's wall time (the
 last ETA printed by then), and the smallest and largest ratio of all the ETAs
-printed between 10 % and 90 % of it; then the same for the collisions the ETA
-expects still (ETA of 10 s or more, times the rate shown) over those really
-left, which does not depend on how the machine's load changed during the run.
-Also writes OUT_DIR/eta_check.tsv (one row per ETA printed, with the progress
+printed between 10 % and 90 % of it. The ETA includes the dumps and
+checkpoints still due, so it has no part that the machine's load leaves
+alone: the elastic scene, whose work is known exactly, shows what the load
+alone does to the ratio. Also writes OUT_DIR/eta_check.tsv (one row per ETA printed, with the progress
 line it came from).
 """
 import os
@@ -41,8 +41,6 @@ SCENES = {
 # The run's first progress line is due this long after its start (common/progress.cc):
 # the run's wall time is counted from then on, without the set-up.
 FIRST_LINE_S = 0.5
-LINE = re.compile(r"collisions (\S+) \((\S+)/s\)")
-DONE = re.compile(r", (\S+) collisions in ")
 ETA = re.compile(r"ETA (?:~(?:(\d+)h)?(?:(\d+)m)?(?:(\d+)s)?|\?)")
 
 
@@ -63,7 +61,7 @@ def run(bin_dir, out_dir, name):
     start = time.monotonic()
     proc = subprocess.Popen(args, stdout=subprocess.DEVNULL, stderr=slave)
     os.close(slave)
-    etas, pending, total = [], b"", float("nan")
+    etas, pending = [], b""
     while True:
         try:
             chunk = os.read(master, 4096)
@@ -79,22 +77,13 @@ def run(bin_dir, out_dir, name):
             m = ETA.search(text)
             if m and text.startswith("t = "):
                 etas.append((now, seconds(m), text.split("  ETA")[0]))
-            if text.startswith("done: "):
-                total = float(DONE.search(text).group(1))
     code = proc.wait()
     end = time.monotonic() - start
     os.close(master)
     if code != 0 or not etas:
         sys.exit(f"eta_check: {name} exited with {code} after {len(etas)} progress lines")
     origin = etas[0][0] - FIRST_LINE_S
-    return end - origin, [(at - origin, eta, line) for at, eta, line in etas], total
-
-
-def collisions_ratio(eta, line, total):
-    """The collisions the ETA expects still (ETA times the rate shown) over those really left."""
-    m = LINE.search(line)
-    done, rate = float(m.group(1)), float(m.group(2))
-    return eta * rate / (total - done) if total > done else float("nan")
+    return end - origin, [(at - origin, eta, line) for at, eta, line in etas]
 
 
 def main():
@@ -106,9 +95,9 @@ def main():
     fractions = [k / 10 for k in range(1, 10)]
     with open(os.path.join(out_dir, "eta_check.tsv"), "w") as tsv:
         tsv.write("scene\twall_s\teta_s\ttrue_s\tprogress_line\n")
-        print("scene\twall_s\t" + "\t".join(f"{f:.0%}" for f in fractions) + "\tmin\tmax\tcollisions_min\tcollisions_max")
+        print("scene\twall_s\t" + "\t".join(f"{f:.0%}" for f in fractions) + "\tmin\tmax")
         for name in names:
-            wall, etas, total = run(bin_dir, out_dir, name)
+            wall, etas = run(bin_dir, out_dir, name)
             for at, eta, line in etas:
                 tsv.write(f"{name}\t{at:.2f}\t{'nan' if eta is None else eta}\t{wall - at:.2f}\t{line}\n")
             tsv.flush()
@@ -118,14 +107,10 @@ def main():
                 at, eta = known[-1] if known else (0, None)
                 ratios.append(float("nan") if eta is None else eta / (wall - at))
             # Every ETA printed between the first and the last tenth (rounding
-            # to whole seconds dominates the ratio near the end); the same for
-            # the collisions it expects, which the machine's load does not change.
-            middle = [(at, eta, line) for at, eta, line in etas if eta is not None and 0.1 <= at / wall <= 0.9]
-            good = [eta / (wall - at) for at, eta, _ in middle]
-            hits = [collisions_ratio(eta, line, total) for _, eta, line in middle if eta >= 10]
-            extremes = lambda xs: f"{min(xs):.2f}\t{max(xs):.2f}" if xs else "nan\tnan"
-            print(f"{name}\t{wall:.0f}\t" + "\t".join(f"{r:.2f}" for r in ratios) +
-                  f"\t{extremes(good)}\t{extremes(hits)}", flush=True)
+            # to whole seconds dominates the ratio near the end).
+            good = [eta / (wall - at) for at, eta, _ in etas if eta is not None and 0.1 <= at / wall <= 0.9]
+            extremes = f"{min(good):.2f}\t{max(good):.2f}" if good else "nan\tnan"
+            print(f"{name}\t{wall:.0f}\t" + "\t".join(f"{r:.2f}" for r in ratios) + f"\t{extremes}", flush=True)
 
 
 if __name__ == "__main__":
