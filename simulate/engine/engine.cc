@@ -422,12 +422,19 @@ RunStatus Engine<Rule>::run_until(double t_stop, std::int64_t max_events, const 
       // Both searches are started before either is finished, and before the
       // collision itself (they read only cells): their misses overlap with
       // each other and with the collision's arithmetic.
+      // The partner's calendar neighbours load meanwhile too, and each new
+      // event's bucket head while the other event is found.
+      calendar_.prefetch_unlink(code);
       Search si, sj;
       start_search(grid_.cell(i), kAroundLo, kAroundHi, si);
       start_search(grid_.cell(code), kAroundLo, kAroundHi, sj);
       collide(i, code);
-      calendar_.schedule(i, finish_event(i, si));
-      calendar_.schedule(code, finish_event(code, sj));
+      const Event ei = finish_event(i, si);
+      calendar_.prefetch_insert(ei.time);
+      const Event ej = finish_event(code, sj);
+      calendar_.prefetch_insert(ej.time);
+      calendar_.schedule(i, ei);
+      calendar_.schedule(code, ej);
       if (c_.collisions >= next_rebuild_) {  // the engine's own schedule, never the caller's
         move_all_to_now();
         rebuild();

@@ -84,6 +84,21 @@ class EventCalendar {
   // -1 where there are none): the engine prefetches their data early.
   int runner_up(int k) const { return k + 1 < int(heap_.size()) ? heap_[std::size_t(k) + 1] : -1; }
   void prefetch_event(int particle) const { __builtin_prefetch(&entry_[std::size_t(particle)]); }
+  // What rescheduling `particle` will write besides its own entry: its list
+  // neighbours (or its bucket's head), to unlink it; only prefetches, so a
+  // link that changes meanwhile costs nothing but the miss.
+  void prefetch_unlink(int particle) const {
+    const Entry& e = entry_[std::size_t(particle)];
+    if (e.where < 0) return;  // in the heap (or nowhere): nothing far away to touch
+    __builtin_prefetch(e.prev != kNone ? static_cast<const void*>(&entry_[std::size_t(e.prev)])
+                                       : static_cast<const void*>(&heads_[std::size_t(e.where)]));
+    if (e.next != kNone) __builtin_prefetch(&entry_[std::size_t(e.next)]);
+  }
+  // The head of the list an event at time t goes to (what inserting it reads first).
+  void prefetch_insert(double t) const {
+    const double offset = (t - base_) * inv_width_;
+    if (offset >= double(current_) + 1.0 && offset < double(nb_)) __builtin_prefetch(&heads_[std::size_t(offset)]);
+  }
 
   // Every internal field, under names starting with `prefix` (checkpoints:
   // the restored calendar returns the same events in the same order).
