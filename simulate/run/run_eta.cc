@@ -182,9 +182,10 @@ double RunEta::expected_events(double t_end) const {
   if (now.t >= t_end || !(others > 0)) return collisions + others;
   const double a = exponent_of(others_of, now.t / kFitWindow, now.t);
   if (!std::isfinite(a)) return NAN;
-  // Never below the floor, nor below the exponent now if that is lower (a gas
-  // still cooling faster than t^-6/5 keeps at least its present rate of fall).
-  return collisions + others * std::exp(log_growth(now.t, t_end, a, std::min(a, crossings_), INFINITY, kTail, kTailFall));
+  // The floor, or the exponent now if it is lower: a gas whose temperature
+  // still falls faster than t^-6/5 is taken to go on falling as fast, not faster.
+  const double floor = std::min(a, crossings_);
+  return collisions + others * std::exp(log_growth(now.t, t_end, a, floor, INFINITY, kTail, kTailFall));
 }
 
 double RunEta::seconds_left(double t_end) const {

@@ -135,7 +135,8 @@ class Driver {
     const double t0 = engine_.now();
     const std::int64_t c0 = engine_.counters().collisions;
     const std::vector<StopTime> stops = stop_times(scene_);
-    dumps_left_ = int(std::count_if(stops.begin(), stops.end(), [&](const StopTime& s) { return s.dump && s.t > written_; }));
+    dumps_left_ = int(std::count_if(stops.begin(), stops.end(),
+                                    [&](const StopTime& s) { return s.dump && s.t > written_; }));
     for (const StopTime& stop : stops) {
       if (stop.t < t0) continue;  // (a stop at t0 itself may be due: a checkpoint is taken before its stop)
       if (!advance_to(stop.t)) return finish_interrupted();
