@@ -405,6 +405,9 @@ RunStatus Engine<Rule>::run_until(double t_stop, std::int64_t max_events, const 
           __builtin_prefetch(&m_[partner]);
           grid_.prefetch_cell(partner);
           calendar_.prefetch_event(partner);
+        } else {  // a crossing: the collision it kept, and its image counts
+          __builtin_prefetch(&later_[next]);
+          __builtin_prefetch(&image_[next]);
         }
       }
     const Event ev = calendar_.event(i);
