@@ -1,4 +1,4 @@
-// An engine's exact state written to memory and read back (as a checkpoint
+// An engine's (or one part's) exact state written to memory and read back (as a checkpoint
 // does, without the file beside a trajectory).
 #pragma once
 #include <gtest/gtest.h>
@@ -11,17 +11,26 @@
 
 namespace coolgas::test {
 
-inline StateReader saved_state(const EngineBase& e) {
+// Whatever `save(StateWriter&)` writes, read back from memory.
+template <class Save>
+StateReader saved_state_of(Save save) {
   std::FILE* f = std::tmpfile();
-  EXPECT_NE(f, nullptr);
+  if (!f) {  // fails the test (StateReader throws on no bytes) rather than writing to no file
+    ADD_FAILURE() << "no temporary file for the saved state";
+    return StateReader({}, "memory");
+  }
   StateWriter out(f);
-  e.save(out);
+  save(out);
   out.finish();
   std::vector<char> bytes(std::size_t(std::ftell(f)));
   std::rewind(f);
   EXPECT_EQ(std::fread(bytes.data(), 1, bytes.size(), f), bytes.size());
   std::fclose(f);
   return StateReader(std::move(bytes), "memory");
+}
+
+inline StateReader saved_state(const EngineBase& e) {
+  return saved_state_of([&](StateWriter& out) { e.save(out); });
 }
 
 // Whether two frames are equal bit for bit (positions, velocities, images, ids, masses, diameters).

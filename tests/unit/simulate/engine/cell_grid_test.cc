@@ -6,8 +6,8 @@
 #include <cmath>
 
 #include "simulate/engine/cell_grid.h"
+#include "tests/support/saved_state.h"
 
-#include <cstdio>
 #include <set>
 #include <vector>
 
@@ -58,16 +58,7 @@ TEST(CellGrid, HeadsHaveDistinctSlotsAndCheckpointsHoldThemByCellIndex) {
     grid.insert(c, c);
   }
   EXPECT_EQ(int(slots.size()), cells);
-  std::FILE* f = std::tmpfile();
-  ASSERT_NE(f, nullptr);
-  StateWriter out(f);
-  grid.save(out, "g/");
-  out.finish();
-  std::vector<char> bytes(std::size_t(std::ftell(f)));
-  std::rewind(f);
-  ASSERT_EQ(std::fread(bytes.data(), 1, bytes.size(), f), bytes.size());
-  std::fclose(f);
-  const StateReader in(bytes, "memory");
+  const StateReader in = test::saved_state_of([&](StateWriter& out) { grid.save(out, "g/"); });
   const std::vector<std::int32_t> heads = in.get<std::int32_t>("g/heads");
   ASSERT_EQ(int(heads.size()), cells);
   CellGrid back(n * 1.01, 1.0, std::size_t(cells));

@@ -6,11 +6,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdio>
 #include <set>
 #include <utility>
 
 #include "common/random.h"
+#include "tests/support/saved_state.h"
 
 namespace coolgas {
 namespace {
@@ -109,17 +109,8 @@ TEST(EventCalendar, SavedAndLoadedPopsTheSameSequence) {
     return top;
   };
   for (int k = 0; k < 3000; ++k) step(a, rng);
-  std::FILE* f = std::tmpfile();
-  ASSERT_NE(f, nullptr);
-  StateWriter out(f);
-  a.save(out, "c/");
-  out.finish();
-  std::vector<char> bytes(std::size_t(std::ftell(f)));
-  std::rewind(f);
-  ASSERT_EQ(std::fread(bytes.data(), 1, bytes.size(), f), bytes.size());
-  std::fclose(f);
   EventCalendar b;
-  b.load(StateReader(bytes, "memory"), "c/");
+  b.load(test::saved_state_of([&](StateWriter& out) { a.save(out, "c/"); }), "c/");
   Random rb = rng;
   for (int k = 0; k < 20000; ++k) ASSERT_EQ(step(a, rng), step(b, rb)) << "step " << k;
   EXPECT_EQ(a.years(), b.years());
