@@ -33,11 +33,57 @@ constexpr double kTail = 0.35;
 constexpr double kTailFall = 0.35;
 constexpr int kStepsPerUnit = 64;  // the tail's integral: midpoints per unit of ln t
 constexpr double kLogSpacing = 1.01;
+// The crossings' floor moves with phi as the collisions' does (0.08 per 0.1
+// of phi). The crossings' exponent over t = 1e2-1e4, r0 = 0.1, delta = 1e-4,
+// logged from the engine's counters (tests/bench/README.md, "ETA"): 0.42-0.43
+// at phi = 0.208 (L = 48), 0.39-0.40 at 0.156 (L = 70), 0.34-0.38 at 0.104
+// (L = 80), 0.29-0.31 at 0.052 (L = 100); the rule gives 0.40, 0.36, 0.32, 0.28.
+constexpr double kCrossingPaper = 0.4;  // 1 - theta/2, theta = 6/5, at phi = 0.208
+constexpr double kCrossingPerPhi = 0.8;
+constexpr double kCrossingLow = 0.2, kCrossingHigh = 0.5;
+constexpr double kMeanFieldBA = 1.2;  // theta_BA^mf = 2d/(d + 2): n ~ (1 + t/tau)^-6/5
+constexpr std::size_t kCostWindow = 6;  // the outputs an output's cost is fitted on
 constexpr double kRateWindow = 0.25;  // the rate is taken over this last fraction of the busy time
 
 double collisions_of(const RunSample& s) { return s.collisions; }
 double events_of(const RunSample& s) { return s.events; }
 double others_of(const RunSample& s) { return s.events - s.collisions; }  // crossings (and stale events)
+
+// The least-squares slope of ln y on ln x over the points added; NaN
+// without two distinct x.
+class LogFit {
+ public:
+  void add(double x, double y) {
+    if (!(x > 0 && y > 0)) return;
+    const double u = std::log(x), v = std::log(y);
+    n_ += 1, su_ += u, sv_ += v, suu_ += u * u, suv_ += u * v;
+  }
+  double slope() const {
+    const double det = n_ * suu_ - su_ * su_;
+    return n_ >= 2 && det > 1e-12 * n_ * suu_ ? (n_ * suv_ - su_ * sv_) / det : NAN;
+  }
+
+ private:
+  double n_ = 0, su_ = 0, sv_ = 0, suu_ = 0, suv_ = 0;
+};
+
+// The slope of ln count on ln t over lo <= t <= hi.
+template <class Count>
+double log_slope(const std::vector<RunSample>& samples, Count count, double lo, double hi) {
+  LogFit fit;
+  for (const RunSample& s : samples)
+    if (s.t >= lo && s.t <= hi) fit.add(s.t, count(s));
+  return fit.slope();
+}
+
+// The aggregates left at t' = t e^u over those at t, for the local
+// exponent beta of n now: (1 + t'/tau)^-6/5 through beta at t, or the
+// power law t^-beta where beta is already steeper than the mean field's.
+double aggregates_ratio(double beta, double u) {
+  if (beta >= kMeanFieldBA) return std::exp(-beta * u);
+  const double x = beta / (kMeanFieldBA - beta);  // t/tau: beta = 6/5 x/(1 + x)
+  return std::pow((1 + x * std::exp(u)) / (1 + x), -kMeanFieldBA);
+}
 
 // Haff's law, E ~ (1 + t/tau)^-2 with a collision rate ~ sqrt(E), gives
 // C ~ ln(1 + x), x = t/tau: its exponent h(x) = x / ((1 + x) ln(1 + x))
@@ -110,6 +156,11 @@ double log_growth(double t, double t_end, double a, double clustering, double t_
   return before + capped_integral(path, u_knee, u_end, tail_now, tail_fall);
 }
 
+double crossing_floor(double phi) {
+  const double f = kCrossingPaper + kCrossingPerPhi * (phi - 0.208);
+  return std::isnan(f) ? kCrossingPaper : std::clamp(f, kCrossingLow, kCrossingHigh);
+}
+
 double clustering_floor(double phi, double r0, double delta) {
   const double f = kClusteringPaper + kClusteringPerDecadeOfDelta * std::log10(1e-4 / delta) +
                    kClusteringPerPhi * (phi - 0.208) + kClusteringPerR0 * (r0 - 0.1);
@@ -118,10 +169,16 @@ double clustering_floor(double phi, double r0, double delta) {
 
 RunEta run_eta_for(const RunParameters& p) {
   if (p.model == "elastic") return RunEta(INFINITY);  // no cooling, no finite-size regime
-  if (p.model == "aggregation") return RunEta(p.L, double(p.N - 1));
+  if (p.model == "aggregation") return RunEta::aggregation(p.L, double(p.N));
   if (p.model == "inelastic" && p.r0 && p.delta)
-    return RunEta(p.L, INFINITY, clustering_floor(p.phi, *p.r0, *p.delta), kCrossingFloor);
+    return RunEta(p.L, INFINITY, clustering_floor(p.phi, *p.r0, *p.delta), crossing_floor(p.phi));
   return RunEta(p.L);
+}
+
+RunEta RunEta::aggregation(double L, double N) {
+  RunEta eta(L, N - 1);
+  eta.aggregates_ = N;
+  return eta;
 }
 
 void RunEta::add(const RunSample& s) {
@@ -149,16 +206,8 @@ double RunEta::rate_of(Count count) const {
 double RunEta::exponent(double lo, double hi) const { return exponent_of(collisions_of, lo, hi); }
 
 double RunEta::exponent_of(Count count, double lo, double hi) const {
-  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (const RunSample& s : samples_) {
-    const double c = count(s);
-    if (!(s.t > 0 && c > 0 && s.t >= lo && s.t <= hi)) continue;
-    const double x = std::log(s.t), y = std::log(c);
-    n += 1, sx += x, sy += y, sxx += x * x, sxy += x * y;
-  }
-  const double det = n * sxx - sx * sx;
-  if (n < 2 || !(det > 1e-12 * n * sxx)) return NAN;
-  return std::max(0.0, (n * sxy - sx * sy) / det);
+  const double slope = log_slope(samples_, count, lo, hi);
+  return std::isnan(slope) ? NAN : std::max(0.0, slope);
 }
 
 double RunEta::expected_collisions(double t_end) const {
@@ -167,10 +216,27 @@ double RunEta::expected_collisions(double t_end) const {
   if (now.t >= t_end) return now.collisions;
   const double t = now.t;
   if (!(samples_.front().t <= t / kFitWindow)) return NAN;  // not yet a whole fit window
+  if (!std::isnan(aggregates_)) return expected_merges(t_end);
   const double a = exponent(t / kFitWindow, t);
   if (!std::isfinite(a)) return NAN;
   const double knee = kKnee * std::pow(L_, 2.5);
   return std::min(most_, now.collisions * std::exp(log_growth(t, t_end, a, clustering_, knee, kTail, kTailFall)));
+}
+
+double RunEta::expected_merges(double t_end) const {
+  const RunSample& now = samples_.back();
+  const double left = aggregates_ - now.collisions;
+  if (!(left > 1)) return now.collisions;  // one aggregate cannot merge
+  const auto aggregates = [&](const RunSample& s) { return aggregates_ - s.collisions; };
+  const double beta = -log_slope(samples_, aggregates, now.t / kFitWindow, now.t);
+  if (!(beta > 0)) return NAN;  // no merge over the fit window
+  const double at_end = left * aggregates_ratio(beta, std::log(t_end / now.t));
+  return now.collisions + left - std::max(at_end, 1.0);
+}
+
+double RunEta::frame_size(double t) const {
+  if (std::isnan(aggregates_)) return 1;
+  return aggregates_ - expected_collisions(t);
 }
 
 double RunEta::expected_events(double t_end) const {
@@ -198,10 +264,28 @@ double RunEta::seconds_left(double t_end) const {
   return std::max(0.0, expected - (in_events ? now.events : now.collisions)) / rate;
 }
 
-double output_seconds_left(int dumps_left, double engine_seconds_left, double interval, const OutputCost& dumps,
-                           const OutputCost& checkpoints) {
-  const double dump = dumps.latest(0), checkpoint = checkpoints.latest(dump);
-  return std::max(dumps_left, 0) * dump + (1 + engine_seconds_left / std::max(interval, 1.0)) * checkpoint;
+void OutputCost::add(double seconds, double size) {
+  if (recent_.size() == kCostWindow) recent_.erase(recent_.begin());
+  recent_.push_back({size, seconds});
+}
+
+double OutputCost::expected(double size, double otherwise) const {
+  if (recent_.empty()) return otherwise;
+  const Output& latest = recent_.back();
+  if (!(size > 0 && latest.size > 0)) return latest.seconds;
+  LogFit fit;
+  for (const Output& o : recent_) fit.add(o.size, o.seconds);
+  const double slope = fit.slope();
+  const double gamma = std::isnan(slope) ? 0.0 : std::clamp(slope, 0.0, 1.0);
+  return latest.seconds * std::pow(size / latest.size, gamma);
+}
+
+double output_seconds_left(const std::vector<double>& dump_sizes, double engine_seconds_left, double interval,
+                           const OutputCost& dumps, const OutputCost& checkpoints) {
+  double left = 0;
+  for (double size : dump_sizes) left += dumps.expected(size, 0);
+  const double checkpoint = checkpoints.latest(dumps.latest(0));
+  return left + (1 + engine_seconds_left / std::max(interval, 1.0)) * checkpoint;
 }
 
 }  // namespace coolgas

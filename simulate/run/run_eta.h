@@ -20,12 +20,21 @@
 // (0.6 for the paper's gas; clustering_floor() for others), and
 // beyond it the finite-size regime, where a is at most 0.35 (t/t_knee)^-0.35
 // (the constants and how they were chosen: run_eta.cc). The crossings X(t)
-// are carried on the same way with the floor 1 - theta/2 = 0.4 (a crossing
-// rate ~ sqrt(E), E ~ t^-theta, theta = 6/5 in the clustered gas, the
-// paper's result), or their exponent now if it is lower, and no
-// finite-size fall. A run that has not yet covered a
-// factor 3 of t is not extrapolated. A gas that does not cool (a >= 1)
-// keeps its exponent; pass L = INFINITY where no finite-size regime comes.
+// are carried on the same way with the floor crossing_floor(phi) (0.4 =
+// 1 - theta/2 for the paper's gas: a crossing rate ~ sqrt(E), E ~ t^-theta,
+// theta = 6/5 in the clustered gas, the paper's result), or their exponent
+// now if it is lower, and no finite-size fall. A run that has not yet
+// covered a factor 3 of t is not extrapolated. A gas that does not cool
+// (a >= 1) keeps its exponent; pass L = INFINITY where no finite-size regime
+// comes.
+//
+// Ballistic aggregation extrapolates the aggregates left, n = N - C, along
+// n ~ (1 + t/tau)^-6/5, with tau set by the local exponent of n now: the
+// mean-field decay of BA, theta_BA^mf = 2d/(d + 2) = 6/5 (Carnevale et al.
+// 1990, as quoted by Pathak et al. 2014, who measure theta_BA = 1.206-1.283
+// for phi = 0.208-0.005; n ~ E, each aggregate's kinetic energy staying
+// of order T0 as momentum is conserved). Its frames shrink with n, and so
+// does the cost of a dump (OutputCost).
 //
 // Measured by replaying finished runs (tests/bench/eta_replay.cc) and live
 // with tests/bench/eta_check.py (tests/bench/README.md, "ETA").
@@ -53,6 +62,9 @@ class RunEta {
   // events other than collisions, NaN to count the work in collisions alone.
   explicit RunEta(double L, double most_collisions = INFINITY, double clustering = 0.5, double crossings = NAN)
       : L_(L), most_(most_collisions), clustering_(clustering), crossings_(crossings) {}
+  // Ballistic aggregation of N particles: the merges are N minus the
+  // aggregates left, at most N - 1.
+  static RunEta aggregation(double L, double N);
   // Keeps samples log-spaced in t (one per 1 % of t at most); the last
   // sample is always the newest.
   void add(const RunSample& s);
@@ -73,36 +85,59 @@ class RunEta {
   // Seconds in the engine still needed to reach t_end (in events where they
   // are modelled, else in collisions); NaN if not yet known.
   double seconds_left(double t_end) const;
+  // The size of a frame at t (now's, or expected for a later t): the
+  // aggregates it holds under aggregation, 1 for a gas (its frames do not
+  // change); NaN if not yet known.
+  double frame_size(double t) const;
 
  private:
   // The rate and the local exponent of one cumulative count of the samples.
   using Count = double (*)(const RunSample&);
   double rate_of(Count count) const;
   double exponent_of(Count count, double lo, double hi) const;
+  // Aggregation: the merges expected by t_end from the aggregates left.
+  double expected_merges(double t_end) const;
 
   double L_, most_, clustering_, crossings_;
+  double aggregates_ = NAN;  // N under aggregation, else NaN
   std::vector<RunSample> samples_;
 };
 
 // The floor of the exponent of the cell crossings in the clustering regime:
-// 1 - theta/2 for theta = 6/5 (the paper's energy decay, t^-theta).
-constexpr double kCrossingFloor = 0.4;
+// 1 - theta/2 = 0.4 for theta = 6/5 (the paper's energy decay, t^-theta)
+// at the paper's phi = 0.208, lower for a more dilute gas (run_eta.cc says
+// how much, and from which runs).
+double crossing_floor(double phi);
 
-// The wall seconds the latest output of one kind (dump, checkpoint) took:
-// the next one's best guess (aggregation's dumps get cheaper as aggregates
-// die; the machine's load changes).
-struct OutputCost {
-  double seconds = NAN;
-  void add(double s) { seconds = s; }
-  double latest(double otherwise) const { return std::isnan(seconds) ? otherwise : seconds; }
+// The wall seconds outputs of one kind (dumps, checkpoints) took, and the
+// size of each (frame_size()): the next one's best guess is the latest's,
+// scaled by (size / latest size)^gamma, gamma the slope of ln seconds on
+// ln size over the latest few, within [0, 1] (0 while the sizes do not
+// differ). Aggregation's dumps get cheaper as aggregates die (their empty
+// slots compress away); the latest sets the level as the machine's load
+// changes.
+class OutputCost {
+ public:
+  void add(double seconds, double size = 1);
+  double latest(double otherwise) const { return recent_.empty() ? otherwise : recent_.back().seconds; }
+  // The seconds an output of this size is expected to take; `otherwise`
+  // while none is written.
+  double expected(double size, double otherwise) const;
+
+ private:
+  struct Output {
+    double size, seconds;
+  };
+  std::vector<Output> recent_;  // the latest few, oldest first
 };
 
-// Wall seconds the outputs still due take: `dumps_left` dumps at the cost
-// of the latest dump, and the checkpoints (one per `interval` wall seconds,
-// at least 1 s, of the engine's `engine_seconds_left`, and the last) at the
-// latest checkpoint's, or the latest dump's while none is written.
-double output_seconds_left(int dumps_left, double engine_seconds_left, double interval, const OutputCost& dumps,
-                           const OutputCost& checkpoints);
+// Wall seconds the outputs still due take: the dumps of `dump_sizes` (one
+// frame_size() per dump still scheduled) at their expected cost, and the
+// checkpoints (one per `interval` wall seconds, at least 1 s, of the
+// engine's `engine_seconds_left`, and the last) at the latest checkpoint's,
+// or the latest dump's while none is written.
+double output_seconds_left(const std::vector<double>& dump_sizes, double engine_seconds_left, double interval,
+                           const OutputCost& dumps, const OutputCost& checkpoints);
 
 // The floor of the exponent in the clustering regime of an inelastic gas
 // with the delta cut-off (the paper's Eq. 1): 0.6 at phi = 0.208, r0 = 0.1,

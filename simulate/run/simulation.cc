@@ -135,8 +135,9 @@ class Driver {
     const double t0 = engine_.now();
     const std::int64_t c0 = engine_.counters().collisions;
     const std::vector<StopTime> stops = stop_times(scene_);
-    dumps_left_ = int(std::count_if(stops.begin(), stops.end(),
-                                    [&](const StopTime& s) { return s.dump && s.t > written_; }));
+    dump_times_left_.clear();
+    for (const StopTime& s : stops)
+      if (s.dump && s.t > written_) dump_times_left_.push_back(s.t);
     for (const StopTime& stop : stops) {
       if (stop.t < t0) continue;  // (a stop at t0 itself may be due: a checkpoint is taken before its stop)
       if (!advance_to(stop.t)) return finish_interrupted();
@@ -190,8 +191,9 @@ class Driver {
       const auto start = clock::now();
       const EngineFrame f = engine_.frame();
       writer_.add_frame(view_of(f));
-      dump_cost_.add(seconds_since(start));
-      --dumps_left_;
+      dump_cost_.add(seconds_since(start), eta_.frame_size(t));
+      auto& left = dump_times_left_;
+      left.erase(left.begin(), std::upper_bound(left.begin(), left.end(), t));
     }
     last_dump_ = t;
     pending_.clear();
@@ -224,8 +226,10 @@ class Driver {
     eta_.add({t, coll, busy_seconds_, double(engine_.counters().events)});
     if (!progress_.due()) return;
     const double engine_left = eta_.seconds_left(scene_.t_end);
+    std::vector<double> dump_sizes;
+    for (double at : dump_times_left_) dump_sizes.push_back(eta_.frame_size(at));
     const double left =
-        engine_left + output_seconds_left(dumps_left_, engine_left, interval_, dump_cost_, checkpoint_cost_);
+        engine_left + output_seconds_left(dump_sizes, engine_left, interval_, dump_cost_, checkpoint_cost_);
     std::ostringstream s;
     s.precision(3);
     s << "t = " << t << " / " << scene_.t_end << "  collisions " << coll << " (" << eta_.collision_rate()
@@ -254,7 +258,7 @@ class Driver {
   RunEta eta_ = run_eta_for(parameters_of(scene_));
   double busy_seconds_ = 0;  // wall seconds inside the engine (no dumps, no checkpoints)
   OutputCost dump_cost_, checkpoint_cost_;
-  int dumps_left_ = 0;  // dumps of the run still to write
+  std::vector<double> dump_times_left_;  // the dumps of the run still to write, in time order
   double interval_;
   clock::time_point last_checkpoint_;
   double written_ = -1;    // the file holds every output up to this time

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 namespace coolgas {
 namespace {
@@ -100,10 +101,20 @@ TEST(RunEta, TheClusteringFloorFollowsTheGas) {
   EXPECT_EQ(clustering_floor(0.01, 0.99, 1e-2), 0.3);
 }
 
+// The crossings' floor: 0.4 = 1 - theta/2 (theta = 6/5) for the paper's
+// phi = 0.208, 0.08 less per 0.1 of phi less (phi = 0.052: 0.4 - 0.8 * 0.156),
+// held within [0.2, 0.5].
+TEST(RunEta, TheCrossingFloorFollowsTheDensity) {
+  EXPECT_NEAR(crossing_floor(0.208), 0.4, 1e-12);
+  EXPECT_NEAR(crossing_floor(0.052), 0.2752, 1e-12);
+  EXPECT_EQ(crossing_floor(0.5), 0.5);
+  EXPECT_EQ(crossing_floor(NAN), 0.4);
+}
+
 // A run's own rule: C = 1000 t^0.2 before the knee is carried on at the
 // gas's floor (0.6 for the paper's gas, 0.5 for a viscoelastic one); an
 // elastic gas is extrapolated at its own exponent whatever its box (no knee);
-// aggregation is held to N - 1 merges.
+// aggregation counts its aggregates (AggregationFollowsTheMeanFieldLaw).
 TEST(RunEta, EachModelGetsItsOwnRule) {
   const double now = 1000 * std::pow(100.0, 0.2), tol = 1e-9 * now * 100;
   EXPECT_NEAR(power_law_run(run_eta_for(gas("inelastic", 1e6, 0.208, 0.1, 1e-4)), 0.2).expected_collisions(1e4),
@@ -113,11 +124,47 @@ TEST(RunEta, EachModelGetsItsOwnRule) {
   EXPECT_NEAR(power_law_run(run_eta_for(visco), 0.2).expected_collisions(1e4), now * std::pow(100.0, 0.5), tol);
   RunParameters elastic = gas("elastic", 2, 0.208, 1, 0);
   EXPECT_NEAR(power_law_run(run_eta_for(elastic), 1).expected_collisions(1e4), 1e7, 1e-9 * 1e7);
-  EXPECT_EQ(power_law_run(run_eta_for(gas("aggregation", 1e6, 0.208, 1, 0)), 0.5).expected_collisions(1e4), 999);
 }
 
-// Ballistic aggregation: at most N - 1 merges, whatever the extrapolation
-// says. C = 1000 t^0.5, at the clustering floor, would reach 1e5 at t = 1e4.
+// Ballistic aggregation of N = 1e6, sampled 20 times a decade from t = 1 to
+// 100. The aggregates left, n = N - C, carried on along the mean field's
+// n ~ (1 + t/tau)^-6/5 through their local exponent beta now:
+// - n = N t^-1.5, steeper than the mean field, keeps its power law: from
+//   n(100) = 1000 to n(1e3) = 1000 * 10^-1.5 = 31.6, and never below one
+//   aggregate (N - 1 merges by t = 1e5);
+// - n = N (1 + t)^-6/5 (tau = 1) is the mean field itself: the merges by
+//   t = 1e4 are those of the law to within 1e-4 of n(100) (3.5e-5: its
+//   local exponent is fitted over t = 33 .. 100, not taken at 100);
+// - n = 1e6 - 1e3 t, linear in t (n barely falls yet: beta = 0.066 over
+//   t = 33 .. 100), is still expected to fall along the mean field: by
+//   t = 1e4 to 10.7 % of n(100) (x = t/tau = beta / (6/5 - beta) = 0.058),
+//   where a power law at beta would keep 74 %.
+RunEta aggregation_run(double (*aggregates)(double t)) {
+  RunParameters p = gas("aggregation", 1e6, 0.208, 1, 0);
+  p.N = 1000000;
+  RunEta eta = run_eta_for(p);
+  for (int k = 0; k <= 40; ++k) {
+    const double t = std::pow(10.0, k / 20.0), c = 1e6 - aggregates(t);
+    eta.add({t, c, c / kRate});
+  }
+  return eta;
+}
+
+TEST(RunEta, AggregationFollowsTheMeanFieldLaw) {
+  const RunEta steep = aggregation_run([](double t) { return 1e6 * std::pow(t, -1.5); });
+  EXPECT_NEAR(steep.expected_collisions(1e3), 1e6 - 1000 * std::pow(10.0, -1.5), 1e-6);
+  EXPECT_EQ(steep.expected_collisions(1e5), 1e6 - 1);
+  EXPECT_NEAR(steep.frame_size(1e3), 1000 * std::pow(10.0, -1.5), 1e-6);
+  EXPECT_NEAR(steep.frame_size(100), 1000, 1e-6);
+  const auto mean_field = [](double t) { return 1e6 * std::pow(1 + t, -1.2); };
+  const RunEta law = aggregation_run(mean_field);
+  EXPECT_NEAR(law.expected_collisions(1e4), 1e6 - mean_field(1e4), 1e-4 * mean_field(100));
+  const RunEta slow = aggregation_run([](double t) { return 1e6 - 1e3 * t; });
+  EXPECT_NEAR(slow.frame_size(1e4) / 9e5, 0.107, 0.001);
+}
+
+// A bound on the collisions holds whatever the extrapolation says.
+// C = 1000 t^0.5, at the clustering floor, would reach 1e5 at t = 1e4.
 TEST(RunEta, NoMoreCollisionsThanTheBoundAllows) {
   RunEta eta(1e6, 3e4);
   for (int k = -40; k <= 40; ++k) {
@@ -177,20 +224,38 @@ TEST(RunEta, TheInelasticGasCountsCollisionsAndCrossings) {
   EXPECT_TRUE(std::isnan(ba.expected_events(1e4)));
 }
 
-// Outputs still due: 3 dumps at the latest dump's cost (3 s, after one of
-// 1 s); the checkpoints, one per 300 s of the 600 s the engine still needs
-// and the last, at the latest dump's cost while none is written, then at the
-// latest checkpoint's (5 s); an interval of 0 (a checkpoint after every
-// slice) counts as one per second.
+// Outputs still due: 3 dumps of a gas (size 1) at the latest dump's cost
+// (3 s, after one of 1 s); the checkpoints, one per 300 s of the 600 s the
+// engine still needs and the last, at the latest dump's cost while none is
+// written, then at the latest checkpoint's (5 s); an interval of 0 (a
+// checkpoint after every slice) counts as one per second.
 TEST(RunEta, OutputsStillDueCostWhatTheLatestOfTheirKindCost) {
   OutputCost dumps, checkpoints;
-  EXPECT_EQ(output_seconds_left(3, 600, 300, dumps, checkpoints), 0);
+  const std::vector<double> three(3, 1.0);
+  EXPECT_EQ(output_seconds_left(three, 600, 300, dumps, checkpoints), 0);
   dumps.add(1), dumps.add(3);
-  EXPECT_DOUBLE_EQ(output_seconds_left(3, 600, 300, dumps, checkpoints), 3 * 3 + 3 * 3);
+  EXPECT_DOUBLE_EQ(output_seconds_left(three, 600, 300, dumps, checkpoints), 3 * 3 + 3 * 3);
   checkpoints.add(5);
-  EXPECT_DOUBLE_EQ(output_seconds_left(3, 600, 300, dumps, checkpoints), 3 * 3 + 3 * 5);
-  EXPECT_DOUBLE_EQ(output_seconds_left(0, 10, 0, dumps, checkpoints), 11 * 5);
-  EXPECT_DOUBLE_EQ(output_seconds_left(-1, 0, 300, dumps, checkpoints), 5);  // no dump is ever owed back
+  EXPECT_DOUBLE_EQ(output_seconds_left(three, 600, 300, dumps, checkpoints), 3 * 3 + 3 * 5);
+  EXPECT_DOUBLE_EQ(output_seconds_left({}, 10, 0, dumps, checkpoints), 11 * 5);
+}
+
+// Aggregation's dumps shrink: 4 s at 1e6 aggregates, 2 s at 2.5e5 give
+// seconds ~ size^0.5, so one of 62,500 is expected to take 1 s (the latest,
+// 2 s, times 0.25^0.5), whatever the older outputs' level was. A cost that
+// rises as the size falls (the machine's load) is not extrapolated: the
+// latest stands. Only the latest six outputs are fitted.
+TEST(RunEta, ADumpCostsWhatItsSizeSays) {
+  OutputCost dumps;
+  EXPECT_EQ(dumps.expected(1e6, 7), 7);
+  dumps.add(4, 1e6), dumps.add(2, 2.5e5);
+  EXPECT_NEAR(dumps.expected(62500, 0), 1, 1e-12);
+  EXPECT_NEAR(output_seconds_left({62500, 62500}, 0, 300, dumps, OutputCost()), 2 * 1 + 2, 1e-12);
+  OutputCost loaded;
+  loaded.add(1, 1e6), loaded.add(2, 2.5e5);
+  EXPECT_EQ(loaded.expected(62500, 0), 2);
+  for (int i = 0; i < 6; ++i) loaded.add(3, 2.5e5 / (i + 1));  // the latest six: the same cost at every size
+  EXPECT_NEAR(loaded.expected(1, 0), 3, 1e-12);
 }
 
 TEST(RunEta, UnknownUntilAWholeFitWindowAndSamplesStayLogSpaced) {
