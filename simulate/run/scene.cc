@@ -400,7 +400,8 @@ void check_scene_cost(const Scene& s, double memory_bytes) {
   if (cells > kMaxCells)
     throw InputError("a box of side L = " + format_number(s.L) + " needs a cell grid of " + about(cells) +
                      " cells of one diameter" +
-                     (std::isfinite(cells) ? " (" + bytes_text(cells * kBytesPerCell) + ")" : "") + "; the limit is 2^31 cells (L < 1290; raise phi or N)");
+                     (std::isfinite(cells) ? " (" + bytes_text(cells * kBytesPerCell) + ")" : "") +
+                     "; the limit is 2^31 cells (L < 1290; raise phi or N)");
   if (bytes > memory_bytes)
     throw InputError("the scene needs about " + bytes_text(bytes) + " of memory (" + format_number(n) +
                      " particles, 180 B each, and " + about(cells) + " grid cells, 20 B each); this machine has " +

@@ -306,7 +306,8 @@ int start_new(const SimulationRequest& req) {
     }
   }
   if (interrupted()) {
-    std::cerr << "coolgas-simulate: interrupted by " << signal_name(interrupt_signal()) << " during set-up; nothing written\n";
+    std::cerr << "coolgas-simulate: interrupted by " << signal_name(interrupt_signal())
+              << " during set-up; nothing written\n";
     return kExitInterrupted;
   }
   // Write the first dump to a temporary name and move it into place only
