@@ -20,6 +20,7 @@ void EventCalendar::resize(std::size_t n) {
   heads_.assign(std::size_t(nb_) + 1, kNone);
   heap_.clear();
   ahead_ = kNone;
+  overflow_ = 0;
 }
 
 void EventCalendar::reset(double now) {
@@ -27,9 +28,10 @@ void EventCalendar::reset(double now) {
   heap_.clear();
   ahead_ = kNone;
   // Put everything in overflow, then let start_year distribute it.
+  overflow_ = 0;
   for (std::size_t p = 0; p < entry_.size(); ++p) {
     entry_[p].where = kNone;
-    if (std::isfinite(time(int(p)))) link(int(p), nb_);
+    if (std::isfinite(time(int(p)))) to_overflow(int(p));
   }
   years_ = 0;
   start_year(now);
@@ -67,7 +69,7 @@ void EventCalendar::start_year(double base) {
   inv_width_ = 1.0 / width_;
   base_ = base;
   current_ = 0;
-  heads_[nb_] = kNone;
+  overflow_ = 0;
   // An event sent back to the overflow (beyond this year too) is relinked
   // at an index already passed, so the scan meets each event once.
   for (std::int32_t p = 0; p < n; ++p)
@@ -82,7 +84,7 @@ void EventCalendar::insert(int p) {
   if (offset < double(current_) + 1.0) {  // in (or, after a new year, before) the current bucket
     heap_push(p);
   } else if (offset >= double(nb_)) {
-    link(p, nb_);
+    to_overflow(p);
   } else {
     link(p, static_cast<int>(offset));
   }
@@ -98,6 +100,7 @@ void EventCalendar::erase(int p) {
   const std::int32_t w = entry_[p].where;
   if (w == kNone) return;
   if (w <= -2) heap_erase(-2 - w);
+  else if (w == nb_) from_overflow(p);
   else unlink(p);
 }
 
@@ -130,7 +133,7 @@ bool EventCalendar::advance_bucket() {
     }
     return true;
   }
-  if (heads_[nb_] == kNone) return false;  // nothing left anywhere
+  if (overflow_ == 0) return false;  // nothing left anywhere
   start_year(base_ + double(nb_) * width_);
   return true;
 }
@@ -142,6 +145,16 @@ void EventCalendar::link(int p, int list) {
   e.next = heads_[list];
   if (heads_[list] != kNone) entry_[heads_[list]].prev = p;
   heads_[list] = p;
+}
+
+void EventCalendar::to_overflow(int p) {
+  entry_[p].where = nb_;
+  ++overflow_;
+}
+
+void EventCalendar::from_overflow(int p) {
+  entry_[p].where = kNone;
+  --overflow_;
 }
 
 void EventCalendar::unlink(int p) {
@@ -228,6 +241,8 @@ void EventCalendar::load(const StateReader& in, const std::string& prefix) {
   current_ = s.current;
   ahead_ = s.ahead;
   if (heads_.size() != std::size_t(nb_) + 1) in.fail(prefix + "heads does not match the calendar's bucket count");
+  heads_[std::size_t(nb_)] = kNone;  // an earlier build's overflow list: the count below replaces it
+  overflow_ = std::count_if(entry_.begin(), entry_.end(), [&](const Entry& e) { return e.where == nb_; });
 }
 
 }  // namespace coolgas

@@ -14,9 +14,10 @@
 //
 // How: time ahead of the current instant is cut into nb buckets of width Δ
 // (one "year" = nb Δ). Events in future buckets sit unsorted in doubly
-// linked lists; events beyond the year in an unsorted overflow list; only the
-// current bucket's events are kept sorted, in a small binary heap. When the
-// year runs out the overflow is redistributed into a new year whose Δ is
+// linked lists; events beyond the year are only marked and counted as in the
+// overflow (a new year finds them by a scan); only the current bucket's
+// events are kept sorted, in a small binary heap. When the year runs out the
+// overflow is redistributed into a new year whose Δ is
 // chosen from the pending events themselves, so the width follows the gas as
 // it cools (a fixed width degrades badly when collision times grow by 10^6).
 // Each particle's event and its list links share one 32-byte record: an
@@ -89,7 +90,7 @@ class EventCalendar {
   // link that changes meanwhile costs nothing but the miss.
   void prefetch_unlink(int particle) const {
     const Entry& e = entry_[std::size_t(particle)];
-    if (e.where < 0) return;  // in the heap (or nowhere): nothing far away to touch
+    if (e.where < 0 || e.where == nb_) return;  // in the heap, the overflow or nowhere: nothing far away to touch
     __builtin_prefetch(e.prev != kNone ? static_cast<const void*>(&entry_[std::size_t(e.prev)])
                                        : static_cast<const void*>(&heads_[std::size_t(e.where)]));
     if (e.next != kNone) __builtin_prefetch(&entry_[std::size_t(e.next)]);
@@ -129,6 +130,8 @@ class EventCalendar {
   void insert(int p);
   void erase(int p);
   void link(int p, int list);
+  void to_overflow(int p);
+  void from_overflow(int p);
   void unlink(int p);
   void heap_push(int p);
   void heap_erase(int pos);
@@ -138,11 +141,14 @@ class EventCalendar {
   bool advance_bucket();
 
   std::vector<Entry> entry_;
-  std::vector<std::int32_t> heads_;  // nb bucket heads + overflow head
+  // nb bucket heads, and one slot that stays kNone (it held the overflow's
+  // list head; checkpoints keep their layout).
+  std::vector<std::int32_t> heads_;
   std::vector<std::int32_t> heap_;
   double base_ = 0, width_ = 1, inv_width_ = 1;
   std::int32_t nb_ = 1, current_ = 0;
   std::int32_t ahead_ = kNone;  // how far top() has prefetched along the next bucket's list
+  std::int64_t overflow_ = 0;  // events marked as in the overflow (where == nb_)
   std::int64_t years_ = 0;
   const std::int32_t* tie_key_ = nullptr;
 };
