@@ -70,8 +70,8 @@ void EventCalendar::start_year(double base) {
   base_ = base;
   current_ = 0;
   overflow_ = 0;
-  // An event sent back to the overflow (beyond this year too) is relinked
-  // at an index already passed, so the scan meets each event once.
+  // An event sent back to the overflow (beyond this year too) is marked
+  // again at an index already passed, so the scan meets each event once.
   for (std::int32_t p = 0; p < n; ++p)
     if (entry_[p].where == nb_) {
       entry_[p].where = kNone;
