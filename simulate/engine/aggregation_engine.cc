@@ -15,13 +15,12 @@ namespace {
 // Fine cells are this many times the mean distance between aggregates when
 // the grid is rebuilt (about one aggregate per cell, 27 candidates per
 // search); the grid is rebuilt, wider, once aggregates are
-// kCellsPerAggregateLimit times fewer than cells. The large aggregates are
-// indexed in blocks of kBlock³ fine cells. Measured on W3 at N = 2e5
-// (tests/bench/aggregation_bench.cc) with a first version of the index,
-// CPU seconds with set-up on a loaded machine: spacing factor 1.0, 1.2, 1.4:
-// 6.6, 6.6, 7.9; limit 4 or 8: 6.6, 6.7.
+// AggregationEngine::kCellsPerAggregateLimit times fewer than cells. The
+// large aggregates are indexed in blocks of kBlock³ fine cells. Measured on
+// W3 at N = 2e5 (tests/bench/aggregation_bench.cc) with a first version of
+// the index, CPU seconds with set-up on a loaded machine: spacing factor
+// 1.0, 1.2, 1.4: 6.6, 6.6, 7.9; limit 4 or 8: 6.6, 6.7.
 constexpr double kSpacingFactor = 1.0;
-constexpr double kCellsPerAggregateLimit = 4.0;
 constexpr int kBlock = 2;
 // The grid's and the large index's list links live in the motion records
 // (Motion::next), so walking a list reads one cache line per candidate.

@@ -67,6 +67,11 @@ struct AggregationScalars {
 
 class AggregationEngine final : public EngineBase {
  public:
+  // The grid is rebuilt, wider, once aggregates are this many times fewer
+  // than cells (aggregation_engine.cc says how it was chosen): a rebuild
+  // costs a search per aggregate, once per this factor of aggregates lost.
+  static constexpr double kCellsPerAggregateLimit = 4.0;
+
   // Aggregates as they are at time `now` (positions valid at now).
   AggregationEngine(Particles particles, AggregateState aggregates, double now, const EngineCounters& counters = {});
   // The engine whose exact state save() wrote.

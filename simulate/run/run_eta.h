@@ -63,13 +63,18 @@ class RunEta {
   explicit RunEta(double L, double most_collisions = INFINITY, double clustering = 0.5, double crossings = NAN)
       : L_(L), most_(most_collisions), clustering_(clustering), crossings_(crossings) {}
   // Ballistic aggregation of N particles: the merges are N minus the
-  // aggregates left, at most N - 1.
-  static RunEta aggregation(double L, double N);
+  // aggregates left, at most N - 1. The engine's cost per merge changes
+  // with a period of `regrid_factor` in the aggregates left (its grid is
+  // rebuilt, at a search per aggregate, each time they fall that much), so
+  // the rate window spans at least that last factor.
+  static RunEta aggregation(double L, double N, double regrid_factor);
   // Keeps samples log-spaced in t (one per 1 % of t at most); the last
   // sample is always the newest.
   void add(const RunSample& s);
   // Collisions per busy second over the last quarter of the busy time (the
-  // rate changes with the gas and with the machine's load); 0 if unknown.
+  // rate changes with the gas and with the machine's load), under
+  // aggregation over the last regrid factor of aggregates if that is
+  // longer; 0 if unknown.
   double collision_rate() const;
   // The same for events of all kinds; 0 if unknown.
   double event_rate() const;
@@ -100,6 +105,7 @@ class RunEta {
 
   double L_, most_, clustering_, crossings_;
   double aggregates_ = NAN;  // N under aggregation, else NaN
+  double regrid_factor_ = 1;  // the rate window's least fall of the aggregates left
   std::vector<RunSample> samples_;
 };
 

@@ -189,6 +189,33 @@ TEST(RunEta, TheRateIsTheRecentOne) {
   EXPECT_NEAR(eta.collision_rate(), 2.5e5, 1e-6 * 2.5e5);
 }
 
+// Aggregation's engine rebuilds its grid each time the aggregates fall by
+// a factor 4 (AggregationEngine::kCellsPerAggregateLimit), at a search per
+// aggregate. BA of N = 1e6 with n = N (1 + t)^-6/5, sampled 20 times a decade
+// up to t = 10^0.5 = 3.16, merging at 2e5 per busy second, with a rebuild
+// of 1 s once n < N/4 (t = 4^(5/6) - 1 = 2.17). The rate spans the last
+// factor 4 of n: from the newest sample with n >= 4 n(3.16), i.e.
+// (1 + t) <= 4.16 / 4^(5/6) = 1.31, t = 10^(-11/20) = 0.28. The last
+// quarter of the busy time alone (a gas's window) would hold little but
+// the rebuild.
+TEST(RunEta, AggregationsRateSpansAGridPeriod) {
+  const auto merges = [](double t) { return 1e6 - 1e6 * std::pow(1 + t, -1.2); };
+  const auto busy = [&](double t) { return merges(t) / kRate + (merges(t) > 7.5e5 ? 1.0 : 0.0); };
+  RunParameters p = gas("aggregation", 1e6, 0.208, 1, 0);
+  p.N = 1000000;
+  RunEta ba = run_eta_for(p), gas_like(INFINITY);
+  for (int k = -40; k <= 10; ++k) {
+    const double t = std::pow(10.0, k / 20.0);
+    ba.add({t, merges(t), busy(t)});
+    gas_like.add({t, merges(t), busy(t)});
+  }
+  const double now = std::pow(10.0, 0.5), from = std::pow(10.0, -11 / 20.0);
+  const double period = (merges(now) - merges(from)) / (busy(now) - busy(from));
+  EXPECT_NEAR(ba.collision_rate(), period, 1e-9 * period);
+  EXPECT_GT(period, 0.7 * kRate);
+  EXPECT_LT(gas_like.collision_rate(), 0.5 * period);
+}
+
 // The inelastic gas counts its work in events, at 2e5 per busy second:
 // C = 1000 t^0.2 is raised to its floor 0.6 before the knee; of the other
 // events (crossings), 3000 t^0.7 falls as under Haff's law to the floor
