@@ -138,10 +138,14 @@ Handle fapl_v110() {
 // (never inside one), so an object header the writer rewrites at every
 // append is then always whole on disk: a straddling one could be left torn,
 // its checksum wrong, and the dataset unreadable for good.
+// The free space is not kept in the file (persist = false): a list of free
+// space saved at one close goes stale the moment a later writer allocates
+// from it and is killed, and the next writer would then hand out space that
+// live objects hold.
 constexpr hsize_t kFilePageBytes = 4096;
 Handle fcpl_paged() {
   Handle fcpl(check(H5Pcreate(H5P_FILE_CREATE), "file creation property list"));
-  check_status(H5Pset_file_space_strategy(fcpl.id(), H5F_FSPACE_STRATEGY_PAGE, true, 1), "file space strategy");
+  check_status(H5Pset_file_space_strategy(fcpl.id(), H5F_FSPACE_STRATEGY_PAGE, false, 1), "file space strategy");
   check_status(H5Pset_file_space_page_size(fcpl.id(), kFilePageBytes), "file space page size");
   return fcpl;
 }
@@ -157,20 +161,38 @@ Handle fapl_swmr_read() {
   return fapl;
 }
 
-// A writer killed during SWMR writing leaves the superblock's "open for
-// writing" flags set, and HDF5 then refuses to open the file for writing.
-// This is the property h5clear -s sets; it clears them on open.
-Handle fapl_clearing_status_flags() {
-  Handle fapl(check(H5Pcreate(H5P_FILE_ACCESS), "file access property list"));
-  hbool_t clear = true;
-  check_status(H5Pset(fapl.id(), "clear_status_flags", &clear), "clear status flags");
+// For a writer of an existing file. A writer killed while it wrote leaves
+// the superblock's "open for writing" flags set, and HDF5 then refuses to
+// open the file for writing: "clear_status_flags" (what h5clear -s sets)
+// clears them on open. A file that keeps its free space (as coolgas wrote
+// them before) holds the list as of its last close, stale if a later writer
+// was killed: "null_fsm_addr" (HDF5's property for h5clear) drops it, so
+// space comes only from the end of the file; the few bytes freed before are
+// lost, never handed out twice. (HDF5 fails to allocate with it in a file
+// that keeps no such list.) SWMR writing (kAppend) needs the 1.10 format.
+Handle fapl_writer(Mode mode, bool drop_free_space) {
+  Handle fapl = mode == Mode::kAppend ? fapl_v110() : Handle(check(H5Pcreate(H5P_FILE_ACCESS), "file access property list"));
+  hbool_t yes = true;
+  check_status(H5Pset(fapl.id(), "clear_status_flags", &yes), "clear status flags");
+  if (drop_free_space) check_status(H5Pset(fapl.id(), "null_fsm_addr", &yes), "drop the saved free space");
   return fapl;
 }
 
+bool keeps_free_space(hid_t file) {
+  Handle fcpl(H5Fget_create_plist(file));
+  H5F_fspace_strategy_t strategy{};
+  hbool_t persist = false;
+  hsize_t threshold = 0;
+  return fcpl.valid() && H5Pget_file_space_strategy(fcpl.id(), &strategy, &persist, &threshold) >= 0 && persist;
+}
+
 hid_t open_existing(const std::string& path, Mode mode) {
-  if (mode == Mode::kReadWrite) {
-    Handle fapl = fapl_clearing_status_flags();
-    return H5Fopen(path.c_str(), H5F_ACC_RDWR, fapl.id());
+  if (mode == Mode::kReadWrite || mode == Mode::kAppend) {
+    const hid_t probe = open_existing(path, Mode::kReadOnly);
+    const bool drop = probe >= 0 && keeps_free_space(Handle(probe).id());
+    Handle fapl = fapl_writer(mode, drop);
+    const unsigned swmr = mode == Mode::kAppend ? H5F_ACC_SWMR_WRITE : 0;
+    return H5Fopen(path.c_str(), H5F_ACC_RDWR | swmr, fapl.id());
   }
   const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (id >= 0) return id;
@@ -195,14 +217,46 @@ Handle open_file(const std::string& path, Mode mode) {
   if (id < 0) {
     switch (mode) {
       case Mode::kReadOnly:
+        // An HDF5 file that HDF5 will not open was most often left "open for
+        // writing" by a program killed before it started SWMR writing.
+        if (H5Fis_hdf5(path.c_str()) > 0)
+          throw InputError("cannot open '" + path + "': HDF5 refuses it (left open for writing by a killed program? " +
+                           "'h5clear -s " + path + "' clears that flag; else the file is damaged)");
         throw InputError("cannot open '" + path + "' as an HDF5 file (missing, unreadable or not HDF5)");
       case Mode::kReadWrite:
+      case Mode::kAppend:
         throw InputError("cannot open '" + path + "' to append (missing, not HDF5, or open in another program)");
       default:
         throw InputError("cannot create '" + path + "' (directory missing or not writable?)");
     }
   }
   return Handle(id);
+}
+
+namespace {
+
+herr_t collect_name(hid_t, const char* name, const H5L_info_t*, void* names) {
+  static_cast<std::vector<std::string>*>(names)->emplace_back(name);
+  return 0;
+}
+
+}  // namespace
+
+void copy_into_new_file(const Handle& from, const std::string& to, const std::function<void()>& between) {
+  Handle out = open_file(to, Mode::kCreateTruncate);
+  std::vector<std::string> names;
+  check_status(H5Literate(from.id(), H5_INDEX_NAME, H5_ITER_INC, nullptr, collect_name, &names), "list the root group");
+  for (const std::string& name : names) {
+    between();
+    check_status(H5Ocopy(from.id(), name.c_str(), out.id(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT), "copy " + name);
+  }
+  out.close_checked();
+}
+
+bool appends_in_swmr(const Handle& file) {
+  H5F_info2_t info{};
+  check_status(H5Fget_info2(file.id(), &info), "file info");
+  return info.super.version >= 3 && !keeps_free_space(file.id());
 }
 
 bool start_swmr_write(const Handle& file) {

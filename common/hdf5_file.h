@@ -5,6 +5,7 @@
 #include <hdf5.h>
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -53,9 +54,13 @@ void silence_library_errors();
 
 // Files are created in the HDF5 1.10 format, which SWMR writing needs.
 // kReadOnly also opens a file that a SWMR writer has open, or left behind
-// when it was killed (as a SWMR reader). kReadWrite clears the status flags
-// such a writer leaves (as `h5clear -s` does), so a killed run can resume.
-enum class Mode { kCreateExclusive, kCreateTruncate, kReadOnly, kReadWrite };
+// when it was killed (as a SWMR reader). kReadWrite and kAppend clear the
+// status flags such a writer leaves (as `h5clear -s` does), so a killed run
+// can resume. kAppend opens straight into SWMR writing (start_swmr_write), so
+// the file is consistent on disk from the first byte written: a writer killed
+// at any moment leaves it readable. It fails for a file that
+// appends_in_swmr() says cannot, which only kReadWrite opens.
+enum class Mode { kCreateExclusive, kCreateTruncate, kReadOnly, kReadWrite, kAppend };
 Handle open_file(const std::string& path, Mode mode);
 void flush(const Handle& file);
 // A writer killed in the middle of a write can leave the file's recorded end
@@ -65,6 +70,15 @@ void flush(const Handle& file);
 void extend_allocation_past_file_end(const Handle& file, hsize_t margin);
 // The bytes of one chunk of a chunked dataset, uncompressed; 0 if not chunked.
 hsize_t chunk_bytes(hid_t dataset);
+// Whether the open file can be opened with kAppend: it is in the 1.10
+// format and keeps no list of its free space (HDF5 cannot open such a file
+// for SWMR writing; earlier versions of coolgas wrote them so).
+bool appends_in_swmr(const Handle& file);
+// Copies every object of the open file `from` into a new file `to` (created
+// as kCreateTruncate creates files: the format appends_in_swmr() wants),
+// calling `between` before each object of the root group (it may throw, to
+// stop). The raw data is copied as it is stored, the filters kept.
+void copy_into_new_file(const Handle& from, const std::string& to, const std::function<void()>& between);
 // Starts single-writer/multiple-reader writing: from here on the file is
 // consistent on disk at every moment, readers may open it, and no object
 // may be created or attribute written. Returns false, doing nothing, for a

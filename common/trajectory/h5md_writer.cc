@@ -6,7 +6,9 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "common/durable_file.h"
 #include "common/error.h"
+#include "common/interrupt.h"
 #include "common/trajectory/collision_models.h"
 #include "common/trajectory/h5md_profile.h"
 #include "common/version.h"
@@ -81,6 +83,18 @@ void truncate_element(hid_t file, std::string_view element, hsize_t rows) {
   }
 }
 
+// Opens the file read-only. A writer of an earlier version killed before it
+// started SWMR writing leaves a flag that no reader gets past; opening the
+// file for writing and closing it clears that (as `h5clear -s` does).
+h5::Handle open_clearing_flags(const std::string& path) {
+  try {
+    return h5::open_file(path, h5::Mode::kReadOnly);
+  } catch (const InputError&) {
+    h5::open_file(path, h5::Mode::kReadWrite).close_checked();
+    return h5::open_file(path, h5::Mode::kReadOnly);
+  }
+}
+
 }  // namespace
 
 template <class F>
@@ -131,15 +145,16 @@ void H5mdWriter::create_objects(const RunParameters& params, const DumpStorage& 
   flush_file();
 }
 
-H5mdWriter H5mdWriter::reopen(const std::string& path) {
+H5mdWriter H5mdWriter::reopen(const std::string& path, const std::string* new_scene) {
   ignore_file_size_signal();
   H5mdWriter w;
   w.path_ = path;
   w.lock_ = WriterLock::take(path);  // before the status flags are cleared
-  w.file_ = h5::open_file(path, h5::Mode::kReadWrite);
+  const bool current = check_resumable(path);
+  if (new_scene || !current) w.lock_ = rewrite_through_copy(path, new_scene, !current);
+  w.file_ = h5::open_file(path, h5::Mode::kAppend);
+  w.appending_ = true;
   const hid_t f = w.file_.id();
-  if (!h5::exists(f, std::string(kRestartTime)))
-    throw InputError("'" + path + "' is not a coolgas trajectory (no /restart)");
   const RunParameters p = read_file_parameters(f, path);
   w.n_ = p.N;
   w.box_ = p.L;
@@ -152,6 +167,52 @@ H5mdWriter H5mdWriter::reopen(const std::string& path) {
     w.drop_interrupted_burst();
   });
   return w;
+}
+
+// Read-only: a file that cannot be resumed is refused before a byte of it
+// changes. Whether it can be opened for SWMR writing as it is (files of
+// earlier versions cannot: h5::appends_in_swmr).
+bool H5mdWriter::check_resumable(const std::string& path) {
+  h5::Handle f = open_clearing_flags(path);
+  if (!h5::exists(f.id(), std::string(kRestartTime)))
+    throw InputError("'" + path + "' is not a coolgas trajectory (no /restart)");
+  return h5::appends_in_swmr(f);
+}
+
+// Whatever a resume must change besides appending rows is changed in a copy
+// that replaces the file only when whole, so a kill at any moment leaves the
+// old file or the new one: the scene, an attribute, which SWMR writing
+// cannot change and which HDF5 rewriting it in place (the attribute, its
+// heap, the group's header) can leave torn; and, once, a file of an earlier
+// version, which HDF5 cannot open for SWMR writing (`migrate`: its objects
+// are copied into a file of the current format). The copy is locked before
+// it takes the file's place, so no second writer slips in between.
+WriterLock H5mdWriter::rewrite_through_copy(const std::string& path, const std::string* scene, bool migrate) {
+  const std::string copy = path + ".partial";
+  if (!migrate) copy_file_durably(path, copy);
+  try {
+    if (migrate) {
+      h5::Handle from = h5::open_file(path, h5::Mode::kReadOnly);
+      h5::copy_into_new_file(from, copy, [] { throw_if_interrupted("while converting the trajectory; it is unchanged"); });
+    }
+    WriterLock lock = WriterLock::take(copy);
+    if (scene) {
+      h5::Handle f = h5::open_file(copy, h5::Mode::kReadWrite);
+      h5::Handle par = h5::open_group(f.id(), std::string(kParameters));
+      h5::write_attr(par.id(), "scene", *scene);
+      par.close_checked();
+      f.close_checked();
+    }
+    sync_file(copy);
+    replace_file(copy, path);
+    return lock;
+  } catch (const h5::Error& e) {
+    std::filesystem::remove(copy);
+    throw WriteError("cannot write '" + copy + "': " + (e.cause.empty() ? std::string(e.what()) : e.cause));
+  } catch (...) {
+    std::filesystem::remove(copy);
+    throw;
+  }
 }
 
 // Drops anything an interrupted burst wrote after the last complete frame.
@@ -279,14 +340,5 @@ void H5mdWriter::rename(const std::string& to) {
 }
 
 void H5mdWriter::flush_file() { h5::flush(file_); }
-
-void H5mdWriter::update_scene(const std::string& scene_toml) {
-  if (appending_) throw std::logic_error("update_scene after the first write: SWMR writing forbids it");
-  writing([&] {
-    h5::Handle par = h5::open_group(file_.id(), std::string(kParameters));
-    h5::write_attr(par.id(), "scene", scene_toml);
-    flush_file();
-  });
-}
 
 }  // namespace coolgas

@@ -8,7 +8,9 @@
 // writes the buffered observables and the frame, flushes, and only then
 // appends the frame's /restart row and flushes again. A /restart row thus
 // marks a frame complete; a process killed at any moment leaves every
-// earlier frame readable and the file resumable (reopen()). A kill in the
+// earlier frame readable and the file resumable (reopen()). reopen() opens
+// straight into SWMR mode, so a resumed run is as safe from its first write.
+// A kill in the
 // middle of a frame can leave chunks past the end of allocation the file
 // records; reopen() first moves that end past the file's size (as
 // `h5clear -i` does), else dropping the half-written rows failed on close.
@@ -86,19 +88,19 @@ class H5mdWriter {
                            const DumpStorage& storage = {});
   // Opens an existing file to append after its last complete frame; rows
   // written after that frame (an interrupted burst) are dropped. InputError
-  // if another process is writing it (writer_lock.h).
-  static H5mdWriter reopen(const std::string& path);
+  // if another process is writing it (writer_lock.h) or it is no coolgas
+  // trajectory. `new_scene`, if given, replaces the stored scene text (a
+  // resumed run may change run.* and output.* keys). That change, and the
+  // conversion of a file of an earlier version, are made in a copy of the
+  // file (FILE.partial, moved into place whole): a kill at any moment of a
+  // reopen leaves a file that resumes.
+  static H5mdWriter reopen(const std::string& path, const std::string* new_scene = nullptr);
 
   void add_observables(const ObservableRow& row) { pending_.push_back(row); }
   // Writes the buffered observables, then the frame, flushes, then its restart row, and flushes.
   void add_frame(const FrameView& frame);
   // Writes buffered observables and flushes (end of run).
   void flush();
-  // Replaces the stored scene text (a resumed run may extend run.t_end).
-  // Only before the first write after create() or reopen(): SWMR writing
-  // forbids changing attributes.
-  void update_scene(const std::string& scene_toml);
-
   // Renames the file (the simulator writes its first dump under a temporary
   // name); later errors name the new path.
   void rename(const std::string& to);
@@ -107,6 +109,8 @@ class H5mdWriter {
 
  private:
   H5mdWriter() = default;
+  static bool check_resumable(const std::string& path);
+  static WriterLock rewrite_through_copy(const std::string& path, const std::string* scene, bool migrate);
   void create_objects(const RunParameters& params, const DumpStorage& storage);
   void drop_interrupted_burst();
   void begin_appending();

@@ -1,30 +1,43 @@
 #!/bin/sh
-# Crash safety and exact resume under SIGKILL at random moments (not a unit
-# test: it takes minutes). Runs a small scene once uninterrupted, then RUNS
-# times: starts it, kills it with SIGKILL after a random delay within the
-# uninterrupted run's wall time, checks the file with coolgas-validate,
-# resumes it with --resume to the end (a run killed before its first dump
-# left no file and is started again, as a user would) and compares the whole
-# file with the uninterrupted one (h5diff: every dataset and attribute).
-# Prints one line per run (a failing file or message is kept in the scratch
-# folder as failed-*) and a summary:
-#   killed=K validated=V resumed=R identical=I of RUNS
+# Crash safety and exact resume under SIGKILL at random moments, in every
+# phase of a run's life on a cluster. A small scene is run once
+# uninterrupted (the reference); then, RUNS times in each phase, a job is
+# killed with SIGKILL after a random delay within that job's own wall time,
+# the file is checked with coolgas-validate, the same job is started again
+# (as a scheduler's next job would) and the file must equal the reference
+# (h5diff: every dataset and attribute):
+#   fresh     a new run is killed (one killed before its first dump left no
+#             file and is started again, as a user would);
+#   sigint    a run stopped by SIGINT (a time limit with grace) is resumed,
+#             and the resume is killed;
+#   sigkill   a run killed at a random moment is resumed, and the resume is
+#             killed too;
+#   extend    a finished run is extended with --set run.t_end=..., and the
+#             extension is killed.
+# Prints one line per job (a failing file or message is kept in the scratch
+# folder as failed-*), a summary per phase, and exits 1 unless every job in
+# every phase ended identical to the reference:
+#   PHASE: identical=I of RUNS (validated=V resumed=R)
 #
-# usage: tests/bench/random_kill.sh BUILD_DIR [RUNS] [SCRATCH_DIR]
-#   e.g. tests/bench/random_kill.sh build 200 /tmp/kill
-# Environment: COOLGAS_CHECKPOINT_INTERVAL (default here 0.2 s, so kills land
-# between mid-run checkpoints as well as before the first one).
+# usage: tests/bench/random_kill.sh BUILD_DIR [RUNS] [SCRATCH_DIR] [PHASES]
+#   e.g. tests/bench/random_kill.sh build 50 /tmp/kill
+#        tests/bench/random_kill.sh build 3 /tmp/kill "sigint extend"
+# Environment: COOLGAS_CHECKPOINT_INTERVAL (default here 0.05 s, so kills land
+# between mid-run checkpoints and inside them as well as before the first
+# one); KILL_N, KILL_T_END (the scene's size and length; defaults 8000, 1000).
 set -u
-build=${1:?usage: random_kill.sh BUILD_DIR [RUNS] [SCRATCH_DIR]}
-runs=${2:-200}
+build=${1:?usage: random_kill.sh BUILD_DIR [RUNS] [SCRATCH_DIR] [PHASES]}
+runs=${2:-50}
 dir=${3:-$(mktemp -d)}
+phases=${4:-fresh sigint sigkill extend}
 sim="$build/bin/coolgas-simulate -q"
 validate="$build/bin/coolgas-validate"
-export COOLGAS_CHECKPOINT_INTERVAL=${COOLGAS_CHECKPOINT_INTERVAL:-0.2}
+export COOLGAS_CHECKPOINT_INTERVAL=${COOLGAS_CHECKPOINT_INTERVAL:-0.05}
+t_end=${KILL_T_END:-1000}
 mkdir -p "$dir"
-cat > "$dir/gas.toml" <<'SCENE'
+cat > "$dir/gas.toml" <<SCENE
 [system]
-N = 3000
+N = ${KILL_N:-8000}
 phi = 0.208
 seed = 5
 equilibrate = 1
@@ -33,41 +46,98 @@ model = "inelastic"
 r0 = 0.1
 delta = 1e-4
 [run]
-t_end = 300
+t_end = $t_end
 [output]
 dumps_per_decade = 10
 SCENE
 
-start=$(date +%s.%N)
-$sim "$dir/gas.toml" -o "$dir/whole.h5" --force || { echo "the uninterrupted run failed"; exit 1; }
-wall=$(echo "$(date +%s.%N) - $start" | bc)
-echo "uninterrupted run: ${wall}s"
-
-killed=0 validated=0 resumed=0 identical=0
-k=0
-while [ "$k" -lt "$runs" ]; do
-  k=$((k + 1))
-  out="$dir/run.h5"
-  rm -f "$out" "$out.checkpoint" "$out.partial" "$out.checkpoint.partial"
-  delay=$(awk -v seed="$k" -v w="$wall" 'BEGIN { srand(seed); printf "%.3f", 0.9 * rand() * w }')
-  $sim "$dir/gas.toml" -o "$out" & pid=$!
-  sleep "$delay"
-  kill -KILL "$pid" 2>/dev/null && killed=$((killed + 1))
+now() { date +%s.%N; }
+since() { echo "$(now) - $1" | bc; }
+# A delay in [0, 0.9 * $2) seconds, the same for the same seed $1.
+delay_for() { awk -v seed="$1" -v w="$2" 'BEGIN { srand(seed); printf "%.3f", 0.9 * rand() * w }'; }
+# Runs a job ("$@") in the background and kills it with SIGKILL after $1 seconds.
+kill_after() {
+  d=$1
+  shift
+  "$@" >/dev/null 2>&1 &
+  pid=$!
+  sleep "$d"
+  kill -KILL "$pid" 2>/dev/null
   wait "$pid" 2>/dev/null
-  if [ ! -f "$out" ]; then  # killed during set-up: nothing to resume, start again
-    note="no file yet"
-    $sim "$dir/gas.toml" -o "$out" --force
-  else
-    note="resumed"
-  fi
-  ok_valid=0 ok_resume=0 ok_same=0
-  # (time limits: a reader that hangs on a damaged file is a failure too)
-  timeout 60 $validate "$out" >"$dir/validate.out" 2>&1 && ok_valid=1
-  [ "$ok_valid" = 1 ] || cp "$out" "$dir/failed-validate-$k.h5"
-  timeout 120 $sim --resume "$out" >/dev/null 2>"$dir/resume.err" && ok_resume=1
-  [ "$ok_resume" = 1 ] || cp "$dir/resume.err" "$dir/failed-resume-$k.err"
-  h5diff -q "$dir/whole.h5" "$out" >/dev/null 2>&1 && ok_same=1
-  validated=$((validated + ok_valid)) resumed=$((resumed + ok_resume)) identical=$((identical + ok_same))
-  echo "run $k: kill after ${delay}s, $note: validates=$ok_valid resumes=$ok_resume identical=$ok_same"
+}
+# The files of a run named $1 (trajectory, checkpoint and their temporary names) copied to $2.
+copy_run() {
+  rm -f "$2" "$2.checkpoint" "$2.partial" "$2.checkpoint.partial"
+  cp "$1" "$2"
+  [ -f "$1.checkpoint" ] && cp "$1.checkpoint" "$2.checkpoint"
+  return 0
+}
+
+start=$(now)
+$sim "$dir/gas.toml" -o "$dir/whole.h5" --force || { echo "the uninterrupted run failed"; exit 1; }
+wall=$(since "$start")
+echo "uninterrupted run: ${wall}s"
+# The states the resuming phases start from, and how long their jobs take uninterrupted.
+$sim "$dir/gas.toml" -o "$dir/stopped.h5" --force >/dev/null 2>&1 &
+pid=$!
+sleep "$(echo "$wall / 3" | bc -l)"
+kill -INT "$pid"
+wait "$pid"
+[ $? -eq 3 ] || { echo "the SIGINT run did not stop with exit code 3"; exit 1; }
+copy_run "$dir/stopped.h5" "$dir/probe.h5"
+start=$(now)
+$sim --resume "$dir/probe.h5" || { echo "resuming the SIGINT run failed"; exit 1; }
+wall_sigint=$(since "$start")
+short_end=$(echo "$t_end / 4" | bc -l)
+$sim "$dir/gas.toml" -o "$dir/short.h5" --force --set "run.t_end=$short_end" || { echo "the short run failed"; exit 1; }
+copy_run "$dir/short.h5" "$dir/probe.h5"
+start=$(now)
+$sim --resume "$dir/probe.h5" --set "run.t_end=$t_end" || { echo "the extension failed"; exit 1; }
+wall_extend=$(since "$start")
+
+failed=0
+for phase in $phases; do
+  validated=0 resumed=0 identical=0
+  k=0
+  while [ "$k" -lt "$runs" ]; do
+    k=$((k + 1))
+    out="$dir/run.h5"
+    rm -f "$out" "$out.checkpoint" "$out.partial" "$out.checkpoint.partial"
+    case $phase in
+      fresh)
+        kill_after "$(delay_for "$k" "$wall")" $sim "$dir/gas.toml" -o "$out"
+        job="$sim --resume $out" ;;
+      sigint)
+        copy_run "$dir/stopped.h5" "$out"
+        job="$sim --resume $out"
+        kill_after "$(delay_for "$k" "$wall_sigint")" $job ;;
+      sigkill)
+        first=$(delay_for "$((k + 1000))" "$wall")
+        kill_after "$first" $sim "$dir/gas.toml" -o "$out"
+        job="$sim --resume $out"
+        [ -f "$out" ] || job="$sim $dir/gas.toml -o $out --force"  # killed before its first dump
+        kill_after "$(delay_for "$k" "$(echo "$wall - $first" | bc)")" $job ;;
+      extend)
+        copy_run "$dir/short.h5" "$out"
+        job="$sim --resume $out --set run.t_end=$t_end"
+        kill_after "$(delay_for "$k" "$wall_extend")" $job ;;
+      *) echo "unknown phase '$phase' (fresh, sigint, sigkill, extend)"; exit 2 ;;
+    esac
+    # The job again; a fresh run killed before its first dump left no file
+    # (nothing to validate) and starts again.
+    [ -f "$out" ] || job="$sim $dir/gas.toml -o $out --force"
+    ok_valid=0 ok_resume=0 ok_same=0
+    # (time limits: a reader that hangs on a damaged file is a failure too)
+    if [ ! -f "$out" ] || timeout 60 $validate "$out" >"$dir/validate.out" 2>&1; then ok_valid=1; fi
+    [ "$ok_valid" = 1 ] || cp "$out" "$dir/failed-validate-$phase-$k.h5"
+    timeout 120 $job >/dev/null 2>"$dir/again.err" && ok_resume=1
+    [ "$ok_resume" = 1 ] || cp "$dir/again.err" "$dir/failed-again-$phase-$k.err"
+    h5diff -q "$dir/whole.h5" "$out" >/dev/null 2>&1 && ok_same=1
+    [ "$ok_same" = 1 ] || cp "$out" "$dir/failed-differs-$phase-$k.h5"
+    validated=$((validated + ok_valid)) resumed=$((resumed + ok_resume)) identical=$((identical + ok_same))
+    echo "$phase $k: validates=$ok_valid again=$ok_resume identical=$ok_same"
+  done
+  echo "$phase: identical=$identical of $runs (validated=$validated resumed=$resumed)"
+  [ "$identical" = "$runs" ] || failed=1
 done
-echo "killed=$killed validated=$validated resumed=$resumed identical=$identical of $runs"
+exit $failed

@@ -76,6 +76,28 @@ TEST(H5mdWriter, ReopenDropsRowsAfterTheLastCompleteFrame) {
   EXPECT_EQ(h5::read_all<double>(t.id()), (std::vector<double>{0, 1, 2}));
 }
 
+// A new scene is written into a copy that takes the file's place whole: the
+// scene changes, the frames stay, the file still appends in SWMR mode, and
+// no copy is left beside it.
+TEST(H5mdWriter, ReopenWithANewSceneReplacesItThroughAWholeCopy) {
+  const std::string path = test::scratch_dir("h5md_reopen_scene") + "/run.h5";
+  {
+    H5mdWriter w = H5mdWriter::create(path, small_params(), false);
+    write_frames(w, 0, 2);
+  }
+  const std::string scene = "[system]\nN = 2\n[run]\nt_end = 50\n";
+  {
+    H5mdWriter w = H5mdWriter::reopen(path, &scene);
+    write_frames(w, 2, 1);
+  }
+  EXPECT_FALSE(std::filesystem::exists(path + ".partial"));
+  h5::Handle f = h5::open_file(path, h5::Mode::kReadOnly);
+  EXPECT_EQ(h5::read_attr_string(h5::open_group(f.id(), "parameters").id(), "scene"), scene);
+  EXPECT_TRUE(h5::appends_in_swmr(f));
+  h5::Handle t = h5::open_dataset(f.id(), "particles/all/position/time");
+  EXPECT_EQ(h5::read_all<double>(t.id()), (std::vector<double>{0, 1, 2}));
+}
+
 // The filters and chunk shape a dataset was created with.
 struct StoredAs {
   std::vector<H5Z_filter_t> filters;
