@@ -20,6 +20,8 @@
 #include "common/interrupt.h"
 #include "common/trajectory/collision_models.h"
 #include "common/trajectory/h5md_writer.h"
+#include "common/trajectory/writer_lock.h"
+#include "data-schema/validator.h"
 #include "common/output_file.h"
 #include "common/progress.h"
 #include "simulate/run/run_eta.h"
@@ -273,6 +275,30 @@ std::string default_output(const std::string& scene_path) {
 // Checked before the (possibly long) set-up, so a typo costs nothing.
 void check_writable(const std::string& out, bool force) { check_output_file(out, force); }
 
+// A file another coolgas-simulate is writing is never replaced: that writer
+// would go on into an unlinked file, and its checkpoints would overwrite
+// this run's. The lock, held until the new file takes the old one's place,
+// also keeps a --resume of the old file from starting meanwhile.
+WriterLock lock_replaced_file(const std::string& out, bool force) {
+  std::error_code ec;
+  if (!force || !std::filesystem::is_regular_file(out, ec)) return {};
+  return WriterLock::take(out);
+}
+
+// A file the validator rejects is refused before a byte of it changes:
+// frames appended to it would hide the damage, and its state is no sound
+// start. (Rows of a burst a kill cut short are not damage: the resume drops
+// them.) Called after the resume point is read, whose messages name the
+// field a damaged file fails on.
+void check_valid_to_resume(const std::string& path) {
+  const schema::Report report = schema::validate(path);
+  if (report.valid()) return;
+  const auto& first = report.problems.front();
+  const std::size_t more = report.problems.size() - 1;
+  throw InputError("cannot resume '" + path + "': " + first.path + ": " + first.what +
+                   (more ? " (" + std::to_string(more) + " more: coolgas-validate lists them)" : ""));
+}
+
 int drive(Driver& driver, const Scene& scene) {
   try {
     return driver.run();
@@ -289,6 +315,7 @@ int start_new(const SimulationRequest& req) {
   const double interval = checkpoint_interval();
   const std::string out = req.output.empty() ? default_output(req.scene_path) : req.output;
   check_writable(out, req.force);
+  WriterLock replaced = lock_replaced_file(out, req.force);
   std::unique_ptr<EngineBase> engine;
   if (scene.init == InitialPositions::kFile) {
     FileStart start = start_from_file(scene);  // completes the scene (N, L, phi, T0)
@@ -326,6 +353,7 @@ int start_new(const SimulationRequest& req) {
     driver.start();
     driver.checkpoint();
     writer.rename(out);  // errors from here on name the real output
+    replaced = WriterLock();  // the replaced file's space is freed now, not at the end of the run
   } catch (...) {
     std::filesystem::remove(tmp);
     remove_checkpoint(out);
@@ -343,6 +371,7 @@ int resume(const SimulationRequest& req) {
   const double interval = checkpoint_interval();
   ResumePoint rp = read_resume_point(req.resume);
   const Scene scene = parse_scene(rp.scene_toml, req.resume + ":/parameters/scene", req.overrides);
+  check_valid_to_resume(req.resume);
   if (rp.time >= scene.t_end) {
     // Killed after its last dump, the file still has the killed writer's
     // "open for writing" flags: opening it to append and closing it clears
@@ -366,8 +395,11 @@ int resume(const SimulationRequest& req) {
   if (!ck && !req.quiet)
     std::cerr << "coolgas-simulate: no checkpoint '" << checkpoint_path(req.resume)
               << "'; continuing from the last dump (not bit-identical to an uninterrupted run)\n";
-  H5mdWriter writer = H5mdWriter::reopen(req.resume);
-  writer.update_scene(scene.to_toml());
+  // The stored scene changes only when the overrides change it (a reopen
+  // that changes it copies the file: h5md_writer.h).
+  const std::string text = scene.to_toml();
+  const bool changed = text != parse_scene(rp.scene_toml, req.resume + ":/parameters/scene", {}).to_toml();
+  H5mdWriter writer = H5mdWriter::reopen(req.resume, changed ? &text : nullptr);
   Driver driver(scene, *engine, writer, req.resume, req.quiet, interval);
   driver.resume_after(rp.time, ck ? ck->pending : std::vector<ObservableRow>{});
   return drive(driver, scene);

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "common/hdf5_file.h"
+#include "common/trajectory/writer_lock.h"
 #include "tests/support/cli_checks.h"
 #include "tests/support/run_command.h"
 #include "tests/support/simulate_cli.h"
@@ -219,6 +220,71 @@ void overwrite_signature(const std::string& path, const std::string& signature) 
 
 std::string resume_to_20(const std::string& path) {
   return test::simulate("--resume " + path + " --set run.t_end=20");
+}
+
+// The whole file's bytes.
+std::string file_bytes(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
+}
+
+// A file the validator rejects (here a dump time going back, written past the
+// writer's checks) is refused with one line naming the problem, before a
+// byte of it changes: appending would hide the damage.
+TEST(ResumeCliDamage, AFileTheValidatorRejectsIsRefusedUnchanged) {
+  const std::string dir = test::scratch_dir("resume_invalid");
+  const std::string out = short_run(dir);
+  {
+    h5::Handle f = h5::open_file(out, h5::Mode::kReadWrite);
+    h5::Handle t = h5::open_dataset(f.id(), "particles/all/position/time");
+    std::vector<double> times = h5::read_all<double>(t.id());
+    ASSERT_GE(times.size(), 3u);
+    times[2] = -1;
+    ASSERT_GE(H5Dwrite(t.id(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, times.data()), 0);
+  }
+  const std::string before = file_bytes(out);
+  test::expect_refused_with_one_line(test::run_command(resume_to_20(out)), "[2] = -1 is less than an earlier");
+  EXPECT_TRUE(file_bytes(out) == before) << "the refused file was changed";
+}
+
+// --force never replaces a file that another coolgas-simulate is writing
+// (here: whose writer lock a live process holds): that writer would go on into
+// an unlinked file and its checkpoints overwrite the new run's.
+TEST(ResumeCliDamage, ForceRefusesAFileALiveWriterHolds) {
+  const std::string dir = test::scratch_dir("resume_force_live");
+  const std::string out = short_run(dir);
+  const std::string before = file_bytes(out);
+  const WriterLock held = WriterLock::take(out);
+  test::expect_refused_with_one_line(test::run_command(test::simulate(write_scene(dir) + " -o " + out + " --force")),
+                                     "is being written by another coolgas-simulate");
+  EXPECT_TRUE(file_bytes(out) == before);
+  EXPECT_FALSE(std::filesystem::exists(out + ".partial"));
+}
+
+// A file written by an earlier version keeps a list of its free space, which
+// HDF5 cannot open for SWMR writing and which goes stale when a writer is
+// killed (the next writer then hands out space live objects hold). Its first
+// resume converts it, through a copy, into the current format; a resume
+// killed at any moment after that resumes exactly.
+TEST_F(ResumeCli, AFileOfAnEarlierVersionIsConvertedAndResumesExactly) {
+  const std::string dir = test::scratch_dir("resume_earlier_version");
+  const std::string stopped = dir + "/stopped.h5", old = dir + "/old.h5";
+  ASSERT_EQ(run_and_signal(scene(), stopped, "INT", 0.2 * wall_), 3);
+  // h5repack rewrites it as the earlier versions created their files.
+  ASSERT_EQ(test::run_command("h5repack -S PAGE -P 1 -G 4096 " + stopped + " " + old).exit_code, 0);
+  std::filesystem::copy_file(stopped + ".checkpoint", old + ".checkpoint");
+  const auto keeps_free_space = [](const std::string& path) {
+    return test::run_command("h5dump -B -H " + path).out.find("FREE_SPACE_PERSIST TRUE") != std::string::npos;
+  };
+  ASSERT_TRUE(keeps_free_space(old));
+  // Killed mid-run after the conversion, then resumed to the end.
+  const std::string kill = "COOLGAS_CHECKPOINT_INTERVAL=0.1 " + test::simulate("--resume " + old) +
+                           " & pid=$!; sleep " + std::to_string(0.4 * wall_) + "; kill -KILL $pid; wait $pid";
+  test::run_command(kill);
+  EXPECT_FALSE(keeps_free_space(old));
+  const auto r = test::run_command(test::simulate("--resume " + old));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  expect_same_trajectory(whole(), old);
 }
 
 // The run parameters are attributes of /parameters: the strings live in the
