@@ -9,34 +9,54 @@ JOBS ?= $(shell nproc)
 NATIVE ?= 0
 CMAKE_FLAGS = -DCMAKE_BUILD_TYPE=Release $(if $(filter 1,$(NATIVE)),-DCOOLGAS_NATIVE=ON,-DCOOLGAS_NATIVE=OFF)
 
-# Debian 12 packages the project needs: toolchain, libraries, plotting, and
-# the Python readers the tests use to check that real clients open our files.
-DEBIAN_PACKAGES := cmake make g++ pkg-config git \
+# Debian 12 packages. What building and running need (toolchain, libraries,
+# gnuplot for the pipelines' figures, help2man for the manual pages), which
+# `make demo` installs; and what only the tests need (Python readers that
+# check real clients open our files, pytest), which `make test` adds. Both
+# without recommended packages.
+BUILD_PACKAGES := cmake make g++ pkg-config git \
   libhdf5-dev hdf5-tools libfftw3-dev libgsl-dev libeigen3-dev \
   libgtest-dev libcli11-dev libtoml11-dev \
-  gnuplot-nox python3 python3-h5py python3-mdanalysis python3-ase python3-pandas
+  gnuplot-nox help2man man-db
+TEST_PACKAGES := python3 python3-h5py python3-mdanalysis python3-ase python3-pandas python3-pytest
 
 PREFIX ?= /usr/local
 
-.PHONY: deps configure build demo test bench install clean
+.PHONY: deps test-deps configure build demo test bench install clean
 
-deps:
-	@missing=""; for p in $(DEBIAN_PACKAGES); do \
+# $(call install_missing,PACKAGES): installs those not yet installed (as root).
+define install_missing
+	@missing=""; for p in $(1); do \
 	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q 'install ok installed' || missing="$$missing $$p"; \
 	done; \
 	if [ -n "$$missing" ]; then \
 	  if [ "$$(id -u)" -ne 0 ]; then echo "error: missing Debian packages:$$missing (run 'make' as root, or apt-get install them)"; exit 2; fi; \
 	  echo "Installing missing Debian packages:$$missing"; \
-	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing; \
+	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
 	fi
+endef
 
+deps:
+	$(call install_missing,$(BUILD_PACKAGES))
+
+test-deps:
+	$(call install_missing,$(TEST_PACKAGES))
+
+# A build folder copied with the tree (a copied clone) was configured for
+# the old folder, which cmake refuses: its cache is dropped and the build
+# configured afresh here.
 configure: deps
+	@home=$$(sed -n 's/^CMAKE_HOME_DIRECTORY:INTERNAL=//p' $(BUILD)/CMakeCache.txt 2>/dev/null); \
+	if [ -n "$$home" ] && [ "$$home" != "$(CURDIR)" ]; then \
+	  echo "note: $(BUILD)/ was configured for $$home; configuring it afresh for $(CURDIR)"; \
+	  rm -rf $(BUILD)/CMakeCache.txt $(BUILD)/CMakeFiles; \
+	fi
 	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
 
 build: configure
 	cmake --build $(BUILD) -j $(JOBS)
 
-test: build
+test: test-deps build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 demo: build
@@ -55,7 +75,8 @@ bench: build
 	$(BUILD)/bench/structure_bench
 	$(BUILD)/bench/shape_bench
 
-# The programs into $(PREFIX)/bin.
+# The programs into $(PREFIX)/bin, their manual pages, completion, and the
+# documents and pipelines into $(PREFIX)/share (common/install/install.cmake).
 install: build
 	cmake --install $(BUILD) --prefix $(PREFIX)
 

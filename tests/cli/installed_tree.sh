@@ -1,0 +1,40 @@
+#!/bin/sh
+# `make install`'s tree, used as a user would: installs the build into a
+# fresh prefix, then checks that every program has a manual page that
+# `man -l` shows, that an installed program runs, that the documents --help
+# names are there, that completion offers a program's options, and that the
+# installed pipelines run on the installed programs (SCALE=tiny, seconds).
+# Prints what failed and exits 1 on the first failure.
+#
+# usage: tests/cli/installed_tree.sh BUILD_DIR SCRATCH_DIR
+set -u
+build=${1:?usage: installed_tree.sh BUILD_DIR SCRATCH_DIR}
+scratch=${2:?usage: installed_tree.sh BUILD_DIR SCRATCH_DIR}
+fail() { echo "installed tree: $*"; exit 1; }
+rm -rf "$scratch"
+mkdir -p "$scratch"
+prefix=$scratch/prefix
+cmake --install "$build" --prefix "$prefix" >"$scratch/install.log" 2>&1 || fail "cmake --install failed: $(tail -1 "$scratch/install.log")"
+
+count=0
+for program in "$prefix"/bin/coolgas-*; do
+  name=$(basename "$program")
+  [ -s "$prefix/share/man/man1/$name.1" ] || fail "no manual page for $name"
+  count=$((count + 1))
+done
+[ "$count" -ge 12 ] || fail "only $count programs installed"
+MANWIDTH=100 man -l "$prefix/share/man/man1/coolgas-simulate.1" 2>/dev/null >"$scratch/man.txt"
+grep -q -- '--resume' "$scratch/man.txt" || fail "man -l coolgas-simulate.1 does not show --resume"
+grep -q 'event-driven simulation' "$scratch/man.txt" || fail "man -l coolgas-simulate.1 has no NAME line"
+
+"$prefix/bin/coolgas-simulate" --version | grep -q '^coolgas-simulate [0-9]' || fail "the installed coolgas-simulate gives no version"
+[ -f "$prefix/share/coolgas/data-schema/h5md-profile.md" ] || fail "share/coolgas/data-schema/h5md-profile.md missing"
+
+offered=$(bash -c '. "$1/share/bash-completion/completions/coolgas-simulate"
+  COMP_WORDS=("$1/bin/coolgas-simulate" --resu); COMP_CWORD=1; _coolgas_complete; printf "%s\n" "${COMPREPLY[@]}"' _ "$prefix")
+[ "$offered" = "--resume" ] || fail "completion of 'coolgas-simulate --resu' offers '$offered', not --resume"
+
+make -s -C "$prefix/share/coolgas/pipelines/demo" SCALE=tiny OUT="$scratch/out" >"$scratch/make.log" 2>&1 ||
+  fail "the installed demo pipeline failed: $(tail -1 "$scratch/make.log")"
+[ -n "$(find "$scratch/out" -name '*.png' | head -1)" ] || fail "the installed demo pipeline drew no figure"
+echo "installed tree: $count programs with manual pages, completion, documents and a working pipeline"
