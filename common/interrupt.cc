@@ -20,6 +20,11 @@ void watch_interrupts() {
   sigemptyset(&sa.sa_mask);
   sigaction(SIGINT, &sa, nullptr);
   sigaction(SIGTERM, &sa, nullptr);
+  // A hang-up (a dropped ssh session or terminal) stops the work like
+  // SIGINT, unless the process was started to ignore it (nohup): then it
+  // goes on ignoring it, as its user asked.
+  struct sigaction hup {};
+  if (sigaction(SIGHUP, nullptr, &hup) == 0 && hup.sa_handler != SIG_IGN) sigaction(SIGHUP, &sa, nullptr);
 }
 
 InterruptFlag interrupt_flag() { return &g_signal; }
@@ -36,6 +41,7 @@ std::string signal_name(int signal) {
   switch (signal) {
     case SIGINT: return "SIGINT";
     case SIGTERM: return "SIGTERM";
+    case SIGHUP: return "SIGHUP";
     default: return "signal " + std::to_string(signal);
   }
 }

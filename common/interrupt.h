@@ -32,14 +32,16 @@ struct Interrupted : std::runtime_error {
 // Installs the handler for SIGINT and SIGTERM (system calls are restarted,
 // so an interrupted read or write is never half done). Also for a process
 // started with the signals ignored (a shell's background job), so that a
-// signal sent on purpose is never lost.
+// signal sent on purpose is never lost. SIGHUP (a dropped terminal or ssh
+// session) is handled the same way, except in a process started with it
+// ignored (nohup), which keeps ignoring it.
 void watch_interrupts();
 
 // The flag the handler sets (for loops that take an InterruptFlag).
 InterruptFlag interrupt_flag();
 // The signal received, or 0.
 int interrupt_signal();
-// "SIGINT", "SIGTERM" or "signal N".
+// "SIGINT", "SIGTERM", "SIGHUP" or "signal N".
 std::string signal_name(int signal);
 
 // Whether a signal has arrived.

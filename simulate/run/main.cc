@@ -14,7 +14,7 @@ std::string scene_help() {
   s << "\nScene keys (TOML tables [system], [collision], [run], [output]; units: particle diameter, particle mass,\n"
        "initial mean collision time (Enskog with the Carnahan-Starling contact value)):\n";
   s << coolgas::scene_keys_help();
-  s << "\nExit codes: 0 done, 2 bad input, 3 interrupted by SIGINT/SIGTERM (checkpoint written: --resume continues "
+  s << "\nExit codes: 0 done, 2 bad input, 3 interrupted by SIGINT/SIGTERM/SIGHUP (checkpoint written: --resume continues "
        "exactly),\n"
        "4 inelastic collapse (set collision.delta > 0), or an aggregate grown to half the box\n"
        "(aggregation: use more particles); in both cases the state is written as the last dump;\n"

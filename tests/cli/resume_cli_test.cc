@@ -126,6 +126,16 @@ TEST_F(ResumeCli, AfterSigintEveryLaterDumpIsBitIdentical) { stop_resume_compare
 
 TEST_F(ResumeCli, AfterSigtermEveryLaterDumpIsBitIdentical) { stop_resume_compare("resume_sigterm", "TERM", 3, ""); }
 
+// A dropped ssh session or terminal (SIGHUP) stops a run as SIGINT does.
+TEST_F(ResumeCli, AfterSighupEveryLaterDumpIsBitIdentical) { stop_resume_compare("resume_sighup", "HUP", 3, ""); }
+
+// A run started under nohup keeps ignoring SIGHUP, as its user asked.
+TEST_F(ResumeCli, UnderNohupSighupIsIgnored) {
+  const std::string out = test::scratch_dir("resume_nohup") + "/run.h5";
+  EXPECT_EQ(run_and_signal(scene(), out, "HUP", 0.2 * wall_, "nohup"), 0);
+  expect_same_trajectory(whole(), out);
+}
+
 // With checkpoints every 0.2 s, a SIGKILL resumes from a mid-run checkpoint
 // (and replays the dumps written after it without writing them twice).
 TEST_F(ResumeCli, AfterSigkillEveryLaterDumpIsBitIdentical) {
