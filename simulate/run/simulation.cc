@@ -24,6 +24,7 @@
 #include "data-schema/validator.h"
 #include "common/output_file.h"
 #include "common/progress.h"
+#include "simulate/run/eta_gate.h"
 #include "simulate/run/run_eta.h"
 #include "common/tsv.h"
 #include "simulate/run/checkpoint.h"
@@ -232,14 +233,22 @@ class Driver {
     for (double at : dump_times_left_) dump_sizes.push_back(eta_.frame_size(at));
     const double left =
         engine_left + output_seconds_left(dump_sizes, engine_left, interval_, dump_cost_, checkpoint_cost_);
+    const double elapsed = progress_.elapsed();
     std::ostringstream s;
     s.precision(3);
-    s << "t = " << t << " / " << scene_.t_end << "  collisions " << coll << " (" << eta_.collision_rate()
-      << "/s)  E/E0 = " << engine_.observables().kinetic_energy / e0_ << "  ETA ";
-    if (std::isfinite(left)) s << "~" << Progress::format_duration(left);
-    else s << "?";
+    s << "t = " << t << " / " << scene_.t_end << " (" << std::lround(100 * log_clock(t)) << " % of log t)  collisions "
+      << coll << " (" << eta_.collision_rate() << "/s)  E/E0 = " << engine_.observables().kinetic_energy / e0_
+      << "  elapsed " << Progress::format_duration(elapsed) << "  left ";
+    if (eta_gate_.show(elapsed, left))
+      s << "~" << Progress::format_duration(left) << " (" << std::lround(100 * elapsed / (elapsed + left)) << " % done)";
+    else
+      s << "estimating...";
     progress_.show(s.str());
   }
+
+  // How far t is from t = 0 to t_end on the run's logarithmic clock, in [0, 1]
+  // (its dumps and observables are log-spaced in t).
+  double log_clock(double t) const { return std::clamp(std::log1p(t) / std::log1p(scene_.t_end), 0.0, 1.0); }
 
   void report_rate(std::int64_t c0) {
     if (!progress_.due() && progress_.elapsed() < 1) return;
@@ -258,6 +267,7 @@ class Driver {
   double e0_;
   Progress progress_;
   RunEta eta_ = run_eta_for(parameters_of(scene_));
+  EtaGate eta_gate_;
   double busy_seconds_ = 0;  // wall seconds inside the engine (no dumps, no checkpoints)
   OutputCost dump_cost_, checkpoint_cost_;
   std::vector<double> dump_times_left_;  // the dumps of the run still to write, in time order

@@ -41,11 +41,13 @@ SCENES = {
 # The run's first progress line is due this long after its start (common/progress.cc):
 # the run's wall time is counted from then on, without the set-up.
 FIRST_LINE_S = 0.5
-ETA = re.compile(r"ETA (?:~(?:(\d+)h)?(?:(\d+)m)?(?:(\d+)s)?|\?)")
+# "left ~1h02m", "left ~3m05s", "left ~12s", or "left estimating..." while
+# the estimate is held back (simulate/run/eta_gate.h).
+ETA = re.compile(r"left (?:~(?:(\d+)h)?(?:(\d+)m)?(?:(\d+)s)?|estimating\.\.\.)")
 
 
 def seconds(m):
-    if m.group(0) == "ETA ?":
+    if m.group(0) == "left estimating...":
         return None
     h, mi, s = (int(g) if g else 0 for g in m.groups())
     return 3600 * h + 60 * mi + s
