@@ -443,12 +443,33 @@ std::vector<std::string> size_keys(const KeyValues& kv, const std::set<std::stri
   return keys;
 }
 
+// The size key the scene gave that an override pushed out of the two that
+// define the box, if its value changed: said, so a --set of N never changes
+// L (or phi) without a word.
+std::string size_note(const Scene& given, const Scene& s, const std::vector<std::string>& keys, const KeyValues& kv,
+                      const std::set<std::string>& overridden) {
+  const struct {
+    const char* key;
+    double was, is;
+  } sizes[] = {{"system.N", double(given.N), double(s.N)}, {"system.L", given.L, s.L}, {"system.phi", given.phi, s.phi}};
+  for (const auto& z : sizes) {
+    if (!kv.count(z.key) || overridden.count(z.key) || std::find(keys.begin(), keys.end(), z.key) != keys.end())
+      continue;
+    if (std::fabs(z.is - z.was) <= 1e-9 * std::fabs(z.was)) return "";
+    const auto named = [&](const std::string& k) { return k + (overridden.count(k) ? " (--set)" : " (the scene's)"); };
+    return std::string(z.key) + " = " + format_number(z.is) + ", not the scene's " + format_number(z.was) +
+           ": the box follows " + named(keys[0]) + " and " + named(keys[1]) + "; --set " + z.key + " too to keep it";
+  }
+  return "";
+}
+
 void set_size(Scene& s, const KeyValues& kv, const std::set<std::string>& overridden) {
   // A start from a file takes its size from the file, and those of N, L,
   // phi the scene gives are checked against it (simulate/start/file_start.h).
   if (s.init == InitialPositions::kFile) return;
   const auto keys = size_keys(kv, overridden);
   if (keys.size() < 2) throw InputError("the scene must give two of system.N, system.L and system.phi");
+  const Scene given = s;
   auto has = [&](const char* k) { return std::find(keys.begin(), keys.end(), k) != keys.end(); };
   const bool hasN = has("system.N"), hasL = has("system.L"), hasPhi = has("system.phi");
   if (!hasN) {
@@ -465,6 +486,7 @@ void set_size(Scene& s, const KeyValues& kv, const std::set<std::string>& overri
     throw InputError("system.N, system.L and system.phi disagree: N pi/(6 L^3) = " + format_number(phi_of) +
                      " but phi = " + format_number(s.phi) + "; give only two of them");
   s.phi = phi_of;
+  s.size_note = size_note(given, s, keys, kv, overridden);
 }
 
 // Limits that involve more than one key.

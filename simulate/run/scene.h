@@ -47,6 +47,12 @@ struct Scene {
   double t_min = 0.01;
   std::vector<double> dump_times;
 
+  // Not part of the scene: when a --set of N, L or phi changed the one of
+  // the three the scene gave but the override did not keep, what changed
+  // ("system.L = 91.07, not the scene's 48: ..."), for the user to see;
+  // else empty.
+  std::string size_note;
+
   // The complete effective scene as TOML; parse_scene() of it gives this scene back.
   std::string to_toml() const;
   std::string model_name() const;

@@ -322,6 +322,7 @@ int drive(Driver& driver, const Scene& scene) {
 
 int start_new(const SimulationRequest& req) {
   Scene scene = parse_scene(read_scene_file(req.scene_path), req.scene_path, req.overrides);
+  if (!scene.size_note.empty()) std::cerr << "coolgas-simulate: note: " << scene.size_note << "\n";
   const double interval = checkpoint_interval();
   const std::string out = req.output.empty() ? default_output(req.scene_path) : req.output;
   check_writable(out, req.force);

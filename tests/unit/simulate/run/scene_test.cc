@@ -40,6 +40,20 @@ TEST(Scene, BoxSideFollowsFromNAndPhi) {
   EXPECT_NEAR(t.L, 2 * s.L, 1e-12);  // 8x the particles at the same phi: twice the side
 }
 
+// A --set of one of N, L, phi keeps the scene's first of the other two
+// (phi before N before L) and derives the third; when the scene gave that
+// third, its change is said (N pi / (6 L^3) = phi: L = (N pi / (6 phi))^(1/3)).
+TEST(Scene, ASetOfNSaysTheBoxSideItChanged) {
+  const std::string given = "[system]\nL = 48\nphi = 0.208\n[collision]\nmodel = \"elastic\"\n[run]\nt_end = 1\n";
+  const Scene s = parse_scene(given, "t.toml", {"system.N=300000"});
+  EXPECT_NEAR(s.L, std::cbrt(300000 * M_PI / (6 * 0.208)), 1e-9);
+  EXPECT_NE(s.size_note.find("system.L = 91.06"), std::string::npos) << s.size_note;
+  EXPECT_NE(s.size_note.find("not the scene's 48"), std::string::npos) << s.size_note;
+  EXPECT_TRUE(parse_scene(given, "t.toml", {"system.L=40"}).size_note.empty());   // N derived, never given
+  EXPECT_TRUE(parse_scene(given, "t.toml", {"system.phi=0.1"}).size_note.empty());
+  EXPECT_TRUE(parse_scene(given, "t.toml", {}).size_note.empty());
+}
+
 TEST(Scene, EffectiveSceneReadsBackIdentically) {
   const Scene s = parse_scene(kScene, "s.toml", {"output.dump_times=[5, 10.5]", "system.seed=99"});
   const Scene t = parse_scene(s.to_toml(), "effective", {});
