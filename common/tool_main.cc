@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <csignal>
@@ -14,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "common/did_you_mean.h"
 #include "common/error.h"
 #include "common/interrupt.h"
 #include "common/version.h"
@@ -170,6 +172,25 @@ void refuse_non_finite(const CLI::App& app) {
 
 }  // namespace
 
+namespace {
+
+// For the first option on the command line that the tool does not have,
+// the closest one it has.
+std::string suggestion(CLI::App& app, int argc, char** argv) {
+  std::vector<std::string> names;
+  for (const CLI::Option* o : app.get_options())
+    for (const std::string& n : o->get_lnames()) names.push_back("--" + n);
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a.size() < 3 || a.rfind("--", 0) != 0) continue;
+    const std::string name = a.substr(0, a.find('='));
+    if (std::find(names.begin(), names.end(), name) == names.end()) return did_you_mean(name, names);
+  }
+  return "";
+}
+
+}  // namespace
+
 bool parse_command_line(CLI::App& app, int argc, char** argv) {
   app.name(tool_name());
   app.set_version_flag("--version", tool_name() + " " + program_version(), "print the program version and commit");
@@ -179,7 +200,7 @@ bool parse_command_line(CLI::App& app, int argc, char** argv) {
     app.exit(e);
     return true;
   } catch (const CLI::ParseError& e) {
-    throw InputError(std::string(e.what()) + " (see --help)");
+    throw InputError(std::string(e.what()) + suggestion(app, argc, argv) + " (see --help)");
   }
   refuse_non_finite(app);
   return false;

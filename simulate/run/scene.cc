@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <toml.hpp>
 
+#include "common/did_you_mean.h"
 #include "common/error.h"
 #include "common/memory.h"
 #include "common/tsv.h"
@@ -210,27 +211,10 @@ bool key_changeable_on_resume(const std::string& key) {
 
 namespace {
 
-std::size_t edit_distance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    cur[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j)
-      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
-    std::swap(prev, cur);
-  }
-  return prev[b.size()];
-}
-
 std::string did_you_mean(const std::string& key) {
-  std::string best;
-  std::size_t best_d = 4;  // suggest only close matches
-  for (const auto& k : scene_keys()) {
-    const std::size_t d = edit_distance(key, k.key);
-    if (d < best_d) best_d = d, best = k.key;
-  }
-  if (best.empty()) return "";
-  return " (did you mean '" + best + "'?)";
+  std::vector<std::string> keys;
+  for (const auto& k : scene_keys()) keys.emplace_back(k.key);
+  return coolgas::did_you_mean(key, keys);
 }
 
 // Flattens nested tables into dotted keys: {"system.N": value, ...}.

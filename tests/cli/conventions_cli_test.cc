@@ -42,6 +42,15 @@ TEST(Conventions, UsageLinesNameTheProgramBare) {
   }
 }
 
+// A mistyped option gets the closest real one, in every program (--version
+// is one of each program's options, one letter away from --versoin).
+TEST(Conventions, AMistypedOptionGetsADidYouMean) {
+  for (const std::string program : kPrograms) {
+    const auto r = run_command(bin(program) + " --versoin");
+    test::expect_refused_with_one_line(r, "(did you mean '--version'?)", program);
+  }
+}
+
 // A real run (N = 2000 to t = 1e4): dumps at 5 per decade, so t = 3000 and
 // t = 1e6 are not dump times, t = 1000 is.
 class TimeConventions : public ::testing::Test {
