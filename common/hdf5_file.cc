@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 
 #include <algorithm>
@@ -181,6 +182,32 @@ hid_t open_existing(const std::string& path, Mode mode) {
 
 }  // namespace
 
+namespace {
+
+// The errno HDF5's file driver put on the error stack ("..., errno = 28, ..."), or 0.
+herr_t find_errno(unsigned, const H5E_error2_t* e, void* out) {
+  const std::string desc = e->desc ? e->desc : "";
+  const std::string key = "errno = ";
+  const auto at = desc.find(key);
+  if (at == std::string::npos) return 0;
+  *static_cast<int*>(out) = std::atoi(desc.c_str() + at + key.size());
+  return 1;
+}
+
+// A file that cannot be created, with the system's reason: a full disk, a
+// quota or a size limit is a failed write (WriteError, exit code 5), any
+// other reason (a folder missing or not writable) the user's (InputError).
+[[noreturn]] void create_failed(const std::string& path) {
+  int err = 0;
+  H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, find_errno, &err);
+  const std::string cause = system_cause();
+  const std::string what = "cannot create '" + path + "': ";
+  if (err == ENOSPC || err == EDQUOT || err == EFBIG || err == EIO) throw WriteError(what + std::strerror(err));
+  throw InputError(what + (cause.empty() ? "directory missing or not writable?" : cause));
+}
+
+}  // namespace
+
 Handle open_file(const std::string& path, Mode mode) {
   silence_library_errors();
   hid_t id = H5I_INVALID_HID;
@@ -189,6 +216,7 @@ Handle open_file(const std::string& path, Mode mode) {
     Handle fcpl = fcpl_paged();
     id = H5Fcreate(path.c_str(), mode == Mode::kCreateExclusive ? H5F_ACC_EXCL : H5F_ACC_TRUNC, fcpl.id(),
                    fapl.id());
+    if (id < 0) create_failed(path);  // now: closing the property lists clears HDF5's error stack
   } else {
     id = open_existing(path, mode);
   }
@@ -199,7 +227,7 @@ Handle open_file(const std::string& path, Mode mode) {
       case Mode::kReadWrite:
         throw InputError("cannot open '" + path + "' to append (missing, not HDF5, or open in another program)");
       default:
-        throw InputError("cannot create '" + path + "' (directory missing or not writable?)");
+        create_failed(path);
     }
   }
   return Handle(id);
