@@ -196,7 +196,11 @@ class Corpus:
             + [f"--local-slope --smooth {s} {table}" for s in ["0", "-1", "nan"]]
             + [f"--power --t-column nope {table}", "--power --haff " + table, table],
             "coolgas-collapse": [f"--bootstrap {b} --optimize {table} {table}" for b in ["-1", "1000000000"]]
-            + [f"--min-overlap -1 {table}", f"--t-window 5:1 {table}", f"--e-column nope {table}"],
+            + [f"--min-overlap -1 {table}", f"--t-window 5:1 {table}", f"--e-column nope {table}"]
+            # exponents whose scaled points overflow or vanish: refused, never inf or 0 in the table
+            + [f"--theta {th} --z {z} {table}" for th, z in
+               [(f"{self.rng.choice([1, -1]) * 10.0 ** self.rng.randrange(160, 309):g}", "2.5") for _ in range(4)]
+               + [("1", f"{self.rng.choice([1, -1]) * self.rng.randrange(400, 10**6)}") for _ in range(3)]],
             "coolgas-snapshot": [f"{run} --time 0 -o {self.path('a_directory')}",
                                  f"{run} --time 0 -o {self.path('no/dir/x.png')}",
                                  f"{run} --time 0 -o x.png --colored 99", f"{run} --time 0 -o x.png --size 1e9",
