@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "common/error.h"
+#include "common/memory.h"
 
 namespace coolgas {
 
@@ -58,9 +59,11 @@ struct Parser {
   std::istream& in;
   const std::string& source;
   long line_no = 0;
+  std::optional<std::streamoff> size;  // the file's bytes, when the stream can tell
 
-  [[noreturn]] void fail(const std::string& what) const {
-    throw InputError(source + ": line " + std::to_string(line_no) + ": " + what);
+  [[noreturn]] void fail(const std::string& what) const { fail_at(line_no, what); }
+  [[noreturn]] void fail_at(long line, const std::string& what) const {
+    throw InputError(source + ": line " + std::to_string(line) + ": " + what);
   }
 
   bool next(std::string& line) {
@@ -164,8 +167,44 @@ double cubic_lattice(const Parser& p, const std::string& lattice) {
   return m[0];
 }
 
+// A frame's Time=: a NaN, an infinity or a negative time would be taken as
+// the start of the run and make every later resume fail, so it is refused here.
+double frame_time(const Parser& p, const std::string& text) {
+  const double t = p.number(text, "Time");
+  if (!(std::isfinite(t) && t >= 0)) p.fail("Time=" + shown(text) + " is not a time; times are finite and >= 0");
+  return t;
+}
+
+// A frame's T0= (the time unit's temperature): finite and > 0.
+double temperature(const Parser& p, const std::string& text) {
+  const double T0 = p.number(text, "T0");
+  if (!(std::isfinite(T0) && T0 > 0)) p.fail("T0=" + shown(text) + " is not a temperature; T0 is finite and > 0");
+  return T0;
+}
+
+// The count line is only a claim: a damaged or hostile file may say 10^9
+// particles and hold a few lines. Each particle line is at least a word and
+// a newline (the last may lack it), so the rest of the file bounds the count
+// (shorter lines are then refused naming the line); the machine's memory
+// bounds it too. Both before anything is allocated.
+void check_count(const Parser& p, long count_line, std::size_t n) {
+  if (p.size) {
+    const std::streamoff at = p.in.tellg();
+    const double left = at >= 0 ? double(*p.size - at) : double(*p.size);
+    if (2.0 * double(n) - 1 > left)
+      p.fail_at(count_line, "the count line says " + std::to_string(n) + " particles, but the " + bytes_text(left) +
+                                " left in the file hold at most " + format_number(std::floor((left + 1) / 2)) +
+                                " lines (a cut or damaged file?)");
+  }
+  const double bytes = double(n) * 8 * 8, memory = physical_memory_bytes();  // pos, velo: 3 each; diameter, mass
+  if (bytes > memory)
+    p.fail_at(count_line, "the count line says " + std::to_string(n) + " particles, which need " + bytes_text(bytes) +
+                              "; this machine has " + bytes_text(memory));
+}
+
 // One frame after its count line; nothing when the input has ended.
 XyzFrame read_frame(Parser& p, std::size_t n) {
+  const long count_line = p.line_no;
   std::string line;
   if (!p.next(line)) p.fail("the file ends before the comment line");
   const auto kv = p.pairs(line);
@@ -179,9 +218,10 @@ XyzFrame read_frame(Parser& p, std::size_t n) {
     const bool periodic = w.size() == 3 && std::all_of(w.begin(), w.end(), [](const std::string& x) { return x == "T" || x == "True"; });
     if (!periodic) p.fail("pbc=\"" + shown(*pbc) + "\"; coolgas boxes are periodic in x, y and z (pbc=\"T T T\")");
   }
-  if (const auto t = get("Time")) f.time = p.number(*t, "Time");
-  if (const auto t = get("T0")) f.T0 = p.number(*t, "T0");
+  if (const auto t = get("Time")) f.time = frame_time(p, *t);
+  if (const auto t = get("T0")) f.T0 = temperature(p, *t);
   const Columns c = columns_of(p, get("Properties").value_or("species:S:1:pos:R:3"));
+  check_count(p, count_line, n);
   f.position.resize(3 * n);
   if (c.velo >= 0) f.velocity.resize(3 * n);
   if (c.radius >= 0 || c.diameter >= 0) f.diameter.resize(n);
@@ -202,8 +242,28 @@ XyzFrame read_frame(Parser& p, std::size_t n) {
 
 }  // namespace
 
+namespace {
+
+// The stream's size in bytes if it can seek (a file), else nothing (a pipe).
+std::optional<std::streamoff> stream_size(std::istream& in) {
+  const std::streampos here = in.tellg();
+  if (here < 0 || !in.seekg(0, std::ios::end)) {
+    in.clear();
+    return std::nullopt;
+  }
+  const std::streamoff end = in.tellg();
+  in.seekg(here);
+  if (end < 0 || !in) {
+    in.clear();
+    return std::nullopt;
+  }
+  return end;
+}
+
+}  // namespace
+
 XyzFrame read_xyz_frame(std::istream& in, const std::string& source, std::optional<double> time) {
-  Parser p{in, source};
+  Parser p{in, source, 0, stream_size(in)};
   std::optional<XyzFrame> best;
   std::string line;
   while (p.next(line)) {

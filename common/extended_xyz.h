@@ -41,7 +41,10 @@ void write_xyz_frame(std::ostream& out, const XyzFrame& frame, const Provenance&
 // last frame. Throws InputError naming `source`, the line and what was wrong:
 // not an extended XYZ file (no count, no Lattice), a Lattice that is not a
 // cube, pbc not "T T T", missing positions, a short or unreadable line,
-// `time` asked for but a frame without Time=.
+// `time` asked for but a frame without Time=, a Time= that is not finite and
+// >= 0, a T0= that is not finite and > 0, a count line claiming more particles
+// than the rest of the stream (when it can seek) or this machine's memory can
+// hold (checked before anything is allocated).
 XyzFrame read_xyz_frame(std::istream& in, const std::string& source, std::optional<double> time);
 
 }  // namespace coolgas

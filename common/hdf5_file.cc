@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 
 #include <algorithm>
@@ -203,6 +204,32 @@ hid_t open_existing(const std::string& path, Mode mode) {
 
 }  // namespace
 
+namespace {
+
+// The errno HDF5's file driver put on the error stack ("..., errno = 28, ..."), or 0.
+herr_t find_errno(unsigned, const H5E_error2_t* e, void* out) {
+  const std::string desc = e->desc ? e->desc : "";
+  const std::string key = "errno = ";
+  const auto at = desc.find(key);
+  if (at == std::string::npos) return 0;
+  *static_cast<int*>(out) = std::atoi(desc.c_str() + at + key.size());
+  return 1;
+}
+
+// A file that cannot be created, with the system's reason: a full disk, a
+// quota or a size limit is a failed write (WriteError, exit code 5), any
+// other reason (a folder missing or not writable) the user's (InputError).
+[[noreturn]] void create_failed(const std::string& path) {
+  int err = 0;
+  H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, find_errno, &err);
+  const std::string cause = system_cause();
+  const std::string what = "cannot create '" + path + "': ";
+  if (err == ENOSPC || err == EDQUOT || err == EFBIG || err == EIO) throw WriteError(what + std::strerror(err));
+  throw InputError(what + (cause.empty() ? "directory missing or not writable?" : cause));
+}
+
+}  // namespace
+
 Handle open_file(const std::string& path, Mode mode) {
   silence_library_errors();
   hid_t id = H5I_INVALID_HID;
@@ -211,6 +238,7 @@ Handle open_file(const std::string& path, Mode mode) {
     Handle fcpl = fcpl_paged();
     id = H5Fcreate(path.c_str(), mode == Mode::kCreateExclusive ? H5F_ACC_EXCL : H5F_ACC_TRUNC, fcpl.id(),
                    fapl.id());
+    if (id < 0) create_failed(path);  // now: closing the property lists clears HDF5's error stack
   } else {
     id = open_existing(path, mode);
   }
@@ -227,7 +255,7 @@ Handle open_file(const std::string& path, Mode mode) {
       case Mode::kAppend:
         throw InputError("cannot open '" + path + "' to append (missing, not HDF5, or open in another program)");
       default:
-        throw InputError("cannot create '" + path + "' (directory missing or not writable?)");
+        create_failed(path);
     }
   }
   return Handle(id);
@@ -526,10 +554,27 @@ void resize_rows(hid_t dataset, hsize_t n) {
   check_status(H5Dset_extent(dataset, dims.data()), "resize dataset");
 }
 
+namespace {
+
+std::string name_of(hid_t dataset);
+std::string file_of(hid_t object);
+
+// A read of stored values failed: a damaged chunk (its filter fails), bytes
+// cut off or an I/O error. That is damaged input, named with its file and
+// dataset, never an internal error.
+void check_read(herr_t status, hid_t dataset, const std::string& rows) {
+  if (status >= 0) return;
+  const std::string cause = system_cause();
+  throw InputError("'" + file_of(dataset) + "': dataset '" + name_of(dataset) + "' cannot be read" + rows + ": " +
+                   (cause.empty() ? "its stored data is damaged (a corrupt chunk?)" : cause));
+}
+
+}  // namespace
+
 void read_rows(hid_t dataset, Type type, hsize_t first, hsize_t count_rows, void* out) {
   auto dims = shape(dataset);
   if (dims.empty()) {  // scalar dataset
-    check_status(H5Dread(dataset, mem_type(type), H5S_ALL, H5S_ALL, H5P_DEFAULT, out), "read scalar");
+    check_read(H5Dread(dataset, mem_type(type), H5S_ALL, H5S_ALL, H5P_DEFAULT, out), dataset, "");
     return;
   }
   if (first + count_rows > dims[0]) throw InputError("dataset has fewer rows than requested");
@@ -540,7 +585,9 @@ void read_rows(hid_t dataset, Type type, hsize_t first, hsize_t count_rows, void
   check_status(H5Sselect_hyperslab(fspace.id(), H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr),
                "select rows");
   Handle mspace(check(H5Screate_simple(static_cast<int>(count.size()), count.data(), nullptr), "memory space"));
-  check_status(H5Dread(dataset, mem_type(type), mspace.id(), fspace.id(), H5P_DEFAULT, out), "read rows");
+  check_read(H5Dread(dataset, mem_type(type), mspace.id(), fspace.id(), H5P_DEFAULT, out), dataset,
+             count_rows == 1 ? " (row " + std::to_string(first) + ")"
+                             : " (rows " + std::to_string(first) + " to " + std::to_string(first + count_rows - 1) + ")");
 }
 
 namespace {
@@ -555,6 +602,16 @@ std::string name_of(hid_t dataset) {
   return s;
 }
 
+// The name of the file an object lies in, for messages.
+std::string file_of(hid_t object) {
+  const ssize_t n = H5Fget_name(object, nullptr, 0);
+  if (n <= 0) return "(unnamed file)";
+  std::string s(std::size_t(n) + 1, '\0');
+  H5Fget_name(object, s.data(), s.size());
+  s.resize(std::size_t(n));
+  return s;
+}
+
 // Dimensions [from, end) as "(a, b, c)" of the whole shape.
 std::string shape_text(const std::vector<hsize_t>& dims) {
   std::string s = "(";
@@ -562,17 +619,25 @@ std::string shape_text(const std::vector<hsize_t>& dims) {
   return s + ")";
 }
 
+}  // namespace
+
+void check_read_fits(hid_t dataset, double values, std::size_t value_size, const std::string& what) {
+  const double memory = physical_memory_bytes(), bytes = values * double(value_size);
+  if (bytes > memory)
+    throw InputError("'" + file_of(dataset) + "': dataset '" + name_of(dataset) + "' of shape " +
+                     shape_text(shape(dataset)) + " would need " + bytes_text(bytes) + " to read" + what +
+                     "; this machine has " + bytes_text(memory) + " (a damaged file?)");
+}
+
+namespace {
+
 // The values of dims[from..]: counted in double, as a damaged or hostile
 // file may declare a shape whose product overflows; refused (InputError)
 // when they would not fit in this machine's memory, before any allocation.
 std::size_t values_to_read(hid_t dataset, const std::vector<hsize_t>& dims, std::size_t from, std::size_t value_size) {
   double n = 1;
   for (std::size_t k = from; k < dims.size(); ++k) n *= double(dims[k]);
-  const double memory = physical_memory_bytes();
-  if (n * double(value_size) > memory)
-    throw InputError("dataset '" + name_of(dataset) + "' of shape " + shape_text(dims) + " would need " +
-                     bytes_text(n * double(value_size)) + " to read" + (from ? " one row" : "") +
-                     "; this machine has " + bytes_text(memory) + " (a damaged file?)");
+  check_read_fits(dataset, n, value_size, from ? " one row" : "");
   return static_cast<std::size_t>(n);
 }
 

@@ -141,8 +141,16 @@ Handle create_series(hid_t loc, const std::string& name, Type type, const std::v
 void append_row(hid_t dataset, Type type, const void* data, hsize_t stride = 0);
 // Shrinks or grows the first dimension to n rows (used to drop rows after a resume point).
 void resize_rows(hid_t dataset, hsize_t n);
-// Reads rows [first, first+count) of a dataset into a flat buffer.
+// Reads rows [first, first+count) of a dataset into a flat buffer. A read
+// that fails (a damaged chunk, an I/O error) is an InputError naming the
+// file, the dataset and the rows.
 void read_rows(hid_t dataset, Type type, hsize_t first, hsize_t count, void* out);
+
+// Refuses (InputError naming the file, the dataset and its shape) a read of
+// `values` values of `value_size` bytes each from `dataset` that would not
+// fit in this machine's memory; `what` says what is read (" one row"). For
+// readers that allocate themselves, before they do.
+void check_read_fits(hid_t dataset, double values, std::size_t value_size, const std::string& what = "");
 
 // Both refuse (InputError naming the dataset and its shape) a read that would
 // not fit in this machine's memory, before allocating anything.

@@ -103,6 +103,20 @@ void write_curves(const std::vector<ScalingCurve>& curves, const Results& r, con
   }
 }
 
+// Exponents so large that a scaled point overflows (--theta 1e308: E
+// L^(z theta) = inf) or underflows to 0 would write inf, nan or 0 where the
+// table promises a number: refused with one line before anything is written.
+void check_scaled_points(const std::vector<ScalingCurve>& curves, const Results& r) {
+  for (const auto& c : curves)
+    for (std::size_t i = 0; i < c.t.size(); ++i) {
+      const double x = c.t[i] * std::exp(c.ln_x_shift(r.z)), y = c.E[i] * std::exp(c.ln_y_shift(r.theta, r.z));
+      if (std::isfinite(x) && std::isfinite(y) && x > 0 && y > 0 && std::isfinite(r.quality)) continue;
+      throw InputError("theta = " + format_number(r.theta) + ", z = " + format_number(r.z) + " scale t = " +
+                       format_number(c.t[i]) + " (L = " + format_number(c.L) + ") to x = " + format_number(x) +
+                       ", y = " + format_number(y) + "; give exponents with finite, nonzero L^z and L^(z theta)");
+    }
+}
+
 void write_summary(const CollapseOptions& o, const Results& r, const Provenance& p, std::ostream& out) {
   std::vector<std::string> names{"theta", "theta_err", "z", "z_err", "quality"};
   std::vector<double> values{r.theta, r.fit ? r.fit->theta_err : 0, r.z, r.fit ? r.fit->z_err : 0, r.quality};
@@ -134,6 +148,7 @@ void write_collapse_table(const CollapseOptions& options, std::ostream& out) {
   }
   r.quality = collapse_quality(curves, r.theta, r.z, o.search.min_overlap_decades);
   if (o.eta_window) r.eta = fit_tail_exponent(curves, r.theta, r.z, *o.eta_window);
+  check_scaled_points(curves, r);
   const Provenance p = collapse_provenance(o, sizes, r);
   if (o.summary) write_summary(o, r, p, out);
   else write_curves(curves, r, p, out);

@@ -1,7 +1,9 @@
 #include "analyze/smoluchowski/run.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <ostream>
 
@@ -139,14 +141,27 @@ class Tables {
       const double mmax = largest_mass(g, c, o_.volume);
       series_->row({t_user, mom.M0, mom.M1, mom.M2, mom.mean(), mmax, mmax / (mom.M1 * o_.volume)});
     }
+    check_file();
   }
 
   void footer(const std::string& line) {
     out_ << "# " << line << "\n";
-    if (file_.is_open()) file_ << "# " << line << "\n";
+    if (!file_.is_open()) return;
+    file_ << "# " << line << "\n";
+    file_.close();
+    check_file();
   }
 
  private:
+  // A failed write to the series file (a full disk, /dev/full, a quota)
+  // stops the run at once: exit code 5 naming the file, never exit 0 with
+  // an empty or cut table. (errno is the failed write's: nothing else runs
+  // between that write and this check.)
+  void check_file() const {
+    if (o_.series_file.empty() || !file_.fail()) return;
+    throw WriteError("cannot write the series file '" + o_.series_file + "': " +
+                     (errno ? std::strerror(errno) : "a write failed"));
+  }
   static std::vector<std::string> series_columns() {
     return {"t", "M0", "M1", "M2", "M_avg", "M_max", "largest_fraction"};
   }

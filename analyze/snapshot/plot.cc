@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <cstring>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -57,7 +59,8 @@ void write_data(const SnapshotScene& scene, const fs::path& file) {
     std::snprintf(line, sizeof line, "%.6g %.6g %.6g %u %.6g\n", p.x, p.y, p.z, p.rgb, p.diameter);
     out << line;
   }
-  if (!out) throw std::runtime_error("cannot write the snapshot data to " + file.string());
+  out.close();
+  if (!out) throw WriteError("cannot write the snapshot data to " + file.string() + ": " + std::strerror(errno));
 }
 
 // Terminal line: the width adds room for the key beside the square picture;
@@ -149,12 +152,29 @@ std::string first_line(const fs::path& file) {
   return "(no message)";
 }
 
+// A write that failed for want of room (a full disk, a quota, a size limit)
+// or an I/O error is exit code 5; anything else is the path's fault (exit 2).
+[[noreturn]] void write_failed(const std::string& to, const std::error_code& ec) {
+  const int e = ec.value();
+  if (e == ENOSPC || e == EDQUOT || e == EFBIG || e == EIO) throw WriteError("cannot write '" + to + "': " + ec.message());
+  throw InputError("cannot write '" + to + "': " + ec.message());
+}
+
+// Across file systems the picture is copied beside its place first and
+// renamed over it: a copy that fails half way leaves the old picture (if
+// any) whole and no cut one.
 void move_into_place(const fs::path& from, const std::string& to) {
   std::error_code ec;
   fs::rename(from, to, ec);
   if (!ec) return;
-  fs::copy_file(from, to, fs::copy_options::overwrite_existing, ec);  // across file systems
-  if (ec) throw InputError("cannot write '" + to + "': " + ec.message());
+  const std::string partial = to + ".partial";
+  fs::copy_file(from, partial, fs::copy_options::overwrite_existing, ec);
+  if (!ec) fs::rename(partial, to, ec);
+  if (ec) {
+    std::error_code ignored;
+    fs::remove(partial, ignored);
+    write_failed(to, ec);
+  }
 }
 
 }  // namespace
@@ -177,7 +197,12 @@ void render_picture(const SnapshotScene& scene, const PlotOptions& opt, const st
   const fs::path data = tmp.path() / "particles.dat", png = tmp.path() / (std::string("snapshot") + extension(opt.format));
   const fs::path gp = tmp.path() / "snapshot.gp", log = tmp.path() / "gnuplot.log";
   write_data(scene, data);
-  std::ofstream(gp) << script(scene, opt, data, png);
+  {
+    std::ofstream script_file(gp);
+    script_file << script(scene, opt, data, png);
+    script_file.close();
+    if (!script_file) throw WriteError("cannot write the gnuplot script to " + gp.string() + ": " + std::strerror(errno));
+  }
   const int rc = run_gnuplot(opt.gnuplot, gp, log);
   if (rc == 127)
     throw InputError("cannot run gnuplot ('" + opt.gnuplot +

@@ -85,6 +85,7 @@ struct Reader {
                     (k == 1 ? "" : " x " + std::to_string(k)) + ")");
     if (*n == 0) *n = dims[0];
     if (dims[0] != *n) fail(value + " holds " + std::to_string(dims[0]) + " particles, position " + std::to_string(*n));
+    h5::check_read_fits(ds.id(), double(*n) * double(k), sizeof(double), varies ? " one frame" : "");
     std::vector<double> v(*n * k);
     if (*n > 0) h5::read_rows(ds.id(), h5::Type::kFloat64, varies ? index : 0, varies ? 1 : dims[0], v.data());
     return v;

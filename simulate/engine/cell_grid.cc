@@ -6,6 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "common/tsv.h"
+
 namespace coolgas {
 
 namespace {
@@ -30,12 +32,30 @@ std::vector<std::int32_t> slot_terms(int n, int width, std::int64_t block_step, 
 }
 }  // namespace
 
+namespace {
+
+bool fits_grid(double L, double min_width) { return std::floor(L / (min_width * kWidthMargin)) >= 3; }
+
+// The smallest box side that fits_grid, exactly: 3 w (1 + 1e-9) rounded may
+// land an ulp or two either side of it (a few steps; bounded, so that a
+// width that is not a number cannot loop).
+double smallest_box(double min_width) {
+  double L = 3 * min_width * kWidthMargin;
+  for (int i = 0; i < 64 && !fits_grid(L, min_width); ++i) L = std::nextafter(L, INFINITY);
+  for (int i = 0; i < 64 && fits_grid(std::nextafter(L, 0.0), min_width); ++i) L = std::nextafter(L, 0.0);
+  return L;
+}
+
+}  // namespace
+
+// Both numbers in their shortest exact form, the limit the exact one
+// enforced: rounded to six digits, the limit (a hair above 3, kWidthMargin)
+// read "L >= 3" in the refusal of L = 3.
 std::string check_box_fits_grid(double L, double min_width) {
-  if (std::floor(L / (min_width * kWidthMargin)) >= 3) return "";
-  std::ostringstream s;
-  s << "box side L = " << L << " is too small: the cell grid needs L >= " << 3 * min_width * kWidthMargin
-    << " (three cells of one diameter); use more particles or a lower phi";
-  return s.str();
+  if (fits_grid(L, min_width)) return "";
+  return "box side L = " + format_number(L) + " is too small: the cell grid needs L >= " +
+         format_number(smallest_box(min_width)) + " (three cells, each a hair wider than " +
+         format_number(min_width) + "); use more particles or a lower phi";
 }
 
 CellGrid::CellGrid(double L, double min_width, std::size_t n) {

@@ -1,6 +1,7 @@
 #include "simulate/run/checkpoint.h"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -8,10 +9,10 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <stdexcept>
 
 #include "common/error.h"
+#include "common/memory.h"
 #include "simulate/engine/state_archive.h"
 #include "simulate/run/engine_factory.h"
 
@@ -48,6 +49,33 @@ void sync_directory(const std::string& dir) {
   if (fd < 0) return;  // best effort: the data itself is already on disk
   ::fsync(fd);
   ::close(fd);
+}
+
+[[noreturn]] void refuse(const std::string& path, const std::string& why) {
+  throw InputError("cannot resume from checkpoint '" + path + "': " + why +
+                   " (remove it to resume from the last dump)");
+}
+
+// The checkpoint's bytes, or nothing when there is none. Only a regular file
+// is read: a device (a link to /dev/zero) would be read without end, a
+// directory fails inside the stream. Its size is checked against the memory
+// before the bytes are allocated; the sections inside are checked against
+// the size by StateReader.
+std::optional<std::vector<char>> checkpoint_bytes(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) {
+    if (errno == ENOENT) return std::nullopt;
+    refuse(path, std::strerror(errno));
+  }
+  if (!S_ISREG(st.st_mode)) refuse(path, "it is not a regular file (a directory, device, pipe or socket)");
+  const double memory = physical_memory_bytes();
+  if (double(st.st_size) > memory)
+    refuse(path, "its " + bytes_text(double(st.st_size)) + " do not fit in this machine's " + bytes_text(memory));
+  std::ifstream f(path, std::ios::binary);
+  std::vector<char> bytes(static_cast<std::size_t>(st.st_size));
+  if (!f || !f.read(bytes.data(), std::streamsize(bytes.size())) || f.peek() != std::ifstream::traits_type::eof())
+    refuse(path, "it cannot be read whole (it changed while being read, or a read failed)");
+  return bytes;
 }
 
 }  // namespace
@@ -87,10 +115,9 @@ void write_checkpoint(const std::string& trajectory, const Scene& scene, const E
 
 std::optional<RunCheckpoint> read_checkpoint(const std::string& trajectory, const Scene& scene) {
   const std::string path = checkpoint_path(trajectory);
-  std::ifstream f(path, std::ios::binary);
-  if (!f) return std::nullopt;
-  std::vector<char> bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
-  const StateReader in(std::move(bytes), path);
+  std::optional<std::vector<char>> bytes = checkpoint_bytes(path);
+  if (!bytes) return std::nullopt;
+  const StateReader in(std::move(*bytes), path);
   const auto physics = in.get<char>("run/physics");
   if (std::string(physics.begin(), physics.end()) != physics_of(scene))
     in.fail("it belongs to a run of other physics than '" + trajectory + "' (remove it to resume from the last dump)");

@@ -36,7 +36,9 @@ void write_checkpoint(const std::string& trajectory, const Scene& scene, const E
                       const std::vector<ObservableRow>& pending);
 
 // The checkpoint of `trajectory`, or nothing if it has none. Throws
-// InputError if the file is damaged or belongs to other physics than `scene`.
+// InputError naming it if it is not a regular file, larger than the memory,
+// damaged (a section longer than the file, a wrong hash) or belongs to other
+// physics than `scene`.
 std::optional<RunCheckpoint> read_checkpoint(const std::string& trajectory, const Scene& scene);
 
 // Removes a checkpoint left by an earlier run of that name (a new run).

@@ -320,6 +320,20 @@ int drive(Driver& driver, const Scene& scene) {
   }
 }
 
+// The new run's file under its temporary name. Creating it can fail after
+// the file appeared (a full disk: HDF5 opens it, then cannot write its
+// superblock), so a failure removes what is there: a run that fails to
+// start leaves nothing behind.
+H5mdWriter create_partial(const std::string& tmp, const Scene& scene) {
+  try {
+    return H5mdWriter::create(tmp, parameters_of(scene), true);
+  } catch (...) {
+    std::error_code ignored;
+    std::filesystem::remove(tmp, ignored);
+    throw;
+  }
+}
+
 int start_new(const SimulationRequest& req) {
   Scene scene = parse_scene(read_scene_file(req.scene_path), req.scene_path, req.overrides);
   if (!scene.size_note.empty()) std::cerr << "coolgas-simulate: note: " << scene.size_note << "\n";
@@ -353,7 +367,7 @@ int start_new(const SimulationRequest& req) {
   // old file only with a readable new one. An old run's checkpoint goes
   // first, so it can never be taken for this run's.
   const std::string tmp = out + ".partial";
-  H5mdWriter writer = H5mdWriter::create(tmp, parameters_of(scene), true);
+  H5mdWriter writer = create_partial(tmp, scene);
   Driver driver(scene, *engine, writer, out, req.quiet, interval);
   // The checkpoint (replacing an old run's at once) is in place before the
   // trajectory: from the moment the file exists, resume is exact from any

@@ -122,6 +122,11 @@ FileStart start_from_file(Scene& s) {
   const std::size_t n = c.position.size() / 3;
   set_spheres(c, s.model, source);
   take_size(s, n, c.L, volume_fraction(c, n), source);
+  // The frame's time becomes the run's start, which every --resume checks:
+  // a NaN or negative time (another program's H5MD) is refused here, once.
+  if (c.time && !(std::isfinite(*c.time) && *c.time >= 0))
+    throw InputError(source + ": the frame's time t = " + format_number(*c.time) +
+                     " is not a time; times are finite and >= 0");
   if (c.time) s.from_time = c.time;
   const bool own_T0 = s.T0 > 0;
   if (!own_T0) s.T0 = c.T0 ? *c.T0 : unit_time_temperature(double(n) / (c.L * c.L * c.L), s.phi);

@@ -210,6 +210,43 @@ TEST(ResumeCliDamage, ADamagedCheckpointIsRefusedWithOneLine) {
   EXPECT_EQ(test::run_command(test::bin("coolgas-validate") + " " + out).exit_code, 0);
 }
 
+// A checkpoint path that is not a regular file is refused at once naming it:
+// a link to /dev/zero was read for 2 GB before "out of memory", a directory
+// failed as an internal error. A section claiming more elements than the
+// file holds is damaged input, refused before anything is allocated for it.
+TEST(ResumeCliDamage, ACheckpointThatIsNotARegularFileOrClaimsTooMuchIsRefused) {
+  const std::string dir = test::scratch_dir("resume_checkpoint_kind");
+  const std::string out = dir + "/run.h5", checkpoint = out + ".checkpoint";
+  ASSERT_EQ(test::run_command(test::simulate(write_scene(dir) + " -o " + out + " --set run.t_end=10")).exit_code, 0);
+  const std::string saved = dir + "/saved.checkpoint";
+  std::filesystem::rename(checkpoint, saved);
+  std::filesystem::create_symlink("/dev/zero", checkpoint);
+  const auto start = std::chrono::steady_clock::now();
+  test::expect_refused_with_one_line(test::run_command(test::simulate("--resume " + out + " --set run.t_end=20")),
+                                     "run.h5.checkpoint': it is not a regular file");
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(20));
+  std::filesystem::remove(checkpoint);
+  std::filesystem::create_directory(checkpoint);
+  test::expect_refused_with_one_line(test::run_command(test::simulate("--resume " + out + " --set run.t_end=20")),
+                                     "it is not a regular file");
+  std::filesystem::remove(checkpoint);
+  // The first section's element count (after the 24-byte header, its name's
+  // length and name and its element size) set to 2^60.
+  std::filesystem::copy_file(saved, checkpoint);
+  {
+    std::fstream f(checkpoint, std::ios::in | std::ios::out | std::ios::binary);
+    std::uint32_t name_length = 0;
+    f.seekg(24);
+    f.read(reinterpret_cast<char*>(&name_length), sizeof name_length);
+    const std::uint64_t count = std::uint64_t(1) << 60;
+    f.seekp(std::streamoff(24 + 4 + name_length + 8));
+    f.write(reinterpret_cast<const char*>(&count), sizeof count);
+  }
+  test::expect_refused_with_one_line(test::run_command(test::simulate("--resume " + out + " --set run.t_end=20")),
+                                     "run.h5.checkpoint': section 'run/physics' ends early");
+  EXPECT_EQ(test::run_command(test::bin("coolgas-validate") + " " + out).exit_code, 0);
+}
+
 // A finished short run to damage; its checkpoint is removed, so --resume reads the trajectory itself.
 std::string short_run(const std::string& dir) {
   const std::string out = dir + "/run.h5";

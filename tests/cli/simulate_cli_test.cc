@@ -3,6 +3,8 @@
 // MDAnalysis; --resume continues bit-identically; signals leave readable files.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -57,6 +59,30 @@ TEST(SimulateCli, BadInputIsRefusedWithOneLineAndNoFile) {
   const auto r = run_command(simulate("--resume " + dir + "/corrupt.h5"));
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(test::line_count(r.err), 1) << r.err;
+}
+
+// The longest output name allowed is the longest that works: the run also
+// writes NAME.partial, NAME.checkpoint and NAME.checkpoint.partial, so names
+// that passed a limit leaving room for ".partial" only failed later as an
+// internal error (File name too long).
+TEST(SimulateCli, TheStatedNameLimitIsTheEnforcedOne) {
+  const std::string dir = test::scratch_dir("simulate_long_name");
+  const std::string scene = write_scene(dir);
+  long max = pathconf(dir.c_str(), _PC_NAME_MAX);
+  if (max <= 0) max = 255;
+  const std::size_t limit = std::size_t(max) - std::strlen(".checkpoint.partial");
+  for (std::size_t length : {limit + 1, limit + 5, std::size_t(max) - std::strlen(".partial")}) {
+    const std::string out = dir + "/" + std::string(length - 3, 'n') + ".h5";
+    expect_refused(scene + " -o " + out + " --set run.t_end=1",
+                   "the file name has " + std::to_string(length) + " characters; the limit here is " +
+                       std::to_string(limit),
+                   out);
+  }
+  const std::string out = dir + "/" + std::string(limit - 3, 'n') + ".h5";
+  const auto r = run_command(simulate(scene + " -o " + out + " --set run.t_end=1"));
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(out));
+  EXPECT_TRUE(std::filesystem::exists(out + ".checkpoint"));
 }
 
 TEST(SimulateCli, ExistingOutputIsKeptWithoutForce) {

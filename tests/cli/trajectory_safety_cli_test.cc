@@ -141,5 +141,26 @@ TEST_F(TrajectorySafety, AFailedWriteIsOneLineExit5AndResumeCompletesTheRun) {
   EXPECT_EQ(dump_times(out), whole);
 }
 
+// A disk already full when the run starts: HDF5 cannot even create the file.
+// The run says the system's reason (not "directory missing or not
+// writable?"), exits with code 5 and leaves no file behind (the create left
+// a 0-byte FILE.partial). A full disk needs a small file system of its own:
+// a 200 kB tmpfs, which takes root; elsewhere the test is skipped.
+TEST_F(TrajectorySafety, AFullDiskAtTheStartIsExit5LeavingNothing) {
+  const std::string disk = dir + "/disk";
+  run_command("mkdir -p " + disk);
+  if (run_command("mount -t tmpfs -o size=200k tmpfs " + disk).exit_code != 0)
+    GTEST_SKIP() << "cannot mount a small tmpfs here (not root)";
+  run_command("dd if=/dev/zero of=" + disk + "/fill bs=1k count=400");
+  const std::string out = disk + "/run.h5";
+  const auto r = run_command(bin("coolgas-simulate") + " " + scene + " -q -o " + out);
+  const std::string left = run_command("ls " + disk).out;
+  run_command("umount " + disk);
+  EXPECT_EQ(r.exit_code, kExitWrite) << r.err;
+  EXPECT_EQ(test::line_count(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("run.h5.partial': No space left on device"), std::string::npos) << r.err;
+  EXPECT_EQ(left, "fill\n");
+}
+
 }  // namespace
 }  // namespace coolgas

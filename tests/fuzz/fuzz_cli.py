@@ -8,7 +8,9 @@ run) and runs each:
             stdout, no file written or changed;
   no space  every tool writing its table to /dev/full or a closed stdout:
             a non-zero exit code and one line naming stdout;
-  pipe      every tool into a closed pipe (| head -c 1): nothing on stderr.
+  pipe      every tool into a closed pipe (| head -c 1): nothing on stderr;
+  write     an output file option (--series-file) on a full device: exit
+            code 5 and one line naming that file.
 Each case has a time limit: a hang is a failure too.
 
 usage: fuzz_cli.py BIN_DIR WORK_DIR [--list]
@@ -75,8 +77,8 @@ class Corpus:
     def path(self, name):
         return os.path.join(self.work, name)
 
-    def add(self, kind, what, command, stdin=None, watch=None):
-        self.cases.append({"kind": kind, "what": what, "command": command, "watch": watch})
+    def add(self, kind, what, command, stdin=None, watch=None, names=None):
+        self.cases.append({"kind": kind, "what": what, "command": command, "watch": watch, "names": names})
 
     def scene_file(self, text):
         name = self.path(f"scene{len(self.cases)}.toml")
@@ -194,7 +196,11 @@ class Corpus:
             + [f"--local-slope --smooth {s} {table}" for s in ["0", "-1", "nan"]]
             + [f"--power --t-column nope {table}", "--power --haff " + table, table],
             "coolgas-collapse": [f"--bootstrap {b} --optimize {table} {table}" for b in ["-1", "1000000000"]]
-            + [f"--min-overlap -1 {table}", f"--t-window 5:1 {table}", f"--e-column nope {table}"],
+            + [f"--min-overlap -1 {table}", f"--t-window 5:1 {table}", f"--e-column nope {table}"]
+            # exponents whose scaled points overflow or vanish: refused, never inf or 0 in the table
+            + [f"--theta {th} --z {z} {table}" for th, z in
+               [(f"{self.rng.choice([1, -1]) * 10.0 ** self.rng.randrange(160, 309):g}", "2.5") for _ in range(4)]
+               + [("1", f"{self.rng.choice([1, -1]) * self.rng.randrange(400, 10**6)}") for _ in range(3)]],
             "coolgas-snapshot": [f"{run} --time 0 -o {self.path('a_directory')}",
                                  f"{run} --time 0 -o {self.path('no/dir/x.png')}",
                                  f"{run} --time 0 -o x.png --colored 99", f"{run} --time 0 -o x.png --size 1e9",
@@ -282,6 +288,107 @@ class Corpus:
             f["particles/all/velocity/value"][-1] = v
         fault("nan_velocity", nan_velocity)
 
+    # Starts from files whose counts, shapes and times lie: extended XYZ
+    # count lines far beyond the lines the file holds, times that are not
+    # finite and >= 0, foreign H5MD frames declared beyond any memory. Each
+    # is refused naming the file before anything is allocated.
+    def lying_starts(self):
+        import h5py
+        import numpy as np
+        scene = self.scene_file(toml({k: v for k, v in BASE.items() if k not in ("system.N", "system.phi")}))
+        box = 'Lattice="10 0 0 0 10 0 0 0 10"'
+
+        def start(what, name, text):
+            path = self.path(name)
+            with open(path, "w") as f:
+                f.write(text)
+            self.add("refused", "start from " + what, self.start_command(scene, path))
+
+        lines = "".join(f"X {1 + i % 8} {1 + i // 8 % 8} {1 + i // 64}\n" for i in range(200))
+        for k in range(6):
+            count = self.rng.choice([10**9, 2**31 - 1001, 10**6, 4000]) + self.rng.randrange(1000)
+            start(f"xyz count {count}", f"count{k}.xyz", f"{count}\n{box} Time=1\n{lines}")
+        for k, t in enumerate(["nan", "inf", "-inf", "-5", "-1e-300", "NaN", "1e309"]):
+            start(f"xyz Time={t}", f"time{k}.xyz", f"200\n{box} Time={t}\n{lines}")
+        for k, shape in enumerate([(1, 10**12, 3), (3, 10**11, 3), (1, 2**62, 3)]):
+            path = self.path(f"declared{k}.h5")
+            with h5py.File(path, "w") as f:
+                f.create_group("h5md")
+                f.create_dataset("particles/all/position/value", shape=shape, dtype="f8", chunks=(1, 4096, 3))
+                f.create_dataset("particles/all/position/time", data=np.arange(shape[0], dtype="f8"))
+                f.create_dataset("particles/all/box/edges", data=[10.0, 10.0, 10.0])
+            self.add("refused", f"start from H5MD of shape {shape}", self.start_command(scene, path))
+
+    def start_command(self, scene, path):
+        out = self.path(f"out{len(self.cases)}.h5")
+        return f"{self.prog('coolgas-simulate')} -q {scene} -o {out} --set system.init=file --set system.from={path}"
+
+    # Checkpoints beside a good run that are not one: a device, a directory,
+    # sections whose lengths exceed the file. Refused naming the checkpoint,
+    # at once (a link to /dev/zero was read for gigabytes).
+    def bad_checkpoints(self, run):
+        import struct
+        good = open(run + ".checkpoint", "rb").read()
+        name_length = struct.unpack_from("<I", good, 24)[0]
+        count_at = 24 + 4 + name_length + 8
+
+        def resume(what, make):
+            path = self.path(f"ckpt_{len(self.cases)}.h5")
+            shutil.copy(run, path)
+            make(path + ".checkpoint")
+            self.add("refused", "--resume with checkpoint " + what,
+                     f"{self.prog('coolgas-simulate')} -q --resume {path} --set run.t_end=4", watch=path)
+
+        resume("-> /dev/zero", lambda c: os.symlink("/dev/zero", c))
+        resume("-> /dev/urandom", lambda c: os.symlink("/dev/urandom", c))
+        resume("a directory", os.makedirs)
+        for k in range(4):
+            count = self.rng.choice([2**60, 2**40, len(good), 2**64 - 1]) + k
+
+            def lying(c, count=count):
+                data = bytearray(good)
+                struct.pack_into("<Q", data, count_at, count % 2**64)
+                open(c, "wb").write(data)
+            resume(f"section count {count}", lying)
+
+    # Damaged compressed chunks: every reader names the file and dataset
+    # (exit 2), never "internal error: HDF5". One copy per damaged dataset.
+    def damaged_chunks(self, run):
+        import h5py
+        for element in ["position", "velocity"]:
+            path = self.path(f"chunk_{element}.h5")
+            shutil.copy(run, path)
+            with h5py.File(path, "r") as f:
+                d = f[f"particles/all/{element}/value"]
+                info = d.id.get_chunk_info(d.id.get_num_chunks() - 1)
+            data = bytearray(open(path, "rb").read())
+            at = info.byte_offset + info.size // 3
+            data[at:at + 64] = bytes(b ^ 0x5A for b in data[at:at + 64])
+            open(path, "wb").write(data)
+            p = self.prog
+            scene = self.scene_file(toml({k: v for k, v in BASE.items() if k not in ("system.N", "system.phi")}))
+            readers = [("convert", f"{p('coolgas-convert')} --last {path}"),
+                       ("--resume", f"{p('coolgas-simulate')} -q --resume {path} --set run.t_end=4"),
+                       ("start from", self.start_command(scene, path))]
+            if element == "position":  # the tools that read positions only
+                readers += [("clusters", f"{p('coolgas-clusters')} {path}"),
+                            ("snapshot", f"{p('coolgas-snapshot')} {path} --time 2 -o {self.path('chunk.png')}")]
+            else:
+                readers += [("velocity", f"{p('coolgas-velocity')} {path}")]
+            for what, cmd in readers:
+                self.add("refused", f"{what} with a damaged {element} chunk", cmd,
+                         watch=path if what == "--resume" else None)
+
+    # Output names around the stated limit: every length the check passes
+    # must work (the run adds .partial, .checkpoint, .checkpoint.partial);
+    # the longer ones are refused.
+    def long_names(self):
+        scene = self.scene_file(toml(BASE))
+        limit = os.pathconf(self.work, "PC_NAME_MAX") - len(".checkpoint.partial")
+        for length in range(limit + 1, limit + 12):
+            self.add("refused", f"-o a {length}-character name",
+                     f"{self.prog('coolgas-simulate')} -q {scene} -o {self.path('n' * (length - 3) + '.h5')}")
+
     # Output that cannot be written, and closed pipes.
     def outputs(self, run, table):
         p = self.prog
@@ -296,6 +403,11 @@ class Corpus:
             "coolgas-convert": f"{p('coolgas-convert')} {run}",
             "coolgas-simulate --help": f"{p('coolgas-simulate')} --help",
         }
+        # Output files given by option: a full device is exit code 5 naming it.
+        smol = f"{p('coolgas-smoluchowski')} --M 256 --time 0.2,0.5"
+        for kernel in ["constant", "additive", "ballistic"]:
+            self.add("write", f"coolgas-smoluchowski --kernel {kernel} --series-file /dev/full",
+                     f"{smol} --kernel {kernel} --series-file /dev/full > /dev/null", names="/dev/full")
         for tool, cmd in commands.items():
             self.add("no space", f"{tool} > /dev/full", cmd + " > /dev/full")
             self.add("no space", f"{tool} >&-", cmd + " >&-")
@@ -338,6 +450,11 @@ def run_case(case, work):
             return "exit code 0 although stdout could not be written"
         if lines != 1 or "stdout" not in err:
             return f"expected one line naming stdout, got: {err[:300]}"
+    elif kind == "write":
+        if r.returncode != 5:
+            return f"exit code {r.returncode}, expected 5: {err[:300]}"
+        if lines != 1 or case["names"] not in err:
+            return f"expected one line naming {case['names']}, got: {err[:300]}"
     elif kind == "pipe":
         if err:
             return "stderr not empty: " + err[:300]
@@ -364,6 +481,10 @@ def main():
     corpus.simulate_paths()
     corpus.tools(run, table)
     corpus.corrupt_resumes(run)
+    corpus.lying_starts()
+    corpus.bad_checkpoints(run)
+    corpus.damaged_chunks(run)
+    corpus.long_names()
     corpus.outputs(run, table)
     # COOLGAS_FUZZ_STRIDE=k keeps every k-th refused case (and every case of the
     # other kinds): the sanitizer lane of .ci/run, where each of these ~600

@@ -114,5 +114,38 @@ TEST(ExtendedXyz, BadFilesAreRefusedNamingTheLine) {
   EXPECT_NE(error_of("1\n" + box + "\nX 1 2 3\n", 5.0).find("has no Time="), std::string::npos);
 }
 
+// A count line is a claim about the rest of the file: one that the file's
+// bytes cannot hold is refused before the frame's arrays are allocated (a
+// count of 10^9 once took 24 GB before failing).
+TEST(ExtendedXyz, ACountTheFileCannotHoldIsRefusedBeforeAllocating) {
+  const std::string box = "Lattice=\"4 0 0 0 4 0 0 0 4\"";
+  std::string lines;
+  for (int i = 0; i < 2000; ++i) lines += "X 1 2 3\n";
+  const std::string e = error_of("10000000\n" + box + "\n" + lines);
+  EXPECT_NE(e.find("f.xyz: line 1: the count line says 10000000 particles"), std::string::npos) << e;
+  EXPECT_NE(error_of("3\n" + box + "\nX\nX\n").find("line 1: the count line says 3 particles, but the 4 B left in "
+                                                    "the file hold at most 2 lines"),
+            std::string::npos);
+  // The shortest lines (a word each, the last without its newline) pass the
+  // bound and are then refused for what they miss, naming their line.
+  EXPECT_NE(error_of("2\n" + box + "\nX\nX").find("line 3: expected 4 columns, got 1"), std::string::npos);
+}
+
+// A time that is not finite and >= 0 (then taken as the run's start, which
+// every --resume refuses) and a T0 that is not finite and > 0 are refused
+// naming the value.
+TEST(ExtendedXyz, TimesAndTemperaturesMustBeFinite) {
+  const std::string box = "Lattice=\"4 0 0 0 4 0 0 0 4\"";
+  for (const std::string t : {"nan", "inf", "-inf", "-5", "-1e-300", "NaN"}) {
+    const std::string e = error_of("1\n" + box + " Time=" + t + "\nX 1 2 3\n");
+    EXPECT_NE(e.find("f.xyz: line 2: Time=" + t + " is not a time; times are finite and >= 0"), std::string::npos) << e;
+  }
+  for (const std::string T0 : {"nan", "inf", "0", "-1"}) {
+    const std::string e = error_of("1\n" + box + " Time=1 T0=" + T0 + "\nX 1 2 3\n");
+    EXPECT_NE(e.find("T0=" + T0 + " is not a temperature"), std::string::npos) << e;
+  }
+  EXPECT_EQ(*read("1\n" + box + " Time=0\nX 1 2 3\n").time, 0.0);
+}
+
 }  // namespace
 }  // namespace coolgas

@@ -66,5 +66,33 @@ TEST(H5mdFrame, FilesThatAreNotH5mdAreRefusedNamingWhatIsMissing) {
   }
 }
 
+// A frame declared 10^12 particles wide (chunked: nothing on disk) is
+// refused naming the file and the dataset before its arrays are allocated,
+// not met by "out of memory".
+TEST(H5mdFrame, AFrameBeyondTheMemoryIsRefusedBeforeAllocating) {
+  const std::string path = test::scratch_dir("h5md_frame_huge") + "/huge.h5";
+  {
+    h5::Handle f = h5::open_file(path, h5::Mode::kCreateTruncate);
+    for (const char* g : {"h5md", "particles/all/position", "particles/all/box"}) h5::create_group(f.id(), g);
+    const hsize_t dims[3] = {1, 1000000000000ULL, 3}, chunk[3] = {1, 4096, 3};
+    h5::Handle space(H5Screate_simple(3, dims, nullptr)), dcpl(H5Pcreate(H5P_DATASET_CREATE));
+    H5Pset_chunk(dcpl.id(), 3, chunk);
+    h5::Handle ds(H5Dcreate2(f.id(), "particles/all/position/value", H5T_IEEE_F64LE, space.id(), H5P_DEFAULT,
+                             dcpl.id(), H5P_DEFAULT));
+    ASSERT_TRUE(ds.valid());
+    h5::Handle edges = h5::create_series(f.id(), "particles/all/box/edges", h5::Type::kFloat64, {}, 3);
+    for (double e : {10.0, 10.0, 10.0}) h5::append_row(edges.id(), h5::Type::kFloat64, &e);
+  }
+  try {
+    read_h5md_frame(path, std::nullopt);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("'" + path + "': dataset '/particles/all/position/value' of shape (1, "
+                                         "1000000000000, 3) would need 24 TB to read one frame"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace coolgas

@@ -103,3 +103,26 @@ TEST(NeighbourCells, SpecialisedSearchMatchesThePeriodicWalker) {
 
 }  // namespace
 }  // namespace coolgas
+
+namespace coolgas {
+namespace {
+
+// The limit a refusal states is the one enforced: the value it names passes,
+// the double below it is refused (rounded to six digits, the limit once read
+// "L >= 3" in the refusal of L = 3).
+TEST(CellGridLimit, TheStatedSmallestBoxIsTheEnforcedOne) {
+  for (double width : {1.0, 2.5, 0.7}) {
+    const std::string refusal = check_box_fits_grid(3 * width, width);
+    const std::string key = "the cell grid needs L >= ";
+    const auto at = refusal.find(key);
+    ASSERT_NE(at, std::string::npos) << refusal;
+    const double stated = std::stod(refusal.substr(at + key.size()));
+    EXPECT_GT(stated, 3 * width) << refusal;
+    EXPECT_EQ(check_box_fits_grid(stated, width), "") << refusal;
+    EXPECT_NE(check_box_fits_grid(std::nextafter(stated, 0.0), width), "") << refusal;
+  }
+  EXPECT_NE(check_box_fits_grid(3, 1).find("box side L = 3 is too small"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace coolgas

@@ -10,10 +10,12 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <optional>
 
 #include "common/error.h"
 #include "common/extended_xyz.h"
+#include "common/hdf5_file.h"
 #include "common/trajectory/h5md_writer.h"
 #include "simulate/start/enskog.h"
 #include "tests/support/run_command.h"
@@ -183,6 +185,40 @@ TEST(FileStart, BadConfigurationsAreRefusedNamingWhatIsWrong) {
   EXPECT_NE(error_of(file_scene(dir)).find("not a regular file"), std::string::npos);
   std::ofstream(dir + "/plain.txt") << "not a configuration\n";
   EXPECT_NE(error_of(file_scene(dir + "/plain.txt")).find("expected the number of particles"), std::string::npos);
+}
+
+// Another program's H5MD file of one frame (the lattice of `f`) at time `t`.
+std::string write_h5md(const std::string& dir, const XyzFrame& f, double t) {
+  const std::string path = dir + "/other.h5";
+  h5::Handle file = h5::open_file(path, h5::Mode::kCreateTruncate);
+  for (const char* g : {"h5md", "particles/all/position", "particles/all/box"}) h5::create_group(file.id(), g);
+  const hsize_t n = f.position.size() / 3;
+  h5::Handle value = h5::create_series(file.id(), "particles/all/position/value", h5::Type::kFloat64, {n, 3}, 1);
+  h5::append_row(value.id(), h5::Type::kFloat64, f.position.data());
+  h5::Handle time = h5::create_series(file.id(), "particles/all/position/time", h5::Type::kFloat64, {}, 1);
+  h5::append_row(time.id(), h5::Type::kFloat64, &t);
+  const double edges[3] = {f.L, f.L, f.L};
+  h5::Handle box = h5::create_series(file.id(), "particles/all/box/edges", h5::Type::kFloat64, {}, 3);
+  for (double e : edges) h5::append_row(box.id(), h5::Type::kFloat64, &e);
+  return path;
+}
+
+// A frame's time becomes the run's start, which every --resume checks: one
+// that is not finite and >= 0 is refused at the start, naming the file and
+// the value, whatever the format (extended XYZ refuses it naming the line).
+TEST(FileStart, AFrameTimeThatIsNotFiniteAndPositiveIsRefused) {
+  const std::string dir = test::scratch_dir("file_start_time");
+  const XyzFrame f = lattice(6, false);
+  for (double t : {std::nan(""), std::numeric_limits<double>::infinity(), -5.0}) {
+    const std::string e = error_of(file_scene(write_h5md(dir, f, t)));
+    EXPECT_NE(e.find("system.from = '" + dir + "/other.h5': the frame's time t = " + format_number(t) +
+                     " is not a time; times are finite and >= 0"),
+              std::string::npos)
+        << e;
+  }
+  Scene s = file_scene(write_h5md(dir, f, 2.5));
+  start_from_file(s);
+  EXPECT_EQ(s.from_time, 2.5);
 }
 
 }  // namespace

@@ -1,0 +1,90 @@
+// Reads of damaged or hostile HDF5 files: a dataset whose declared shape
+// would not fit in memory, and a stored chunk that cannot be decoded, are
+// each one InputError naming the file and the dataset (exit code 2, damaged
+// input), never "out of memory" or an internal HDF5 error.
+#include "common/hdf5_file.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <vector>
+
+#include "common/error.h"
+#include "tests/support/run_command.h"
+
+namespace coolgas {
+namespace {
+
+// The message of the InputError `read` throws, or "" if it throws none.
+template <class F>
+std::string input_error_of(F&& read) {
+  try {
+    read();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// A chunked dataset "/x" of `dims`; nothing written, so it takes no space on disk.
+void create_declared(const std::string& path, const std::vector<hsize_t>& dims) {
+  h5::Handle f = h5::open_file(path, h5::Mode::kCreateTruncate);
+  std::vector<hsize_t> chunk(dims.size(), 1);
+  chunk.back() = dims.back();
+  h5::Handle space(H5Screate_simple(int(dims.size()), dims.data(), nullptr)), dcpl(H5Pcreate(H5P_DATASET_CREATE));
+  H5Pset_chunk(dcpl.id(), int(chunk.size()), chunk.data());
+  h5::Handle ds(H5Dcreate2(f.id(), "x", H5T_IEEE_F64LE, space.id(), H5P_DEFAULT, dcpl.id(), H5P_DEFAULT));
+  ASSERT_TRUE(ds.valid());
+}
+
+TEST(Hdf5File, AShapeBeyondTheMemoryIsRefusedNamingTheFileAndDataset) {
+  const std::string path = test::scratch_dir("hdf5_file_huge") + "/huge.h5";
+  create_declared(path, {2, 1000000000000ULL, 3});
+  h5::Handle f = h5::open_file(path, h5::Mode::kReadOnly);
+  h5::Handle ds = h5::open_dataset(f.id(), "x");
+  const std::string all = input_error_of([&] { h5::read_all<double>(ds.id()); });
+  EXPECT_NE(all.find("'" + path + "': dataset '/x' of shape (2, 1000000000000, 3) would need 48 TB to read;"),
+            std::string::npos)
+      << all;
+  const std::string row = input_error_of([&] { h5::read_row<double>(ds.id(), 1); });
+  EXPECT_NE(row.find("would need 24 TB to read one row"), std::string::npos) << row;
+  // The check readers call before allocating for themselves.
+  const std::string own = input_error_of([&] { h5::check_read_fits(ds.id(), 3e12, 8, " one frame"); });
+  EXPECT_NE(own.find("'" + path + "': dataset '/x' of shape"), std::string::npos) << own;
+  EXPECT_EQ(input_error_of([&] { h5::check_read_fits(ds.id(), 1e6, 8); }), "");
+}
+
+// One chunk of a deflated dataset with bytes flipped in its middle: zlib
+// cannot decode it, and the read names the file, the dataset and the row.
+TEST(Hdf5File, ADamagedChunkIsDamagedInputNamingTheFileAndDataset) {
+  const std::string path = test::scratch_dir("hdf5_file_chunk") + "/damaged.h5";
+  haddr_t offset = 0;
+  hsize_t bytes = 0;
+  {
+    h5::Handle f = h5::open_file(path, h5::Mode::kCreateTruncate);
+    h5::Handle ds = h5::create_series(f.id(), "x", h5::Type::kFloat64, {1000}, 1, std::nullopt, {0, 6});
+    std::vector<double> row(1000);
+    for (std::size_t i = 0; i < row.size(); ++i) row[i] = 0.37 * double(i * i % 101);
+    for (int r = 0; r < 3; ++r) h5::append_row(ds.id(), h5::Type::kFloat64, row.data());
+    h5::flush(f);
+    const hsize_t at[2] = {1, 0};
+    ASSERT_GE(H5Dget_chunk_info_by_coord(ds.id(), at, nullptr, &offset, &bytes), 0);
+  }
+  {
+    std::fstream file(path, std::ios::in | std::ios::out | std::ios::binary);
+    file.seekp(std::streamoff(offset + bytes / 3));
+    const std::string garbage(32, '\x5a');
+    file.write(garbage.data(), std::streamsize(garbage.size()));
+  }
+  h5::Handle f = h5::open_file(path, h5::Mode::kReadOnly);
+  h5::Handle ds = h5::open_dataset(f.id(), "x");
+  std::vector<double> out(1000);
+  EXPECT_EQ(input_error_of([&] { h5::read_rows(ds.id(), h5::Type::kFloat64, 0, 1, out.data()); }), "");
+  const std::string e = input_error_of([&] { h5::read_rows(ds.id(), h5::Type::kFloat64, 1, 1, out.data()); });
+  EXPECT_NE(e.find("'" + path + "': dataset '/x' cannot be read (row 1): "), std::string::npos) << e;
+  const std::string all = input_error_of([&] { h5::read_all<double>(ds.id()); });
+  EXPECT_NE(all.find("dataset '/x' cannot be read (rows 0 to 2)"), std::string::npos) << all;
+}
+
+}  // namespace
+}  // namespace coolgas
