@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <hdf5.h>
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -115,6 +116,12 @@ std::string& tool_name() {
 }
 
 int run_tool(const std::string& tool, const std::function<int()>& body) {
+  // HDF5's clean-up at exit closes whatever is still open; a file whose close
+  // failed (the disk filled while the file was being set up) is still open
+  // there, and closing it again crashes inside HDF5 (exit 139 after the
+  // right message). Every file is closed by its handle (common/hdf5_file.h)
+  // before exit, so the clean-up is left out. (Before any other HDF5 call.)
+  H5dont_atexit();
   tool_name() = tool;
   std::signal(SIGXFSZ, SIG_IGN);
   std::signal(SIGPIPE, SIG_DFL);

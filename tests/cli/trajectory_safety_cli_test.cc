@@ -162,5 +162,23 @@ TEST_F(TrajectorySafety, AFullDiskAtTheStartIsExit5LeavingNothing) {
   EXPECT_EQ(left, "fill\n");
 }
 
+// A disk with a few kilobytes free: the file is created, then setting up
+// its objects fails. Exit 5 with one line and nothing left behind (HDF5's
+// clean-up at exit once crashed on the file whose close had failed).
+TEST_F(TrajectorySafety, ADiskWithAFewKilobytesFreeIsExit5LeavingNothing) {
+  const std::string disk = dir + "/small";
+  run_command("mkdir -p " + disk);
+  for (const int kb : {8, 12, 16, 24, 32}) {
+    if (run_command("mount -t tmpfs -o size=" + std::to_string(kb) + "k tmpfs " + disk).exit_code != 0)
+      GTEST_SKIP() << "cannot mount a small tmpfs here (not root)";
+    const auto r = run_command(bin("coolgas-simulate") + " " + scene + " -q -o " + disk + "/run.h5");
+    const std::string left = run_command("ls " + disk).out;
+    run_command("umount " + disk);
+    EXPECT_EQ(r.exit_code, kExitWrite) << kb << " kB: " << r.err;
+    EXPECT_EQ(test::line_count(r.err), 1) << r.err;
+    EXPECT_EQ(left, "") << kb << " kB";
+  }
+}
+
 }  // namespace
 }  // namespace coolgas

@@ -10,7 +10,9 @@ run) and runs each:
             a non-zero exit code and one line naming stdout;
   pipe      every tool into a closed pipe (| head -c 1): nothing on stderr;
   write     an output file option (--series-file) on a full device: exit
-            code 5 and one line naming that file.
+            code 5 and one line naming that file;
+  overflow  Smoluchowski kernels whose solution overflows: exit code 2, one
+            line on stderr, no row of nan or inf on stdout.
 Each case has a time limit: a hang is a failure too.
 
 usage: fuzz_cli.py BIN_DIR WORK_DIR [--list]
@@ -389,6 +391,18 @@ class Corpus:
             self.add("refused", f"-o a {length}-character name",
                      f"{self.prog('coolgas-simulate')} -q {scene} -o {self.path('n' * (length - 3) + '.h5')}")
 
+    # Kernels whose rates overflow or whose solution blows up within the
+    # first steps: one line, exit 2, and never a row of nan or inf.
+    def overflowing_kernels(self):
+        smol = self.prog("coolgas-smoluchowski")
+        for _ in range(4):
+            c = f"{10.0 ** self.rng.randrange(200, 308):g}"
+            self.add("overflow", f"--kernel separable:{c},1,1", f"{smol} --M 256 --kernel separable:{c},1,1 --t-end 10")
+        for _ in range(4):
+            p = self.rng.randrange(30, 200)
+            self.add("overflow", f"--kernel separable:1,{p},{p}",
+                     f"{smol} --M 256 --kernel separable:1,{p},{p} --t-end 10")
+
     # Output that cannot be written, and closed pipes.
     def outputs(self, run, table):
         p = self.prog
@@ -455,6 +469,12 @@ def run_case(case, work):
             return f"exit code {r.returncode}, expected 5: {err[:300]}"
         if lines != 1 or case["names"] not in err:
             return f"expected one line naming {case['names']}, got: {err[:300]}"
+    elif kind == "overflow":
+        out = r.stdout.decode("utf-8", "replace").lower()
+        if r.returncode != 2 or lines != 1:
+            return f"exit code {r.returncode} and {lines} lines on stderr, expected 2 and 1: {err[:300]}"
+        if "nan" in out or "inf" in out:
+            return "a row of nan or inf on stdout"
     elif kind == "pipe":
         if err:
             return "stderr not empty: " + err[:300]
@@ -484,6 +504,7 @@ def main():
     corpus.lying_starts()
     corpus.bad_checkpoints(run)
     corpus.damaged_chunks(run)
+    corpus.overflowing_kernels()
     corpus.long_names()
     corpus.outputs(run, table)
     # COOLGAS_FUZZ_STRIDE=k keeps every k-th refused case (and every case of the
