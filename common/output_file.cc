@@ -35,7 +35,7 @@ void check_name_length(const std::string& path, const std::string& folder) {
                      std::to_string(max - long(kTemporarySuffixChars)));
 }
 
-void check_existing(const std::string& path, bool replace) {
+void check_existing(const std::string& path, bool replace, const std::string& or_else) {
   struct stat st {};
   if (stat(path.c_str(), &st) != 0) {
     if (errno == ENOENT) return;
@@ -45,7 +45,8 @@ void check_existing(const std::string& path, bool replace) {
   if (S_ISDIR(st.st_mode)) refuse(path, "it is a directory; give a file name");
   if (!S_ISREG(st.st_mode))
     refuse(path, "it is not a regular file (a device, pipe or socket); only regular files are replaced");
-  if (!replace) throw InputError("output '" + path + "' exists; pass --force to overwrite it (or --resume it)");
+  if (!replace)
+    throw InputError("output '" + path + "' exists; pass --force to overwrite it" + (or_else.empty() ? "" : ", or " + or_else));
 }
 
 void check_folder(const std::string& path, const std::string& folder) {
@@ -57,13 +58,13 @@ void check_folder(const std::string& path, const std::string& folder) {
 
 }  // namespace
 
-void check_output_file(const std::string& path, bool replace) {
+void check_output_file(const std::string& path, bool replace, const std::string& or_else) {
   if (path.empty()) throw InputError("the output file name is empty");
   if (path.back() == '/') refuse(path, "it names a directory; give a file name");
   const std::string folder = folder_of(path);
   check_folder(path, folder);
   check_name_length(path, folder);
-  check_existing(path, replace);
+  check_existing(path, replace, or_else);
 }
 
 }  // namespace coolgas

@@ -18,6 +18,7 @@ inline constexpr std::size_t kTemporarySuffixChars = kLongestSuffix.size();
 // is never replaced, even with `replace`), exists and !replace, has a name
 // too long for its file system (leaving room for the longest suffix), or
 // lies in a folder that is missing, not a folder, or not writable.
-void check_output_file(const std::string& path, bool replace);
+// `or_else`: another way out the message offers beside --force ("--resume it").
+void check_output_file(const std::string& path, bool replace, const std::string& or_else = "");
 
 }  // namespace coolgas

@@ -224,6 +224,15 @@ void note_old_spelling(int argc, char** argv, const std::string& old_name, const
   }
 }
 
+CLI::Option* add_dump_selection(CLI::App& app, std::vector<double>& times, bool& exact_time, const std::string& what) {
+  CLI::Option* time = app.add_option("--time", times,
+                                     what + " [1/omega0] (repeatable, or a comma-separated list;\n"
+                                            "a time no dump has is snapped to the nearest, with a note on stderr)")
+                          ->delimiter(',');
+  app.add_flag("--exact-time", exact_time, "refuse a --time that no dump has instead of snapping it");
+  return time;
+}
+
 void note(const std::string& text) { report(tool_name(), "note", text); }
 
 }  // namespace coolgas

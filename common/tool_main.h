@@ -4,9 +4,11 @@
 #pragma once
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace CLI {
 class App;
+class Option;
 }
 
 namespace coolgas {
@@ -33,6 +35,13 @@ int run_tool(const std::string& tool, const std::function<int()>& body);
 // becomes an InputError (one line, exit code 2). Every tool gets --version
 // ("<tool> <version> (<commit>)"), and its usage line names the tool bare.
 bool parse_command_line(CLI::App& app, int argc, char** argv);
+
+// The one convention of every tool that reads chosen dumps: `--time T`
+// (repeatable, or a comma-separated list; [1/omega0]) picks the dump
+// nearest each time, snapped with a note on stderr, and `--exact-time`
+// refuses a time no dump has instead. `what` begins --time's help ("analyse
+// only the dump nearest this time"). Returns the --time option.
+CLI::Option* add_dump_selection(CLI::App& app, std::vector<double>& times, bool& exact_time, const std::string& what);
 
 // An old option spelling that still works for one version: if argv uses
 // `old_name` (the option must accept both names), a note on stderr at the

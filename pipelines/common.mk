@@ -260,7 +260,7 @@ $(OUT)/fig2_energy_parameters.png: $(PARAM_TABLES) $(PARAM_FITS) $(PLOTS)/fig2_e
 # ---- Fig. 3: snapshot of the gas, scaled cluster-mass distribution N(m,t)
 $(TABLES)/snapshot_gas.png: $(SNAP_RUN) $(call knob,snapshot,$(SNAPSHOT_TIME))
 	@mkdir -p $(@D)
-	$(BIN)/coolgas-snapshot $< --time $(SNAPSHOT_TIME) --size 700 -o $@ > $(TABLES)/snapshot_gas.tsv
+	$(BIN)/coolgas-snapshot $< --time $(SNAPSHOT_TIME) --size 700 --force -o $@ > $(TABLES)/snapshot_gas.tsv
 
 $(TABLES)/nm_gas.tsv: $(SNAP_RUN) $(call knob,nm_times,$(NM_TIMES))
 	@mkdir -p $(@D)
@@ -276,7 +276,7 @@ ifeq ($(BA),1)
 BA_SNAP := $(lastword $(BA_RUNS))
 $(TABLES)/snapshot_ba.png: $(BA_SNAP) $(call knob,ba_snapshot,$(BA_SNAPSHOT_TIME))
 	@mkdir -p $(@D)
-	$(BIN)/coolgas-snapshot $< --time $(BA_SNAPSHOT_TIME) --size 700 -o $@ > $(TABLES)/snapshot_ba.tsv
+	$(BIN)/coolgas-snapshot $< --time $(BA_SNAPSHOT_TIME) --size 700 --force -o $@ > $(TABLES)/snapshot_ba.tsv
 $(TABLES)/nm_ba.tsv: $(BA_SNAP) $(call knob,ba_nm_times,$(BA_NM_TIMES))
 	@mkdir -p $(@D)
 	$(BIN)/coolgas-clusters $< $(foreach t,$(BA_NM_TIMES),--time $(t)) > $@

@@ -32,11 +32,7 @@ int main(int argc, char** argv) {
     app.add_flag("--series", opt.series, "one row per dump: M0, M1, M2, M_avg, M_max, largest_fraction");
     app.add_flag("--scaled", opt.scaled,
                  "N(m,t) scaled by the mean size as in the paper's Fig. 3: columns t, x = m/M_avg, y = N M_avg^2");
-    app.add_option("--time", opt.times,
-                   "analyse only the dump nearest this time [1/omega0] (repeatable, or a comma-separated list;\n"
-                   "a time no dump has is snapped to the nearest, with a note on stderr)")
-        ->delimiter(',');
-    app.add_flag("--exact-time", opt.exact_time, "refuse a --time that no dump has instead of snapping it");
+    coolgas::add_dump_selection(app, opt.times, opt.exact_time, "analyse only the dump nearest this time");
     if (coolgas::parse_command_line(app, argc, argv)) return 0;
     coolgas::run_clusters(opt, std::cout);
     return 0;

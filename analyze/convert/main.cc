@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
         "An XYZ frame can start a new run: coolgas-simulate with system.init = \"file\", system.from = FILE."};
     app.add_option("trajectory", o.input, "trajectory file (H5MD, written by coolgas-simulate)")->required();
     app.add_option("--format", format, "xyz or lammps")->check(CLI::IsMember({"xyz", "lammps"}))->capture_default_str();
-    auto* time = app.add_option("--time", o.times, "only the dump nearest this time [1/omega0] (repeatable); default: every dump");
+    auto* time = coolgas::add_dump_selection(app, o.times, o.exact_time, "only the dump nearest this time (default: every dump)");
     app.add_flag("--last", o.last, "only the last dump")->excludes(time);
     if (coolgas::parse_command_line(app, argc, argv)) return 0;
     o.format = format == "lammps" ? coolgas::ExportFormat::kLammps : coolgas::ExportFormat::kXyz;

@@ -27,7 +27,7 @@ void run_convert(const ConvertOptions& opt, std::ostream& out) {
     if (!std::isfinite(t)) throw InputError("--time " + format_number(t) + ": a time is a finite number [1/omega0]");
   const Trajectory t(opt.input, kPosition | kVelocity | kImage | kDiameter);
   const std::vector<std::size_t> dumps =
-      opt.last ? std::vector<std::size_t>{t.dump_times().size() - 1} : t.dumps_nearest(opt.times);
+      opt.last ? std::vector<std::size_t>{t.dump_times().size() - 1} : t.dumps_nearest(opt.times, opt.exact_time);
   Provenance provenance{{"tool", "coolgas-convert"}, {"version", program_version()}};
   for (auto& p : t.provenance()) provenance.push_back(std::move(p));
   Frame f;

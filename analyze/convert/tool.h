@@ -15,6 +15,7 @@ struct ConvertOptions {
   std::string input;
   ExportFormat format = ExportFormat::kXyz;
   std::vector<double> times;  // dumps nearest these times; empty = all dumps
+  bool exact_time = false;    // --exact-time: refuse a time no dump has
   bool last = false;          // only the last dump
 };
 

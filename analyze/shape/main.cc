@@ -41,11 +41,7 @@ int main(int argc, char** argv) {
     app.add_option("--min-mass", opt.min_mass, "--clusters: smallest cluster listed [particles]")->capture_default_str();
     app.add_flag("--series", series, "one row per dump: d_f, its error, mean shape");
     app.add_flag("--clusters", clusters, "one row per cluster: mass, R_g, eigenvalues, shape");
-    app.add_option("--time", opt.times,
-                   "analyse only the dump nearest this time [1/omega0] (repeatable, or a comma-separated list;\n"
-                   "a time no dump has is snapped to the nearest, with a note on stderr)")
-        ->delimiter(',');
-    app.add_flag("--exact-time", opt.exact_time, "refuse a --time that no dump has instead of snapping it");
+    coolgas::add_dump_selection(app, opt.times, opt.exact_time, "analyse only the dump nearest this time");
     if (coolgas::parse_command_line(app, argc, argv)) return 0;
     if (series && clusters) throw coolgas::InputError("--series and --clusters exclude each other: choose one table");
     if (series) opt.table = coolgas::ShapeTable::kSeries;

@@ -24,10 +24,9 @@ int main(int argc, char** argv) {
         "Table on stdout, one row per coloured cluster: rank (1 = largest), mass [particles],\n"
         "fraction = mass/N, shown [particles drawn], rgb (colour as the integer 0xRRGGBB)."};
     app.add_option("trajectory", o.input, "trajectory file (H5MD, written by coolgas-simulate)")->required();
-    app.add_option("--time", o.time, "draw the dump nearest this time [1/omega0] (snapped with a note on stderr)")
-        ->required();
-    app.add_flag("--exact-time", o.exact_time, "refuse a --time that no dump has instead of snapping it");
-    app.add_option("-o,--output", o.output, "picture to write: .png, .pdf or .svg (replaced if it exists)")->required();
+    coolgas::add_dump_selection(app, o.times, o.exact_time, "draw the dump nearest this time (one time)")->required();
+    app.add_option("-o,--output", o.output, "picture to write: .png, .pdf or .svg")->required();
+    app.add_flag("--force", o.force, "replace the picture if it exists");
     std::string view = "slab";
     app.add_option("--view", view, "slab or 3d")->check(CLI::IsMember({"slab", "3d"}))->capture_default_str();
     app.add_option("--thickness", o.scene.thickness, "slab thickness [sigma]")->capture_default_str();

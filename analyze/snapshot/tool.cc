@@ -6,6 +6,7 @@
 
 #include "common/trajectory/frame_reader.h"
 #include "common/error.h"
+#include "common/output_file.h"
 #include "common/tsv.h"
 
 namespace coolgas {
@@ -14,7 +15,7 @@ namespace {
 
 Provenance provenance(const Trajectory& traj, const SnapshotToolOptions& o, const Frame& f) {
   Provenance p = traj.provenance();
-  p.emplace_back("time", format_number(o.time));
+  p.emplace_back("time", format_number(o.times.front()));
   p.emplace_back("dump_time", format_number(f.time));
   p.emplace_back("view", o.scene.view == SnapshotView::kSlab ? "slab" : "3d");
   if (o.scene.view == SnapshotView::kSlab) p.emplace_back("thickness", format_number(o.scene.thickness));
@@ -45,10 +46,13 @@ std::string title(const SnapshotToolOptions& o, const Frame& f) {
 void run_snapshot(const SnapshotToolOptions& o, std::ostream& os) {
   if (o.size_px < 100 || o.size_px > 10000)
     throw InputError("--size must be between 100 and 10000 pixels, got " + std::to_string(o.size_px));
+  if (o.times.size() != 1)
+    throw InputError("coolgas-snapshot draws one dump: give one --time, not " + std::to_string(o.times.size()));
   const PictureFormat format = picture_format(o.output);
+  check_output_file(o.output, o.force);
   Trajectory traj(o.input, kPosition);
   Frame frame;
-  traj.read(traj.dump_at(o.time, o.exact_time), frame);
+  traj.read(traj.dump_at(o.times.front(), o.exact_time), frame);
   const SnapshotScene scene = traj.aggregates() ? make_aggregate_scene(frame.L, frame.position, frame.mass, frame.id, o.scene)
                                                 : make_scene(cluster_grid(o, frame), frame.position, o.scene);
   const PlotOptions plot{.title = title(o, frame),

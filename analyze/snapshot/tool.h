@@ -4,6 +4,7 @@
 #pragma once
 #include <iosfwd>
 #include <string>
+#include <vector>
 
 #include "analyze/snapshot/plot.h"
 #include "analyze/snapshot/scene.h"
@@ -12,9 +13,10 @@ namespace coolgas {
 
 struct SnapshotToolOptions {
   std::string input;
-  double time = 0;  // the dump nearest this time is drawn
-  bool exact_time = false;  // --exact-time: refuse a time no dump has
+  std::vector<double> times;  // --time: exactly one; the dump nearest it is drawn
+  bool exact_time = false;    // --exact-time: refuse a time no dump has
   std::string output;
+  bool force = false;  // --force: replace an existing picture
   SnapshotOptions scene;
   int size_px = 900;
   std::string gnuplot = "gnuplot";

@@ -45,11 +45,7 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_flag("--series", series, "one row per dump: t L_t k_mean k_cut k_peak S_peak L_C L_v");
     app.add_flag("--correlation", correlation, "blocks of C(r) and C_v(r)");
-    app.add_option("--time", opt.times,
-                   "analyse only the dump nearest this time [1/omega0] (repeatable, or a comma-separated list;\n"
-                   "a time no dump has is snapped to the nearest, with a note on stderr)")
-        ->delimiter(',');
-    app.add_flag("--exact-time", opt.exact_time, "refuse a --time that no dump has instead of snapping it");
+    coolgas::add_dump_selection(app, opt.times, opt.exact_time, "analyse only the dump nearest this time");
     if (coolgas::parse_command_line(app, argc, argv)) return 0;
     if (series && correlation) throw coolgas::InputError("--series and --correlation exclude each other: choose one table");
     if (series) opt.table = coolgas::StructureTable::kSeries;

@@ -34,11 +34,7 @@ int main(int argc, char** argv) {
     app.add_option("--tail-from", o.tail_from, "fit beta over y >= this [dimensionless]")->capture_default_str();
     app.add_option("--min-count", o.min_count, "fit only bins with at least this many samples (+y and -y)")
         ->capture_default_str();
-    app.add_option("--time", o.times,
-                   "analyse only the dump nearest this time [1/omega0] (repeatable, or a comma-separated list;\n"
-                   "a time no dump has is snapped to the nearest, with a note on stderr)")
-        ->delimiter(',');
-    app.add_flag("--exact-time", o.exact_time, "refuse a --time that no dump has instead of snapping it");
+    coolgas::add_dump_selection(app, o.times, o.exact_time, "analyse only the dump nearest this time");
     if (coolgas::parse_command_line(app, argc, argv)) return 0;
     o.table = tail     ? coolgas::VelocityTable::kTail
               : series ? coolgas::VelocityTable::kSeries

@@ -283,7 +283,7 @@ std::string default_output(const std::string& scene_path) {
 }
 
 // Checked before the (possibly long) set-up, so a typo costs nothing.
-void check_writable(const std::string& out, bool force) { check_output_file(out, force); }
+void check_writable(const std::string& out, bool force) { check_output_file(out, force, "--resume it"); }
 
 // A file another coolgas-simulate is writing is never replaced: that writer
 // would go on into an unlinked file, and its checkpoints would overwrite

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <sstream>
 #include <string>
 
@@ -93,6 +94,42 @@ TEST_F(TimeConventions, TimeListsAreRepeatedOrCommaSeparated) {
   EXPECT_EQ(commas.out, repeated.out);
   std::istringstream in(commas.out);
   EXPECT_EQ(read_table(in, "stdout").column_values("t"), (std::vector<double>{10, 1000}));
+}
+
+// One convention for choosing dumps in every tool that reads chosen dumps
+// (common/tool_main.h, add_dump_selection): a comma-separated list equals the
+// repeated option, and --exact-time refuses a time no dump has.
+TEST_F(TimeConventions, EveryToolThatReadsDumpsTakesTheSameTimeOptions) {
+  const std::pair<const char*, const char*> tools[] = {{"coolgas-clusters", "--series"},
+                                                       {"coolgas-velocity", "--series"},
+                                                       {"coolgas-shape", ""},
+                                                       {"coolgas-structure", ""},
+                                                       {"coolgas-convert", ""}};
+  for (const auto& [tool, extra] : tools) {
+    const std::string base = bin(tool) + " " + run() + " " + extra;
+    const auto commas = run_command(base + " --time 10,1000");
+    const auto repeated = run_command(base + " --time 10 --time 1000");
+    EXPECT_EQ(commas.exit_code, 0) << tool << ": " << commas.err;
+    EXPECT_FALSE(commas.out.empty()) << tool;
+    EXPECT_EQ(commas.out, repeated.out) << tool;
+    test::expect_one_error_line(run_command(base + " --exact-time --time 3000"), "no dump at that time");
+  }
+  // A picture shows one dump: a list is refused by name.
+  test::expect_one_error_line(
+      run_command(bin("coolgas-snapshot") + " " + run() + " --time 10,1000 -o " + *dir + "/two.png"),
+      "give one --time");
+}
+
+// A file named by -o that exists is replaced only with --force, in every
+// program that writes one (coolgas-simulate, coolgas-snapshot).
+TEST_F(TimeConventions, AnExistingOutputIsReplacedOnlyWithForce) {
+  const std::string png = *dir + "/exists.png";
+  std::ofstream(png) << "old";
+  const std::string snap = bin("coolgas-snapshot") + " " + run() + " --time 1000 -o " + png;
+  test::expect_one_error_line(run_command(snap), "--force");
+  EXPECT_EQ(run_command(snap + " --force").exit_code, 0);
+  const std::string sim = test::simulate("--set system.N=200 --set system.phi=0.1 --set run.t_end=1 -o " + png + " /dev/null");
+  test::expect_one_error_line(run_command(sim), "--force");
 }
 
 // --min-count 1e6 leaves no tail bin in any dump of 2000 particles: every
