@@ -13,6 +13,7 @@
 #include <variant>
 #include <vector>
 
+#include "common/limits.h"
 #include "common/tsv.h"
 
 namespace coolgas {
@@ -69,7 +70,7 @@ RunParameters read_parameters(hid_t group, const std::string& path);
 RunParameters read_file_parameters(hid_t file, const std::string& path);
 
 // The most particles a trajectory holds: particle ids are 32-bit integers.
-inline constexpr std::int64_t kMaxStoredParticles = 2147483647;
+inline constexpr std::int64_t kMaxStoredParticles = kMaxIndex32;
 
 // The first field of role kPhysics in which a and b differ, e.g.
 // "L = 32 vs 48" or "viscoelastic_b = 0.1 vs 0.9"; nothing if none does.

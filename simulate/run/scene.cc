@@ -118,11 +118,11 @@ const std::vector<SceneKey>& scene_keys() {
        [](Scene& s, const SceneValue& v) { s.t_end = std::get<double>(v); },
        [](const Scene& s) { return toml_float(s.t_end); }},
       {"output.observables_per_decade", KeyType::kInteger, KeyNeed::kDefault, "observables recorded per decade of time",
-       1, 2147483647, false, false, {}, {}, {},
+       1, double(kMaxIndex32), false, false, {}, {}, {},
        [](Scene& s, const SceneValue& v) { s.observables_per_decade = int(std::get<std::int64_t>(v)); },
        [](const Scene& s) { return std::to_string(s.observables_per_decade); }},
       {"output.dumps_per_decade", KeyType::kInteger, KeyNeed::kDefault, "trajectory dumps per decade of time", 1,
-       2147483647, false, false, {}, {}, {},
+       double(kMaxIndex32), false, false, {}, {}, {},
        [](Scene& s, const SceneValue& v) { s.dumps_per_decade = int(std::get<std::int64_t>(v)); },
        [](const Scene& s) { return std::to_string(s.dumps_per_decade); }},
       {"output.t_min", KeyType::kFloat, KeyNeed::kDefault, "first time of the log-spaced grids", 0, kInf, true, false,
@@ -385,10 +385,11 @@ void check_scene_cost(const Scene& s, double memory_bytes) {
     throw InputError("a box of side L = " + format_number(s.L) + " needs a cell grid of " + about(cells) +
                      " cells of one diameter" +
                      (std::isfinite(cells) ? " (" + bytes_text(cells * kBytesPerCell) + ")" : "") +
-                     "; the limit is 2^31 cells (L < 1290; raise phi or N)");
+                     "; the limit is 2^31 cells (L < " + std::to_string(max_grid_side() + 1) + "; raise phi or N)");
   if (bytes > memory_bytes)
     throw InputError("the scene needs about " + bytes_text(bytes) + " of memory (" + format_number(n) +
-                     " particles, 180 B each, and " + about(cells) + " grid cells, 20 B each); this machine has " +
+                     " particles, " + format_number(kBytesPerParticle) + " B each, and " + about(cells) +
+                     " grid cells, " + format_number(kBytesPerCell) + " B each); this machine has " +
                      bytes_text(memory_bytes));
   const double equilibration = n * s.equilibrate / 2;
   if (equilibration > kMaxEquilibrationCollisions)

@@ -4,6 +4,8 @@
 // writes the effective scene back as TOML.
 #pragma once
 #include <cstdint>
+
+#include "common/limits.h"
 #include <optional>
 #include <string>
 #include <variant>
@@ -113,8 +115,8 @@ Scene parse_scene(const std::string& toml_text, const std::string& source, const
 // read at run time.
 inline constexpr double kBytesPerParticle = 180;  // engine, measured (README, Performance)
 inline constexpr double kBytesPerCell = 20;       // the gas engine's grid of L^3 cells, measured
-inline constexpr double kMaxCells = 2147483647;   // cell indices are 32-bit
-inline constexpr double kMaxParticles = 2147483647;  // particle ids are 32-bit
+inline constexpr double kMaxCells = kMaxIndex32;      // cell indices are 32-bit
+inline constexpr double kMaxParticles = kMaxIndex32;  // particle ids are 32-bit
 inline constexpr double kMaxEquilibrationCollisions = 1e12;  // about 3 weeks at 5e5 collisions/s
 inline constexpr double kMaxObservableRows = 1e5;
 inline constexpr double kMaxDumps = 1e4;

@@ -1,5 +1,7 @@
 #include "simulate/start/configuration_check.h"
 
+#include "common/limits.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -52,8 +54,9 @@ void check_box(double L, double width, const std::string& source) {
   if (!std::isfinite(L)) refuse(source, "box side L = " + format_number(L) + " is not a finite number");
   const std::string small = check_box_fits_grid(L, width);
   if (!small.empty()) refuse(source, small);
-  if (std::pow(std::floor(L), 3) > 2147483647.0)
-    refuse(source, "box side L = " + format_number(L) + " needs more than 2^31 grid cells; the limit is L < 1290");
+  if (std::pow(std::floor(L), 3) > double(kMaxIndex32))
+    refuse(source, "box side L = " + format_number(L) + " needs more than 2^31 grid cells; the limit is L < " +
+                       std::to_string(max_grid_side() + 1));
 }
 
 void check_values(const Spheres& s, const std::string& source) {
