@@ -487,14 +487,6 @@ std::int64_t read_attr_int(hid_t obj, const std::string& name) {
   return v;
 }
 
-std::vector<std::int32_t> read_attr_ints(hid_t obj, const std::string& name) {
-  Handle a = open_attr(obj, name);
-  Handle space(check(H5Aget_space(a.id()), "attribute space"));
-  std::vector<std::int32_t> v(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space.id())));
-  check_status(H5Aread(a.id(), H5T_NATIVE_INT32, v.data()), "read attribute '" + name + "'");
-  return v;
-}
-
 std::vector<hsize_t> shape(hid_t dataset) {
   Handle space(check(H5Dget_space(dataset), "dataspace"));
   const int rank = H5Sget_simple_extent_ndims(space.id());

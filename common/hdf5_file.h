@@ -109,7 +109,6 @@ H5T_class_t attr_class(hid_t obj, const std::string& name);  // H5T_INTEGER, H5T
 std::string read_attr_string(hid_t obj, const std::string& name);
 double read_attr_double(hid_t obj, const std::string& name);
 std::int64_t read_attr_int(hid_t obj, const std::string& name);
-std::vector<std::int32_t> read_attr_ints(hid_t obj, const std::string& name);
 // A string or an array of strings, variable or fixed length (as other programs write them).
 std::vector<std::string> read_attr_strings(hid_t obj, const std::string& name);
 // The object at `path` is a group (an H5MD element that varies in time), not a dataset.

@@ -1,5 +1,5 @@
 // coolgas-smoluchowski: mean-field N(m,t) from the Smoluchowski equation.
-// All logic lives in coolgas_analyze (analyze/smoluchowski_*.h).
+// All logic lives in the library of this folder (analyze/smoluchowski/).
 #include <iostream>
 
 #include "analyze/smoluchowski/cli.h"

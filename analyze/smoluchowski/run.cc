@@ -22,7 +22,6 @@ Convention parse_convention(const std::string& name) {
   throw InputError("time convention '" + name + "' is not known; use half (½ on the gain term) or paper (Eq. 3)");
 }
 
-std::string convention_name(Convention c) { return c == Convention::Paper ? "paper" : "half"; }
 
 namespace {
 

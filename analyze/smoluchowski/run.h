@@ -23,7 +23,6 @@ namespace coolgas::smoluchowski {
 enum class Convention { HalfGain, Paper };
 
 Convention parse_convention(const std::string& name);  // "half" or "paper"
-std::string convention_name(Convention c);
 
 struct RunOptions {
   std::string kernel = "ballistic";

@@ -9,7 +9,7 @@
 // To read another per-particle element, add a Field bit, a buffer in Frame
 // and a row in the element table of frame_reader.cc.
 //
-// Ballistic aggregation files (schema version 2, model "aggregation") keep N
+// Ballistic aggregation files (model "aggregation", schema version 2 or 3) keep N
 // slots per dump and mark empty ones with id -1 (H5MD's convention for a
 // varying number of particles). A Trajectory of such a file always reads id
 // and mass too and hands out only the aggregates present: the arrays of a

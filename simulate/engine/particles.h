@@ -36,9 +36,8 @@ struct Particles {
   }
 };
 
-// Kinetic energy per particle, Σ ½ v² / N (unit masses), and total momentum,
-// summed in id order with compensation (common/compensated_sum.h).
-double kinetic_energy_per_particle(const Particles& p);
+// Total momentum (unit masses), summed in id order with compensation
+// (common/compensated_sum.h).
 Vec3 total_momentum(const Particles& p);
 
 }  // namespace coolgas

@@ -9,11 +9,6 @@ namespace coolgas {
 // Carnahan–Starling pair correlation at contact, g(σ) = (1 − φ/2) / (1 − φ)³.
 inline double contact_value(double phi) { return (1.0 - 0.5 * phi) / std::pow(1.0 - phi, 3); }
 
-// Enskog collision frequency per particle at number density n and temperature T (σ = m = 1).
-inline double enskog_collision_frequency(double n, double phi, double T) {
-  return 4.0 * n * contact_value(phi) * std::sqrt(M_PI * T);
-}
-
 // The temperature at which ω = 1, i.e. the mean collision time is the time unit:
 // T0 = 1 / (π (4 n g(σ))²).
 inline double unit_time_temperature(double n, double phi) {
