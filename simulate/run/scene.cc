@@ -33,6 +33,10 @@ std::string toml_string(const std::string& x) { return "\"" + x + "\""; }
 
 const char* const kInitNames[] = {"random", "fcc", "file"};
 const char* const kModelNames[] = {"elastic", "inelastic", "viscoelastic", "aggregation"};
+static_assert(std::size(kModelNames) == std::size_t(CollisionModel::kAggregation) + 1,
+              "kModelNames lists the CollisionModel values in their order");
+static_assert(std::size(kInitNames) == std::size_t(InitialPositions::kFile) + 1,
+              "kInitNames lists the InitialPositions values in their order");
 
 // Index of `value` among the key's choices (already checked to be one).
 template <class Enum>
@@ -47,97 +51,105 @@ const SceneKey& key_row(const char* name);
 // Order matters: to_toml() writes the tables and keys in this order.
 const std::vector<SceneKey>& scene_keys() {
   static const std::vector<SceneKey> keys = {
-      {"system.N", KeyType::kInteger, KeyNeed::kSize, "number of particles; give two of N, L, phi", 2, kInf, false,
-       false, {}, {}, {},
-       [](Scene& s, const SceneValue& v) { s.N = std::get<std::int64_t>(v); },
-       [](const Scene& s) { return std::to_string(s.N); }},
-      {"system.L", KeyType::kFloat, KeyNeed::kSize, "box side, in particle diameters", 0, kInf, true, false, {}, {}, {},
-       [](Scene& s, const SceneValue& v) { s.L = std::get<double>(v); },
-       [](const Scene& s) { return toml_float(s.L); }},
-      {"system.phi", KeyType::kFloat, KeyNeed::kSize,
-       "volume fraction N*pi/(6 L^3); at most 0.36 for init = \"random\", 0.7404 for \"fcc\"", 0, kMaxFccPhi, true,
-       false, {}, {}, {},
-       [](Scene& s, const SceneValue& v) { s.phi = std::get<double>(v); },
-       [](const Scene& s) { return toml_float(s.phi); }},
-      {"system.seed", KeyType::kInteger, KeyNeed::kDefault, "random seed for initial positions and velocities", -kInf,
-       kInf, false, false, {}, {}, {},
-       [](Scene& s, const SceneValue& v) { s.seed = std::get<std::int64_t>(v); },
-       [](const Scene& s) { return std::to_string(s.seed); }},
-      {"system.init", KeyType::kString, KeyNeed::kDefault,
-       "initial positions: \"random\" (random sequential addition), \"fcc\", or \"file\" (a frame of "
-       "system.from; N, L and phi then come from the file)", 0, 0, false, false,
-       {std::begin(kInitNames), std::end(kInitNames)}, {}, {},
-       [](Scene& s, const SceneValue& v) { s.init = choice<InitialPositions>(key_row("system.init"), v); },
-       [](const Scene& s) { return toml_string(kInitNames[int(s.init)]); }},
-      {"system.equilibrate", KeyType::kFloat, KeyNeed::kDefault,
-       "elastic collision times run before t = 0 so the positions form an equilibrium fluid, then velocities "
-       "are drawn afresh (0 starts from the raw packing)", 0, kInf, false, false, {}, {}, {I::kRandom, I::kFcc},
-       [](Scene& s, const SceneValue& v) { s.equilibrate = std::get<double>(v); },
-       [](const Scene& s) { return toml_float(s.equilibrate); }},
-      {"system.from", KeyType::kString, KeyNeed::kRequired,
-       "the file to start from, relative to the working directory: a coolgas trajectory, an H5MD 1.1 file of "
-       "another program (particles/<group>/position, box/edges) or an extended XYZ file; velocities from the "
-       "file, else drawn at T0 with system.seed", 0, 0, false, false, {}, {}, {I::kFile},
-       [](Scene& s, const SceneValue& v) { s.from = std::get<std::string>(v); },
-       [](const Scene& s) { return toml_string(s.from); }},
-      {"system.from_time", KeyType::kFloat, KeyNeed::kOptional,
-       "start from the file's frame nearest this time (its own time unit); absent: the last frame", 0, kInf, false,
-       false, {}, {}, {I::kFile},
-       [](Scene& s, const SceneValue& v) { s.from_time = std::get<double>(v); },
-       [](const Scene& s) { return s.from_time ? toml_float(*s.from_time) : std::string(); }},
-      {"system.T0", KeyType::kFloat, KeyNeed::kOptional,
-       "temperature per velocity component that sets the time unit 1/omega0; absent: a coolgas file's own T0 (or "
-       "the T0= of an XYZ comment line), else the Enskog value of the file's density as for a fresh start", 0, kInf,
-       true, false, {}, {}, {I::kFile},
-       [](Scene& s, const SceneValue& v) { s.T0 = std::get<double>(v); },
-       [](const Scene& s) { return s.T0 > 0 ? toml_float(s.T0) : std::string(); }},
-      {"collision.model", KeyType::kString, KeyNeed::kDefault,
-       "\"elastic\", \"inelastic\" (paper Eq. 1 with the delta cut-off), \"viscoelastic\" (restitution "
-       "rising to 1 as the impact speed falls; see collision.viscoelastic_b) or \"aggregation\" (ballistic "
-       "aggregation: spheres that touch merge, volumes add, momentum conserved)", 0, 0, false, false,
-       {std::begin(kModelNames), std::end(kModelNames)}, {}, {},
-       [](Scene& s, const SceneValue& v) { s.model = choice<CollisionModel>(key_row("collision.model"), v); },
-       [](const Scene& s) { return toml_string(s.model_name()); }},
-      {"collision.r0", KeyType::kFloat, KeyNeed::kDefault, "coefficient of restitution", 0, 1, true, false, {},
-       {M::kInelastic}, {},
-       [](Scene& s, const SceneValue& v) { s.r0 = std::get<double>(v); },
-       [](const Scene& s) { return toml_float(s.r0); }},
-      {"collision.viscoelastic_b", KeyType::kFloat, KeyNeed::kRequired,
-       "viscoelastic material constant b = A alpha^{2/5} (Schwager & Poeschel 1998), in units of "
-       "(diameter per initial collision time)^(-1/5): r = 1 - 1.15344 b v^(1/5) + 0.79826 b^2 v^(2/5) - ... for "
-       "normal impact speed v", 0, kInf, true, false, {}, {M::kViscoelastic}, {},
-       [](Scene& s, const SceneValue& v) { s.viscoelastic_b = std::get<double>(v); },
-       [](const Scene& s) { return toml_float(s.viscoelastic_b); }},
-      {"collision.delta", KeyType::kFloat, KeyNeed::kDefault,
-       "cut-off: collisions with normal relative speed below delta are elastic, in units of diameter per "
-       "initial collision time (the paper uses 1e-4)", 0, kInf, false, false, {}, {M::kInelastic, M::kViscoelastic}, {},
-       [](Scene& s, const SceneValue& v) { s.delta = std::get<double>(v); },
-       [](const Scene& s) { return toml_float(s.delta); }},
-      {"run.t_end", KeyType::kFloat, KeyNeed::kRequired, "simulated time to stop at, in initial mean collision times",
-       0, kInf, true, false, {}, {}, {},
-       [](Scene& s, const SceneValue& v) { s.t_end = std::get<double>(v); },
-       [](const Scene& s) { return toml_float(s.t_end); }},
-      {"output.observables_per_decade", KeyType::kInteger, KeyNeed::kDefault, "observables recorded per decade of time",
-       1, double(kMaxIndex32), false, false, {}, {}, {},
-       [](Scene& s, const SceneValue& v) { s.observables_per_decade = int(std::get<std::int64_t>(v)); },
-       [](const Scene& s) { return std::to_string(s.observables_per_decade); }},
-      {"output.dumps_per_decade", KeyType::kInteger, KeyNeed::kDefault, "trajectory dumps per decade of time", 1,
-       double(kMaxIndex32), false, false, {}, {}, {},
-       [](Scene& s, const SceneValue& v) { s.dumps_per_decade = int(std::get<std::int64_t>(v)); },
-       [](const Scene& s) { return std::to_string(s.dumps_per_decade); }},
-      {"output.t_min", KeyType::kFloat, KeyNeed::kDefault, "first time of the log-spaced grids", 0, kInf, true, false,
-       {}, {}, {},
-       [](Scene& s, const SceneValue& v) { s.t_min = std::get<double>(v); },
-       [](const Scene& s) { return toml_float(s.t_min); }},
-      {"output.dump_times", KeyType::kFloatArray, KeyNeed::kDefault, "extra dump times, e.g. [5, 10, 2000]", 0, kInf,
-       false, false, {}, {}, {},
-       [](Scene& s, const SceneValue& v) { s.dump_times = std::get<std::vector<double>>(v); },
-       [](const Scene& s) {
-         std::string t = "[";
-         for (std::size_t i = 0; i < s.dump_times.size(); ++i) t += (i ? ", " : "") + toml_float(s.dump_times[i]);
-         return t + "]";
-       }},
+      {.key = "system.N", .type = KeyType::kInteger, .need = KeyNeed::kSize,
+       .help = "number of particles; give two of N, L, phi", .lo = 2,
+       .set = [](Scene& s, const SceneValue& v) { s.N = std::get<std::int64_t>(v); },
+       .toml = [](const Scene& s) { return std::to_string(s.N); }},
+      {.key = "system.L", .type = KeyType::kFloat, .need = KeyNeed::kSize, .help = "box side, in particle diameters",
+       .lo = 0, .lo_open = true,
+       .set = [](Scene& s, const SceneValue& v) { s.L = std::get<double>(v); },
+       .toml = [](const Scene& s) { return toml_float(s.L); }},
+      {.key = "system.phi", .type = KeyType::kFloat, .need = KeyNeed::kSize,
+       .help = "volume fraction N*pi/(6 L^3); at most 0.36 for init = \"random\", 0.7404 for \"fcc\"",
+       .lo = 0, .hi = kMaxFccPhi, .lo_open = true,
+       .set = [](Scene& s, const SceneValue& v) { s.phi = std::get<double>(v); },
+       .toml = [](const Scene& s) { return toml_float(s.phi); }},
+      {.key = "system.seed", .type = KeyType::kInteger, .need = KeyNeed::kDefault,
+       .help = "random seed for initial positions and velocities",
+       .set = [](Scene& s, const SceneValue& v) { s.seed = std::get<std::int64_t>(v); },
+       .toml = [](const Scene& s) { return std::to_string(s.seed); }},
+      {.key = "system.init", .type = KeyType::kString, .need = KeyNeed::kDefault,
+       .help = "initial positions: \"random\" (random sequential addition), \"fcc\", or \"file\" (a frame of "
+               "system.from; N, L and phi then come from the file)",
+       .choices = {std::begin(kInitNames), std::end(kInitNames)},
+       .set = [](Scene& s, const SceneValue& v) { s.init = choice<InitialPositions>(key_row("system.init"), v); },
+       .toml = [](const Scene& s) { return toml_string(kInitNames[int(s.init)]); }},
+      {.key = "system.equilibrate", .type = KeyType::kFloat, .need = KeyNeed::kDefault,
+       .help = "elastic collision times run before t = 0 so the positions form an equilibrium fluid, then "
+               "velocities are drawn afresh (0 starts from the raw packing)",
+       .lo = 0, .inits = {I::kRandom, I::kFcc},
+       .set = [](Scene& s, const SceneValue& v) { s.equilibrate = std::get<double>(v); },
+       .toml = [](const Scene& s) { return toml_float(s.equilibrate); }},
+      {.key = "system.from", .type = KeyType::kString, .need = KeyNeed::kRequired,
+       .help = "the file to start from, relative to the working directory: a coolgas trajectory, an H5MD 1.1 file "
+               "of another program (particles/<group>/position, box/edges) or an extended XYZ file; velocities "
+               "from the file, else drawn at T0 with system.seed",
+       .inits = {I::kFile},
+       .set = [](Scene& s, const SceneValue& v) { s.from = std::get<std::string>(v); },
+       .toml = [](const Scene& s) { return toml_string(s.from); }},
+      {.key = "system.from_time", .type = KeyType::kFloat, .need = KeyNeed::kOptional,
+       .help = "start from the file's frame nearest this time (its own time unit); absent: the last frame",
+       .lo = 0, .inits = {I::kFile},
+       .set = [](Scene& s, const SceneValue& v) { s.from_time = std::get<double>(v); },
+       .toml = [](const Scene& s) { return s.from_time ? toml_float(*s.from_time) : std::string(); }},
+      {.key = "system.T0", .type = KeyType::kFloat, .need = KeyNeed::kOptional,
+       .help = "temperature per velocity component that sets the time unit 1/omega0; absent: a coolgas file's own "
+               "T0 (or the T0= of an XYZ comment line), else the Enskog value of the file's density as for a "
+               "fresh start",
+       .lo = 0, .lo_open = true, .inits = {I::kFile},
+       .set = [](Scene& s, const SceneValue& v) { s.T0 = std::get<double>(v); },
+       .toml = [](const Scene& s) { return s.T0 > 0 ? toml_float(s.T0) : std::string(); }},
+      {.key = "collision.model", .type = KeyType::kString, .need = KeyNeed::kDefault,
+       .help = "\"elastic\", \"inelastic\" (paper Eq. 1 with the delta cut-off), \"viscoelastic\" (restitution "
+               "rising to 1 as the impact speed falls; see collision.viscoelastic_b) or \"aggregation\" (ballistic "
+               "aggregation: spheres that touch merge, volumes add, momentum conserved)",
+       .choices = {std::begin(kModelNames), std::end(kModelNames)},
+       .set = [](Scene& s, const SceneValue& v) { s.model = choice<CollisionModel>(key_row("collision.model"), v); },
+       .toml = [](const Scene& s) { return toml_string(s.model_name()); }},
+      {.key = "collision.r0", .type = KeyType::kFloat, .need = KeyNeed::kDefault, .help = "coefficient of restitution",
+       .lo = 0, .hi = 1, .lo_open = true, .models = {M::kInelastic},
+       .set = [](Scene& s, const SceneValue& v) { s.r0 = std::get<double>(v); },
+       .toml = [](const Scene& s) { return toml_float(s.r0); }},
+      {.key = "collision.viscoelastic_b", .type = KeyType::kFloat, .need = KeyNeed::kRequired,
+       .help = "viscoelastic material constant b = A alpha^{2/5} (Schwager & Poeschel 1998), in units of "
+               "(diameter per initial collision time)^(-1/5): r = 1 - 1.15344 b v^(1/5) + 0.79826 b^2 v^(2/5) - ... "
+               "for normal impact speed v",
+       .lo = 0, .lo_open = true, .models = {M::kViscoelastic},
+       .set = [](Scene& s, const SceneValue& v) { s.viscoelastic_b = std::get<double>(v); },
+       .toml = [](const Scene& s) { return toml_float(s.viscoelastic_b); }},
+      {.key = "collision.delta", .type = KeyType::kFloat, .need = KeyNeed::kDefault,
+       .help = "cut-off: collisions with normal relative speed below delta are elastic, in units of diameter per "
+               "initial collision time (the paper uses 1e-4)",
+       .lo = 0, .models = {M::kInelastic, M::kViscoelastic},
+       .set = [](Scene& s, const SceneValue& v) { s.delta = std::get<double>(v); },
+       .toml = [](const Scene& s) { return toml_float(s.delta); }},
+      {.key = "run.t_end", .type = KeyType::kFloat, .need = KeyNeed::kRequired,
+       .help = "simulated time to stop at, in initial mean collision times", .lo = 0, .lo_open = true,
+       .set = [](Scene& s, const SceneValue& v) { s.t_end = std::get<double>(v); },
+       .toml = [](const Scene& s) { return toml_float(s.t_end); }},
+      {.key = "output.observables_per_decade", .type = KeyType::kInteger, .need = KeyNeed::kDefault,
+       .help = "observables recorded per decade of time", .lo = 1, .hi = double(kMaxIndex32),
+       .set = [](Scene& s, const SceneValue& v) { s.observables_per_decade = int(std::get<std::int64_t>(v)); },
+       .toml = [](const Scene& s) { return std::to_string(s.observables_per_decade); }},
+      {.key = "output.dumps_per_decade", .type = KeyType::kInteger, .need = KeyNeed::kDefault,
+       .help = "trajectory dumps per decade of time", .lo = 1, .hi = double(kMaxIndex32),
+       .set = [](Scene& s, const SceneValue& v) { s.dumps_per_decade = int(std::get<std::int64_t>(v)); },
+       .toml = [](const Scene& s) { return std::to_string(s.dumps_per_decade); }},
+      {.key = "output.t_min", .type = KeyType::kFloat, .need = KeyNeed::kDefault,
+       .help = "first time of the log-spaced grids", .lo = 0, .lo_open = true,
+       .set = [](Scene& s, const SceneValue& v) { s.t_min = std::get<double>(v); },
+       .toml = [](const Scene& s) { return toml_float(s.t_min); }},
+      {.key = "output.dump_times", .type = KeyType::kFloatArray, .need = KeyNeed::kDefault,
+       .help = "extra dump times, e.g. [5, 10, 2000]", .lo = 0,
+       .set = [](Scene& s, const SceneValue& v) { s.dump_times = std::get<std::vector<double>>(v); },
+       .toml =
+           [](const Scene& s) {
+             std::string t = "[";
+             for (std::size_t i = 0; i < s.dump_times.size(); ++i) t += (i ? ", " : "") + toml_float(s.dump_times[i]);
+             return t + "]";
+           }},
   };
+
   return keys;
 }
 

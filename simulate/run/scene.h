@@ -4,6 +4,7 @@
 // writes the effective scene back as TOML.
 #pragma once
 #include <cstdint>
+#include <limits>
 
 #include "common/limits.h"
 #include <optional>
@@ -69,22 +70,24 @@ using SceneValue = std::variant<std::int64_t, double, std::string, std::vector<d
 // kOptional: no default, its absence has a meaning (the help says which).
 enum class KeyNeed { kDefault, kRequired, kSize, kOptional };
 
+// Rows are written with designated initializers; a field a row leaves out
+// takes the default here.
 struct SceneKey {
-  const char* key;   // "table.name"
-  KeyType type;
-  KeyNeed need;
-  const char* help;  // meaning and units; --help adds the range and the default
+  const char* key = "";  // "table.name"
+  KeyType type = KeyType::kFloat;
+  KeyNeed need = KeyNeed::kDefault;
+  const char* help = "";  // meaning and units; --help adds the range and the default
   // Numbers (each element of an array): lo <= x <= hi, strict where *_open;
   // infinite bounds mean none, and every number must be finite.
-  double lo, hi;
-  bool lo_open, hi_open;
-  std::vector<std::string> choices;  // strings: the allowed values
+  double lo = -std::numeric_limits<double>::infinity(), hi = std::numeric_limits<double>::infinity();
+  bool lo_open = false, hi_open = false;
+  std::vector<std::string> choices = {};  // strings: the allowed values
   // Models that use the key (collision.* keys; empty: every model).
-  std::vector<CollisionModel> models;
+  std::vector<CollisionModel> models = {};
   // Starts that use the key (system.init; empty: every start).
-  std::vector<InitialPositions> inits;
-  void (*set)(Scene&, const SceneValue&);
-  std::string (*toml)(const Scene&);  // the member as a TOML value ("" for an absent kOptional key)
+  std::vector<InitialPositions> inits = {};
+  void (*set)(Scene&, const SceneValue&) = nullptr;
+  std::string (*toml)(const Scene&) = nullptr;  // the member as a TOML value ("" for an absent kOptional key)
 };
 const std::vector<SceneKey>& scene_keys();
 
