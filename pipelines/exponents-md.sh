@@ -2,7 +2,7 @@
 # exponents-md.sh EXPONENTS_TSV SCALE
 # The exponent table (pipelines/exponents.sh) as Markdown, headed by the
 # scale, the versions (commits) that made the runs and the analysis, and the
-# date it was measured; the README's tables are copies made by
+# date it was measured; the tables of docs/validation.md are copies made by
 # pipelines/readme-table.sh.
 set -e
 tsv=$1

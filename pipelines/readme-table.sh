@@ -1,11 +1,12 @@
 #!/bin/sh
-# readme-table.sh EXPONENTS_MD README [NAME]
-# Puts a pipeline's exponent table (OUT/exponents.md) into README between
+# readme-table.sh EXPONENTS_MD DOCUMENT [NAME]
+# Puts a pipeline's exponent table (OUT/exponents.md) into DOCUMENT between
 # the lines '<!-- NAME:begin -->' and '<!-- NAME:end -->' (NAME defaults to
-# 'exponents', the demo's table), so the README's numbers are always a
-# pipeline's output, never typed by hand:
-#   sh pipelines/readme-table.sh out/demo/exponents.md README.md
-#   sh pipelines/readme-table.sh out/workstation/exponents.md README.md exponents-workstation
+# 'exponents', the demo's table), so the documented numbers are always a
+# pipeline's output, never typed by hand. The tables live in
+# docs/validation.md:
+#   sh pipelines/readme-table.sh out/demo/exponents.md docs/validation.md
+#   sh pipelines/readme-table.sh out/workstation/exponents.md docs/validation.md exponents-workstation
 set -e
 table=$1
 readme=$2

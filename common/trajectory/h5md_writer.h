@@ -69,7 +69,7 @@ struct FrameView {
 // and the aggregation fields) are stored: chunks of one dump's
 // `particles_per_chunk` particles through shuffle + deflate at
 // `deflate_level`, lossless (0: uncompressed, as coolgas wrote before).
-// The defaults were chosen by measurement (tests/bench/README.md, "Dump size
+// The defaults were chosen by measurement (tests/bench/history.md, "Dump size
 // and write cost"): 32768 particles keep a chunk below HDF5's 1 MB chunk
 // cache, so a reader that reads part of a dump inflates each chunk once.
 // A chunk holds part of one dump only and is written once, whole, in that

@@ -16,10 +16,9 @@ namespace {
 // the grid is rebuilt (about one aggregate per cell, 27 candidates per
 // search); the grid is rebuilt, wider, once aggregates are
 // AggregationEngine::kCellsPerAggregateLimit times fewer than cells. The
-// large aggregates are indexed in blocks of kBlock³ fine cells. Measured on
-// W3 at N = 2e5 (tests/bench/aggregation_bench.cc) with a first version of
-// the index, CPU seconds with set-up on a loaded machine: spacing factor
-// 1.0, 1.2, 1.4: 6.6, 6.6, 7.9; limit 4 or 8: 6.6, 6.7.
+// large aggregates are indexed in blocks of kBlock³ fine cells. The factor
+// and the limit are the fastest of those tried on W3
+// (tests/bench/history.md, "Constants chosen by measurement").
 constexpr double kSpacingFactor = 1.0;
 constexpr int kBlock = 2;
 // The grid's and the large index's list links live in the motion records

@@ -21,10 +21,9 @@ constexpr int kAroundLo[3] = {-1, -1, -1}, kAroundHi[3] = {1, 1, 1};
 constexpr double kStallGap = 1e-11;
 // Rebuilds are due every this many collisions per particle (see engine.h):
 // they renew the Morton order, whose locality decays as particles wander,
-// and cost about one partner search per particle. Measured on W1 (N =
-// 108000, 60 collisions per particle, per-CPU rate, 5 interleaved pairs):
-// every 20 costs 3 % there, where locality has not yet decayed much; every
-// 200 keeps long runs sorted for a tenth of that.
+// and cost about one partner search per particle. Every 200 keeps long runs
+// sorted for a small fraction of the rate that frequent rebuilds cost
+// (tests/bench/history.md, "Constants chosen by measurement").
 constexpr std::int64_t kCollisionsPerParticlePerRebuild = 200;
 
 // Cells one diameter wide, except in a dilute gas, where they would be more
@@ -32,11 +31,9 @@ constexpr std::int64_t kCollisionsPerParticlePerRebuild = 200;
 // they are L^3 = pi N / (6 phi), 105 per particle (3.3 GB of cell heads for
 // N = 8e6), and a particle crosses ~20 of them per free flight, each crossing
 // an event. There the cells are one mean spacing wide (one particle per cell
-// on average, as in the aggregation engine). Measured with coolgas-simulate,
-// elastic, N = 2e5, CPU seconds: phi = 0.005 to t = 5, 18.3 s at 16 cells per
-// particle, 12.1 at 4, 8.3 at 1, 10.5 at 1/2; phi = 0.03 to t = 3, 4.9 s with
-// one-diameter cells, 3.3 at 1. Denser gases keep one-diameter cells, and
-// with them their runs bit for bit.
+// on average, as in the aggregation engine), which was the fastest width
+// tried (tests/bench/history.md, "Constants chosen by measurement"). Denser
+// gases keep one-diameter cells, and with them their runs bit for bit.
 constexpr double kDiluteCellsPerParticle = 16;
 
 double cell_width(double L, std::size_t n) {

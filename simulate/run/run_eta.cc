@@ -10,7 +10,7 @@ namespace coolgas {
 namespace {
 
 // The rule's constants, chosen on the replayed C(t) of the demo's 46
-// (run, t_end) cases (tests/bench/README.md, "ETA") and then checked on runs
+// (run, t_end) cases (tests/bench/history.md, "ETA") and then checked on runs
 // not used to choose them (other seeds, sizes, phi, r0 and delta; and gases
 // with r0 = 0.7 and 0.9, which stay homogeneous for long).
 constexpr double kFitWindow = 3;  // the exponent is fitted over t/3 .. t
@@ -30,14 +30,14 @@ constexpr double kClusteringLow = 0.3, kClusteringHigh = 0.9;
 constexpr double kKnee = 0.5;  // the finite-size regime, from t = kKnee L^(5/2) on,
 // where C grows at most as t^b, b = kTail (t / t_knee)^-kTailFall: the
 // demo's gases fall from 0.25-0.3 at x = t/L^(5/2) = 2 to 0.1-0.13 at x = 10
-// (tests/bench/README.md, "ETA").
+// (tests/bench/history.md, "ETA").
 constexpr double kTail = 0.35;
 constexpr double kTailFall = 0.35;
 constexpr int kStepsPerUnit = 64;  // the tail's integral: midpoints per unit of ln t
 constexpr double kLogSpacing = 1.01;
 // The crossings' floor moves with phi as the collisions' does (0.08 per 0.1
 // of phi). The crossings' exponent over t = 1e2-1e4, r0 = 0.1, delta = 1e-4,
-// logged from the engine's counters (tests/bench/README.md, "ETA"): 0.42-0.43
+// logged from the engine's counters (tests/bench/history.md, "ETA"): 0.42-0.43
 // at phi = 0.208 (L = 48), 0.39-0.40 at 0.156 (L = 70), 0.34-0.38 at 0.104
 // (L = 80), 0.29-0.31 at 0.052 (L = 100); the rule gives 0.40, 0.36, 0.32, 0.28.
 constexpr double kCrossingPaper = 0.4;  // 1 - theta/2, theta = 6/5, at phi = 0.208
@@ -202,7 +202,7 @@ double RunEta::rate_of(Count count) const {
   // aggregates left now: a window with a grid rebuild in it then spans the
   // rebuild's whole period, not just the rebuild (the ETA check's BA run,
   // N = 6.9e5, spends about 1 of its 14 engine seconds in the rebuild at
-  // n = N/4; tests/bench/README.md, "ETA").
+  // n = N/4; tests/bench/history.md, "ETA").
   const double from = (1 - kRateWindow) * b.busy_seconds;
   const double left = aggregates_ - b.collisions;
   const RunSample* by_time = &samples_.front();

@@ -8,7 +8,7 @@
 // cost about the same (measured: 1.0-1.4e6 events per busy second before and
 // after a dilute gas clusters, while its collisions per second double), and
 // crossings, which follow the temperature, grow more slowly than the
-// collisions inside clusters (tests/bench/README.md, "ETA").
+// collisions inside clusters (tests/bench/history.md, "ETA").
 //
 // The collisions still expected come from the run so far. The local exponent
 // a of the cumulative collisions C(t) (the slope of ln C on ln t, fitted over
@@ -37,7 +37,7 @@
 // does the cost of a dump (OutputCost).
 //
 // Measured by replaying finished runs (tests/bench/eta_replay.cc) and live
-// with tests/bench/eta_check.py (tests/bench/README.md, "ETA").
+// with tests/bench/eta_check.py (tests/bench/history.md, "ETA").
 // tests/unit/simulate/run/run_eta_test.cc checks the rule on closed forms.
 #pragma once
 #include <cmath>

@@ -116,7 +116,7 @@ Scene parse_scene(const std::string& toml_text, const std::string& source, const
 
 // The most the scene may cost (check_scene_cost); the machine's memory is
 // read at run time.
-inline constexpr double kBytesPerParticle = 180;  // engine, measured (README, Performance)
+inline constexpr double kBytesPerParticle = 180;  // engine, measured (tests/bench/README.md)
 inline constexpr double kBytesPerCell = 20;       // the gas engine's grid of L^3 cells, measured
 inline constexpr double kMaxCells = kMaxIndex32;      // cell indices are 32-bit
 inline constexpr double kMaxParticles = kMaxIndex32;  // particle ids are 32-bit

@@ -45,7 +45,7 @@ constexpr std::int64_t kEventsPerSlice = 1 << 20;
 // Wall-clock seconds between periodic checkpoints (what a SIGKILL can cost
 // at most); COOLGAS_CHECKPOINT_INTERVAL overrides it. A checkpoint of
 // 10^5 particles is ~15 MB: at this interval it costs far below 1 %
-// (README, "Restarts").
+// (the checkpoint row of tests/bench/README.md).
 constexpr double kCheckpointInterval = 300;
 
 double checkpoint_interval() {

@@ -1,5 +1,5 @@
-"""Runs every shell command of README.md and pipelines/README.md, so that a
-documented example cannot rot. Usage: readme_commands.py SOURCE_DIR BIN_DIR SCRATCH_DIR
+"""Runs every shell command of README.md, pipelines/README.md and docs/*.md,
+so that a documented example cannot rot. Usage: readme_commands.py SOURCE_DIR BIN_DIR SCRATCH_DIR
 
 Commands are taken from the Markdown code blocks: a fenced ```sh block is one
 script; each line of an indented block is one command. Each runs with /bin/sh
@@ -13,6 +13,7 @@ in where a command names files it does not make itself:
 A line that is not run is either a synopsis (it holds [OPTIONS] in brackets
 or NAME... placeholders) or in SKIPPED below with the reason; any other line
 must run, so a new example is run from the day it is written."""
+import glob
 import os
 import re
 import subprocess
@@ -27,6 +28,8 @@ SKIPPED = {
     "make -C pipelines/workstation -j": "the workstation scale: 1.7 core-hours, an hour on 2 cores (its plan is run: make -C pipelines/workstation estimate)",
     "sbatch pipelines/cluster/paper.sbatch": "needs a Slurm cluster (its shell is checked with sh -n below)",
     "sbatch --ntasks=2": "needs a Slurm cluster (its shell is checked with sh -n below)",
+    "make install": "installs into PREFIX; tests/cli/installed_tree.sh (ctest InstalledTree.*) installs into a fresh prefix and runs the pages, completion and pipelines there",
+    "sh pipelines/readme-table.sh": "needs a pipeline's exponents.md and rewrites a document of the source tree; tests/cli/pipeline_scripts_cli_test.cc runs it on stand-ins",
     "make -C pipelines/accuracy": "about 10 minutes of simulation (QUICK=1: under a minute); its recipes are plain coolgas commands tested elsewhere",
 }
 
@@ -88,7 +91,9 @@ def main():
     make_runs(bin_dir, scratch)
     env = dict(os.environ, PATH=bin_dir + os.pathsep + os.environ["PATH"], GNUTERM="dumb")
     failed = ran = 0
-    for doc in ("README.md", "pipelines/README.md"):
+    docs = ["README.md", "pipelines/README.md"] + sorted(
+        os.path.relpath(p, source) for p in glob.glob(os.path.join(source, "docs", "*.md")))
+    for doc in docs:
         for line, command in blocks(os.path.join(source, doc)):
             where = f"{doc}:{line}"
             if is_synopsis(command):
