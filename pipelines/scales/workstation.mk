@@ -21,7 +21,7 @@ DELTA := 1e-4
 # x = 5-26, 1.5 at x = 47, 0.4 at x = 450). E ~ L^-3 f(x) reaches 1e-8 at
 # x ~ 25 for L = 34 and at smaller x in larger boxes, so eta is fitted over
 # x = 3-20 and the small boxes end near x = 30.
-# Measured in this scale's runs (README.md, "The workstation scale, run
+# Measured in this scale's runs (docs/studies.md, "The workstation scale, run
 # here"): L = 100 to t = 1e5 took 672 and 696 CPU-s; theta = 1.192 +- 0.003
 # from L = 100 over t = 100-1e4, but the weighted collapse of all four sizes
 # gave z = 3.63 +- 0.41 (its quality falls steadily with z: the power-law
