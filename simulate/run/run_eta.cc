@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "simulate/engine/aggregation_engine.h"
+#include "simulate/run/models.h"
 
 namespace coolgas {
 
@@ -169,12 +170,19 @@ double clustering_floor(double phi, double r0, double delta) {
   return std::isnan(f) ? kClusteringHigh : std::clamp(f, kClusteringLow, kClusteringHigh);
 }
 
+RunEta eta_without_cooling(const RunParameters&) { return RunEta(INFINITY); }
+RunEta eta_of_cooling_gas(const RunParameters& p) { return RunEta(p.L); }
+RunEta eta_of_inelastic_gas(const RunParameters& p) {
+  if (!p.r0 || !p.delta) return eta_of_cooling_gas(p);
+  return RunEta(p.L, INFINITY, clustering_floor(p.phi, *p.r0, *p.delta), crossing_floor(p.phi));
+}
+RunEta eta_of_aggregation(const RunParameters& p) {
+  return RunEta::aggregation(p.L, double(p.N), AggregationEngine::kCellsPerAggregateLimit);
+}
+
 RunEta run_eta_for(const RunParameters& p) {
-  if (p.model == "elastic") return RunEta(INFINITY);  // no cooling, no finite-size regime
-  if (p.model == "aggregation") return RunEta::aggregation(p.L, double(p.N), AggregationEngine::kCellsPerAggregateLimit);
-  if (p.model == "inelastic" && p.r0 && p.delta)
-    return RunEta(p.L, INFINITY, clustering_floor(p.phi, *p.r0, *p.delta), crossing_floor(p.phi));
-  return RunEta(p.L);
+  const ModelRow* row = find_model_row(p.model);
+  return row ? row->eta(p) : eta_of_cooling_gas(p);
 }
 
 RunEta RunEta::aggregation(double L, double N, double regrid_factor) {

@@ -156,6 +156,14 @@ double clustering_floor(double phi, double r0, double delta);
 // clustering floor and its crossings modelled; other cooling gases
 // (viscoelastic) the floor 0.5.
 RunEta run_eta_for(const RunParameters& p);
+// The rules run_eta_for() picks by the run's model (simulate/run/models.h):
+// an elastic gas does not cool (no finite-size regime); a cooling gas with
+// the generic floor; the inelastic gas with its clustering and crossing
+// floors; ballistic aggregation by the aggregates left.
+RunEta eta_without_cooling(const RunParameters& p);
+RunEta eta_of_cooling_gas(const RunParameters& p);
+RunEta eta_of_inelastic_gas(const RunParameters& p);
+RunEta eta_of_aggregation(const RunParameters& p);
 
 // ln(C(t_end) / C(t)) for a local exponent that is a at t and then falls
 // as under Haff's law, is at least `clustering` before t_knee and at most

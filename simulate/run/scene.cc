@@ -11,6 +11,7 @@
 
 #include "common/did_you_mean.h"
 #include "common/error.h"
+#include "simulate/run/models.h"
 #include "common/memory.h"
 #include "common/tsv.h"
 #include "simulate/engine/cell_grid.h"
@@ -32,9 +33,12 @@ std::string toml_float(double x) {
 std::string toml_string(const std::string& x) { return "\"" + x + "\""; }
 
 const char* const kInitNames[] = {"random", "fcc", "file"};
-const char* const kModelNames[] = {"elastic", "inelastic", "viscoelastic", "aggregation"};
-static_assert(std::size(kModelNames) == std::size_t(CollisionModel::kAggregation) + 1,
-              "kModelNames lists the CollisionModel values in their order");
+// The models' names, in the enum's order (simulate/run/models.h).
+std::vector<std::string> model_names() {
+  std::vector<std::string> names;
+  for (const ModelRow& r : model_rows()) names.emplace_back(r.name);
+  return names;
+}
 static_assert(std::size(kInitNames) == std::size_t(InitialPositions::kFile) + 1,
               "kInitNames lists the InitialPositions values in their order");
 
@@ -103,7 +107,7 @@ const std::vector<SceneKey>& scene_keys() {
        .help = "\"elastic\", \"inelastic\" (paper Eq. 1 with the delta cut-off), \"viscoelastic\" (restitution "
                "rising to 1 as the impact speed falls; see collision.viscoelastic_b) or \"aggregation\" (ballistic "
                "aggregation: spheres that touch merge, volumes add, momentum conserved)",
-       .choices = {std::begin(kModelNames), std::end(kModelNames)},
+       .choices = model_names(),
        .set = [](Scene& s, const SceneValue& v) { s.model = choice<CollisionModel>(key_row("collision.model"), v); },
        .toml = [](const Scene& s) { return toml_string(s.model_name()); }},
       {.key = "collision.r0", .type = KeyType::kFloat, .need = KeyNeed::kDefault, .help = "coefficient of restitution",
@@ -209,7 +213,7 @@ std::string scene_keys_help() {
     if (k.need == KeyNeed::kDefault) facts += ", default " + k.toml(Scene{});
     if (k.need == KeyNeed::kOptional) facts += ", optional";
     std::string models;
-    for (M m : k.models) models += std::string(models.empty() ? "" : ", ") + kModelNames[int(m)];
+    for (M m : k.models) models += std::string(models.empty() ? "" : ", ") + model_row(m).name;
     if (!models.empty()) facts += "; model " + models;
     if (!k.inits.empty()) facts += "; init " + init_names(k);
     out += std::string("  ") + k.key + " (" + facts + "): " + k.help + "\n";
@@ -506,7 +510,7 @@ void check_unused_keys(const Scene& s, const KeyValues& kv) {
       throw InputError(std::string(k.key) + " is set but system.init = \"" + kInitNames[int(s.init)] +
                        "\" does not use it; remove it, or set init = " + init_names(k));
     std::string users;
-    for (M m : k.models) users += std::string(users.empty() ? "" : " or ") + "\"" + kModelNames[int(m)] + "\"";
+    for (M m : k.models) users += std::string(users.empty() ? "" : " or ") + "\"" + model_row(m).name + "\"";
     throw InputError(std::string(k.key) + " is set but collision.model = \"" + s.model_name() +
                      "\" does not use it; remove it, or set model = " + users);
   }
@@ -561,7 +565,7 @@ Scene parse_scene(const std::string& toml_text, const std::string& source, const
   return build_scene(kv, overridden);
 }
 
-std::string Scene::model_name() const { return kModelNames[int(model)]; }
+std::string Scene::model_name() const { return model_row(model).name; }
 
 std::string Scene::to_toml() const {
   std::string out = "# coolgas scene: the effective values (file, --set overrides and defaults)\n";

@@ -1,0 +1,62 @@
+#include "simulate/run/models.h"
+
+#include "simulate/engine/aggregation_engine.h"
+#include "simulate/engine/engine.h"
+#include "simulate/engine/state_archive.h"
+#include "simulate/run/run_eta.h"
+
+namespace coolgas {
+
+namespace {
+
+ElasticRule elastic_rule(const Scene&) { return {}; }
+ConstantRestitutionRule inelastic_rule(const Scene& s) { return {s.r0, s.delta}; }
+ViscoelasticRule viscoelastic_rule(const Scene& s) { return {s.viscoelastic_b, s.delta}; }
+
+// The engine of a collision rule (simulate/engine/collision_rules.h): the
+// hot loop is compiled for exactly that rule.
+template <class Rule, Rule (*rule_of)(const Scene&)>
+std::unique_ptr<EngineBase> make_rule_engine(const Scene& s, Particles p, double now, const EngineCounters& c,
+                                             const AggregateState*) {
+  return std::make_unique<Engine<Rule>>(std::move(p), rule_of(s), now, c);
+}
+template <class Rule, Rule (*rule_of)(const Scene&)>
+std::unique_ptr<EngineBase> restore_rule_engine(const Scene& s, const StateReader& state) {
+  return std::make_unique<Engine<Rule>>(rule_of(s), state);
+}
+
+std::unique_ptr<EngineBase> make_aggregation(const Scene&, Particles p, double now, const EngineCounters& c,
+                                             const AggregateState* aggregates) {
+  AggregateState a = aggregates ? *aggregates : AggregateState::unit_spheres(p.size());
+  return std::make_unique<AggregationEngine>(std::move(p), std::move(a), now, c);
+}
+std::unique_ptr<EngineBase> restore_aggregation(const Scene&, const StateReader& state) {
+  return std::make_unique<AggregationEngine>(state);
+}
+
+template <class Rule, Rule (*rule_of)(const Scene&)>
+ModelRow rule_row(CollisionModel model, const char* name, RunEta (*eta)(const RunParameters&)) {
+  return {model, name, make_rule_engine<Rule, rule_of>, restore_rule_engine<Rule, rule_of>, eta};
+}
+
+}  // namespace
+
+const std::vector<ModelRow>& model_rows() {
+  static const std::vector<ModelRow> rows = {
+      rule_row<ElasticRule, elastic_rule>(CollisionModel::kElastic, "elastic", eta_without_cooling),
+      rule_row<ConstantRestitutionRule, inelastic_rule>(CollisionModel::kInelastic, "inelastic", eta_of_inelastic_gas),
+      rule_row<ViscoelasticRule, viscoelastic_rule>(CollisionModel::kViscoelastic, "viscoelastic", eta_of_cooling_gas),
+      {CollisionModel::kAggregation, "aggregation", make_aggregation, restore_aggregation, eta_of_aggregation},
+  };
+  return rows;
+}
+
+const ModelRow& model_row(CollisionModel model) { return model_rows().at(std::size_t(model)); }
+
+const ModelRow* find_model_row(std::string_view name) {
+  for (const ModelRow& r : model_rows())
+    if (name == r.name) return &r;
+  return nullptr;
+}
+
+}  // namespace coolgas
