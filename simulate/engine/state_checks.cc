@@ -7,7 +7,7 @@ namespace coolgas {
 namespace {
 std::string text(double x) {
   std::ostringstream s;
-  s.precision(17);
+  s.precision(6);
   s << x;
   return s.str();
 }
