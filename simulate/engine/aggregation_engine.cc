@@ -437,23 +437,28 @@ int AggregationEngine::merge(int a, int b) {
 }
 
 // i and j touch: merge them, then whatever the new aggregate overlaps, until
-// nothing does; then predict again.
+// nothing does; then predict again. An aggregate that reaches half the box
+// ends the run (RunStopped), but only once its chain is complete: the
+// state then written holds no overlapping pair (stopping at once left the
+// chain's pending merges as overlaps in the last frame).
 void AggregationEngine::merge_chain(int i, int j) {
   int k = merge(i, j);
   bool rebuilt = false;
   while (true) {
-    if (2.0 * dmax_ >= L_) {
-      too_large_ = true;
-      throw_too_large();
-    }
-    if (grid_outdated()) {
+    const bool too_large = 2.0 * dmax_ >= L_;
+    if (!too_large && grid_outdated()) {
       rebuild_grid(&k);
       rebuilt = true;
     }
     // Overlaps with the new aggregate are found among its candidates, at the
     // images the cells allow (below the L/2 limit an overlap is through one
-    // image only); without one, the same walk gave its event.
+    // image only; beyond it the search visits every image its reach
+    // covers); without one, the same walk gave its event.
     const Search found = search<true>(k);
+    if (found.overlap < 0 && too_large) {
+      too_large_ = true;
+      throw_too_large();
+    }
     if (found.overlap < 0) {
       if (rebuilt) {
         predict_all();
