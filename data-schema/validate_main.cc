@@ -16,6 +16,7 @@ constexpr const char* kDescription =
     "h5md version [1, 1], author and creator; box dimension 3, boundary periodic x3, edges diag(L, L, L);\n"
     "N from /parameters/N matches the particle arrays; particle elements share F rows, observables K rows;\n"
     "times never decrease; positions lie in [0, L); velocities and observables are finite;\n"
+    "no two spheres overlap in any dump (aggregates by their diameters);\n"
     "/restart has F rows and the dump times; /parameters holds every documented attribute.\n"
     "F counts the complete dumps (rows of /restart/time); rows after the last of them, which a killed\n"
     "or still running writer leaves, are not checked.\n"

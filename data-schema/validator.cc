@@ -7,6 +7,7 @@
 
 #include "common/hdf5_file.h"
 #include "common/trajectory/collision_models.h"
+#include "common/trajectory/frame_reader.h"
 #include "common/trajectory/layout.h"
 #include "data-schema/hdf5_inspect.h"
 #include "data-schema/value_checks.h"
@@ -31,8 +32,8 @@ struct GoodElement {
 // scans run only on datasets whose type and shape were found right.
 class Checker {
  public:
-  Checker(hid_t file, const Profile& profile, const ValidateOptions& options)
-      : file_(file), profile_(profile), options_(options) {}
+  Checker(hid_t file, const std::string& path, const Profile& profile, const ValidateOptions& options)
+      : file_(file), path_(path), profile_(profile), options_(options) {}
 
   Report run() {
     read_schema_version();
@@ -45,6 +46,7 @@ class Checker {
     check_shared_rows(RowCount::kFrames, profile_.frames_from);
     check_shared_rows(RowCount::kObservableRows, profile_.observable_rows_from);
     for (const DatasetSpec& d : profile_.datasets) guarded(d.path, [&] { check_dataset(d); });
+    guarded(layout::kPosition, [&] { check_overlaps(); });
     report_.summary = {N_.value_or(0), rows_of(profile_.frames_from), rows_of(profile_.observable_rows_from),
                        file_version_, interrupted_};
     return std::move(report_);
@@ -250,6 +252,21 @@ class Checker {
     }
   }
 
+  // No two spheres overlap in any complete dump (value_checks.h): read one
+  // dump at a time, only when the file was found right so far (a frame
+  // with NaN or a wrong shape is reported already, and not read again).
+  void check_overlaps() {
+    if (!report_.problems.empty() || !L_ || !good(layout::kPosition)) return;
+    const Trajectory trajectory(path_, kPosition | kDiameter);
+    Frame frame;
+    for (std::size_t dump = 0; dump < trajectory.dump_times().size(); ++dump) {
+      trajectory.read(dump, frame);
+      const Finding f = check_no_overlaps(frame.position, frame.diameter, frame.id, frame.L);
+      if (f) problem(path_of(layout::kPosition, "value"), "dump " + std::to_string(dump) + " (t = " +
+                                                               number_text(frame.time) + "): " + *f);
+    }
+  }
+
   void check_found(std::string_view path, const Finding& f) {
     if (f) problem(path, *f);
   }
@@ -300,6 +317,7 @@ class Checker {
   }
 
   hid_t file_;
+  std::string path_;
   const Profile& profile_;
   const ValidateOptions& options_;
   Report report_;
@@ -318,7 +336,7 @@ class Checker {
 
 Report validate(const std::string& path, const Profile& profile, const ValidateOptions& options) {
   h5::Handle file = h5::open_file(path, h5::Mode::kReadOnly);
-  return Checker(file.id(), profile, options).run();
+  return Checker(file.id(), path, profile, options).run();
 }
 
 std::string problem_line(const std::string& file, const Problem& p) { return file + ": " + p.path + ": " + p.what; }

@@ -6,7 +6,8 @@
 // matches the particle arrays; the particle elements share F rows and the
 // observables K rows; times never decrease; positions lie in [0, L);
 // velocities and observables are finite; box edges are diag(L, L, L);
-// /restart has F rows and the dump times. F and K count the complete dumps
+// /restart has F rows and the dump times; no two spheres overlap in any
+// dump (aggregates by their diameters). F and K count the complete dumps
 // (rows of /restart/time) and the observable rows up to the last of them:
 // rows after it, which a killed writer (or one still running) leaves, are
 // not checked. Objects the profile does not list

@@ -171,4 +171,89 @@ Finding check_equal(hid_t dataset, hid_t reference, std::string_view reference_p
   return bad.result();
 }
 
+namespace {
+
+// The spheres of one frame and the pair test.
+struct Spheres {
+  std::span<const double> r, d;
+  std::span<const std::int32_t> id;
+  double L;
+  std::size_t size() const { return r.size() / 3; }
+  double diameter(std::size_t i) const { return d.empty() ? 1.0 : d[i]; }
+  std::int64_t name(std::size_t i) const { return id.empty() ? std::int64_t(i) : std::int64_t(id[i]); }
+  double distance(std::size_t i, std::size_t j) const {
+    double s = 0;
+    for (int k = 0; k < 3; ++k) {
+      double x = r[3 * j + std::size_t(k)] - r[3 * i + std::size_t(k)];
+      x -= L * std::round(x / L);
+      s += x * x;
+    }
+    return std::sqrt(s);
+  }
+};
+
+void test_pair(const Spheres& s, std::size_t i, std::size_t j, Offences& found) {
+  const double contact = 0.5 * (s.diameter(i) + s.diameter(j)), r = s.distance(i, j);
+  if (!(r < contact * (1 - kOverlapTolerance))) return;
+  found.add([&] {
+    return "particles " + std::to_string(std::min(s.name(i), s.name(j))) + " and " +
+           std::to_string(std::max(s.name(i), s.name(j))) + " overlap: centres " + number_text(r) +
+           " apart, contact at " + number_text(contact) + " (" + number_text(r / contact) + " of it)";
+  });
+}
+
+// The small spheres (no wider than `width`, at least 3 cells of it per
+// side) sorted into cells, each pair in neighbouring cells tested once.
+void small_pairs(const Spheres& s, const std::vector<std::size_t>& small, double width, Offences& found) {
+  const int n = int(std::min(std::floor(s.L / width), std::ceil(std::cbrt(double(small.size()))) + 1));
+  if (n < 3) {  // too few cells for distinct neighbours: every pair
+    for (std::size_t a = 0; a < small.size(); ++a)
+      for (std::size_t b = a + 1; b < small.size(); ++b) test_pair(s, small[a], small[b], found);
+    return;
+  }
+  const double w = s.L / n;
+  auto coord = [&](std::size_t i, int k) {
+    return std::clamp(int(std::floor(s.r[3 * i + std::size_t(k)] / w)), 0, n - 1);
+  };
+  auto cell_of = [&](int x, int y, int z) { return (std::size_t(z) * std::size_t(n) + std::size_t(y)) * std::size_t(n) + std::size_t(x); };
+  std::vector<std::size_t> start(std::size_t(n) * std::size_t(n) * std::size_t(n) + 1, 0), order(small.size());
+  for (std::size_t i : small) ++start[cell_of(coord(i, 0), coord(i, 1), coord(i, 2)) + 1];
+  for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
+  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+  for (std::size_t i : small) order[fill[cell_of(coord(i, 0), coord(i, 1), coord(i, 2))]++] = i;
+  for (std::size_t a = 0; a < order.size(); ++a) {
+    const std::size_t i = order[a];
+    const int cx = coord(i, 0), cy = coord(i, 1), cz = coord(i, 2);
+    for (int o = 0; o < 27; ++o) {
+      const std::size_t c = cell_of((cx + o % 3 - 1 + n) % n, (cy + o / 3 % 3 - 1 + n) % n, (cz + o / 9 - 1 + n) % n);
+      for (std::size_t b = start[c]; b < start[c + 1]; ++b)
+        if (order[b] > i) test_pair(s, i, order[b], found);
+    }
+  }
+}
+
+}  // namespace
+
+Finding check_no_overlaps(std::span<const double> position, std::span<const double> diameter,
+                          std::span<const std::int32_t> id, double L) {
+  const Spheres s{position, diameter, id, L};
+  std::vector<std::size_t> small, large;
+  double width = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (s.diameter(i) > L / 4) {
+      large.push_back(i);
+    } else {
+      small.push_back(i);
+      width = std::max(width, s.diameter(i));
+    }
+  }
+  Offences found;
+  if (!small.empty()) small_pairs(s, small, std::max(width, L * 1e-6), found);
+  // Spheres wider than L/4 fill a sixtieth of the box each: there are few.
+  for (std::size_t a = 0; a < large.size(); ++a)
+    for (std::size_t j = 0; j < s.size(); ++j)
+      if (j != large[a] && (s.diameter(j) <= L / 4 || j > large[a])) test_pair(s, large[a], j, found);
+  return found.result();
+}
+
 }  // namespace coolgas::schema

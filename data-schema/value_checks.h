@@ -6,6 +6,7 @@
 #include <hdf5.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <optional>
@@ -38,5 +39,17 @@ Finding check_box_matrix(hid_t dataset, double L, std::string_view L_source, con
 Finding check_nondecreasing(hid_t dataset, const Scan& scan);
 // Two (R,) datasets of equal length hold the same numbers.
 Finding check_equal(hid_t dataset, hid_t reference, std::string_view reference_path, const Scan& scan);
+
+// Pairs closer than their contact distance (d_i + d_j)/2 by more than
+// kOverlapTolerance of it, at the minimum image in a periodic box of side
+// L: hard spheres and aggregates never overlap (touching pairs sit at
+// contact to within round-off). `position` holds 3 numbers per sphere;
+// `diameter` one per sphere (empty: unit spheres); `id` names them in the
+// message (empty: their index). Found with a cell list as wide as the
+// widest sphere no wider than L/4 (each checked against its 27 cells), the
+// few wider ones against every sphere: O(n) for a gas.
+inline constexpr double kOverlapTolerance = 1e-9;
+Finding check_no_overlaps(std::span<const double> position, std::span<const double> diameter,
+                          std::span<const std::int32_t> id, double L);
 
 }  // namespace coolgas::schema

@@ -8,6 +8,7 @@
 #include "simulate/engine/aggregation_reach.h"
 #include "simulate/engine/pair_prediction.h"
 #include "simulate/engine/spatial_order.h"
+#include "simulate/engine/state_checks.h"
 
 namespace coolgas {
 
@@ -65,26 +66,82 @@ AggregationEngine::AggregationEngine(const StateReader& in) {
   alive_ = std::size_t(s.alive);
   too_large_ = s.too_large != 0;
   c_ = s.counters;
+  check_scalars(in, "aggregation/", L_, now_, c_);
+  if ((s.too_large != 0 && s.too_large != 1) || (s.has_grid != 0 && s.has_grid != 1) || (s.block != 1 && s.block != kBlock))
+    in.fail("aggregation/scalars: flags " + std::to_string(s.too_large) + ", " + std::to_string(s.has_grid) +
+            " and block " + std::to_string(s.block) + "; must be 0 or 1, and 1 or " + std::to_string(kBlock));
   m_ = in.get<Motion>("aggregation/motion");
   image_ = in.get<Image>("aggregation/image");
   mass_ = in.get<double>("aggregation/mass");
   diam_ = in.get<double>("aggregation/diameter");
   id_ = in.get<std::int32_t>("aggregation/id");
   const std::size_t n = m_.size();
-  if (image_.size() != n || mass_.size() != n || diam_.size() != n || id_.size() != n)
+  if (n == 0 || image_.size() != n || mass_.size() != n || diam_.size() != n || id_.size() != n)
     in.fail("the aggregation engine's arrays differ in length");
+  check_aggregates(in, s.alive);
+  calendar_.break_ties_by(id_.data());  // before the calendar loads: its heap order is checked by ids
   if (s.has_grid) {
+    if (!(std::isfinite(grid_request_) && grid_request_ > 0 && grid_request_ <= L_))
+      in.fail("aggregation/scalars: cell width " + std::to_string(grid_request_) + " out of (0, L]");
+    check_grid_size(in, "aggregation/grid/heads", CellGrid::cells_for(L_, grid_request_));
     grid_ = std::make_unique<CellGrid>(L_, grid_request_, n);
+    if (grid_->cells_per_side() % s.block != 0) in.fail("aggregation/scalars: the block does not divide the grid");
     grid_->bind_next_links(&m_[0].next, kLinkStride);
     grid_->load(in, "aggregation/grid/");
     large_ = LargeAggregateIndex(grid_->cells_per_side(), s.block, n);
     large_.bind_links(&m_[0].next, kLinkStride);
     const auto fine = in.get<std::int32_t>("aggregation/large_cell");
     if (fine.size() != n) in.fail("the aggregation engine's arrays differ in length");
+    check_listed(in, fine);
     large_.assign(fine, [this](int i) { return size_class(i); });
   }
   calendar_.load(in, "aggregation/calendar/");
-  calendar_.break_ties_by(id_.data());
+  if (calendar_.size() != n) in.fail("aggregation/calendar/entries: not one per slot");
+  if (!calendar_.queued_from(now_))
+    in.fail("aggregation/calendar/entries: an event before now = " + std::to_string(now_));
+}
+
+// The per-slot arrays of a checkpoint: present aggregates with finite
+// records, ids distinct in 0..n-1, mass and diameter finite and positive
+// (diameter at most L), their count and largest diameter those stored;
+// empty slots with id -1.
+void AggregationEngine::check_aggregates(const StateReader& in, std::int64_t alive) const {
+  const std::size_t n = m_.size();
+  std::vector<bool> seen(n, false);
+  std::int64_t present_count = 0;
+  double widest = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::int32_t id = id_[i];
+    if (id == -1) continue;
+    if (id < 0 || std::size_t(id) >= n || seen[std::size_t(id)])
+      in.fail("aggregation/id[" + std::to_string(i) + "] = " + std::to_string(id) + ": ids must be 0.." +
+              std::to_string(n - 1) + ", each once, or -1 (an empty slot)");
+    seen[std::size_t(id)] = true;
+    check_motion(in, "aggregation/", i, m_[i], now_);
+    if (!(std::isfinite(mass_[i]) && mass_[i] > 0 && std::isfinite(diam_[i]) && diam_[i] > 0 && diam_[i] <= L_))
+      in.fail("aggregation/slot " + std::to_string(i) + ": mass " + std::to_string(mass_[i]) + ", diameter " +
+              std::to_string(diam_[i]) + "; must be > 0, the diameter at most L");
+    ++present_count;
+    widest = std::max(widest, diam_[i]);
+  }
+  if (present_count != alive || widest != dmax_)
+    in.fail("aggregation/scalars: " + std::to_string(alive) + " aggregates, the largest " + std::to_string(dmax_) +
+            " wide, but the slots hold " + std::to_string(present_count) + ", the largest " + std::to_string(widest));
+}
+
+// Where each slot is listed: a present aggregate no wider than a fine cell
+// in the grid (and in its cell), a wider one in the large index (fine cell
+// `fine[i]`, in range), an empty slot nowhere.
+void AggregationEngine::check_listed(const StateReader& in, const std::vector<std::int32_t>& fine) const {
+  for (std::size_t i = 0; i < m_.size(); ++i) {
+    const bool in_grid = grid_->cell(int(i)) >= 0, large = fine[i] >= 0;
+    const bool want_grid = present(int(i)) && diam_[i] <= grid_request_;
+    const bool want_large = present(int(i)) && !want_grid;
+    if (in_grid != want_grid || large != want_large || fine[i] < -1 || fine[i] >= grid_->cell_count())
+      in.fail("aggregation/slot " + std::to_string(i) + " is listed where it does not belong (grid cell " +
+              std::to_string(grid_->cell(int(i))) + ", large-index cell " + std::to_string(fine[i]) + ")");
+    if (present(int(i))) check_in_cell(in, "aggregation/", i, m_[i].r, *grid_, in_grid ? grid_->cell(int(i)) : fine[i]);
+  }
 }
 
 void AggregationEngine::save(StateWriter& out) const {
@@ -379,23 +436,28 @@ int AggregationEngine::merge(int a, int b) {
 }
 
 // i and j touch: merge them, then whatever the new aggregate overlaps, until
-// nothing does; then predict again.
+// nothing does; then predict again. An aggregate that reaches half the box
+// ends the run (RunStopped), but only once its chain is complete: the
+// state then written holds no overlapping pair (stopping at once left the
+// chain's pending merges as overlaps in the last frame).
 void AggregationEngine::merge_chain(int i, int j) {
   int k = merge(i, j);
   bool rebuilt = false;
   while (true) {
-    if (2.0 * dmax_ >= L_) {
-      too_large_ = true;
-      throw_too_large();
-    }
-    if (grid_outdated()) {
+    const bool too_large = 2.0 * dmax_ >= L_;
+    if (!too_large && grid_outdated()) {
       rebuild_grid(&k);
       rebuilt = true;
     }
     // Overlaps with the new aggregate are found among its candidates, at the
     // images the cells allow (below the L/2 limit an overlap is through one
-    // image only); without one, the same walk gave its event.
+    // image only; beyond it the search visits every image its reach
+    // covers); without one, the same walk gave its event.
     const Search found = search<true>(k);
+    if (found.overlap < 0 && too_large) {
+      too_large_ = true;
+      throw_too_large();
+    }
     if (found.overlap < 0) {
       if (rebuilt) {
         predict_all();

@@ -118,6 +118,8 @@ class AggregationEngine final : public EngineBase {
   template <class F>
   void for_each_cell_in_reach(int i, int reach, F&& f) const;
   [[noreturn]] void throw_too_large() const;
+  void check_aggregates(const StateReader& in, std::int64_t alive) const;
+  void check_listed(const StateReader& in, const std::vector<std::int32_t>& fine) const;
   bool grid_outdated() const;
   void predict_all();
   struct Search {

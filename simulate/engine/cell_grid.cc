@@ -58,6 +58,13 @@ std::string check_box_fits_grid(double L, double min_width) {
          format_number(min_width) + "); use more particles or a lower phi";
 }
 
+std::int64_t CellGrid::cells_for(double L, double min_width) {
+  if (!(std::isfinite(L) && min_width > 0) || !check_box_fits_grid(L, min_width).empty()) return 0;
+  const double side = std::floor(L / (min_width * kWidthMargin));
+  if (side > 2e3) return -1;  // beyond 32-bit cell indices: no checkpoint can match
+  return std::int64_t(side) * std::int64_t(side) * std::int64_t(side);
+}
+
 CellGrid::CellGrid(double L, double min_width, std::size_t n) {
   const std::string err = check_box_fits_grid(L, min_width);
   if (!err.empty()) throw std::invalid_argument(err);
@@ -170,6 +177,33 @@ void CellGrid::load(const StateReader& in, const std::string& prefix) {
   cell_ = std::move(cell);
   own_next_ = std::move(own);
   if (!own_next_.empty()) next_ = own_next_.data();
+  check_lists(in, prefix);
+}
+
+// The lists of a checkpoint are walked by every later search and crossing:
+// an index out of range there is a wild read or write, a loop an endless
+// search. So they are checked once, here, in O(n + cells): each cell's list
+// from its head, every link back and forth consistent, every particle with
+// a cell met exactly once, in that cell's list.
+void CellGrid::check_lists(const StateReader& in, const std::string& prefix) const {
+  const auto n = std::int64_t(cell_.size());
+  const auto particle = [&](std::int64_t p) { return p >= 0 && p < n; };
+  std::int64_t listed = 0, met = 0;
+  for (std::int64_t p = 0; p < n; ++p) {
+    const std::int32_t c = cell_[std::size_t(p)];
+    if (c < -1 || c >= cell_count())
+      in.fail(prefix + "cell[" + std::to_string(p) + "] = " + std::to_string(c) + " is not a cell (0 to " +
+              std::to_string(cell_count() - 1) + ", or -1)");
+    listed += c >= 0;
+  }
+  for (int c = 0; c < cell_count(); ++c)
+    for (std::int32_t p = first(c), before = -1; p != -1; before = p, p = next(p))
+      if (!particle(p) || cell_[std::size_t(p)] != c || prev_[std::size_t(p)] != before || ++met > listed)
+        in.fail(prefix + "the list of cell " + std::to_string(c) + " holds particle " + std::to_string(p) +
+                " out of range or inconsistently");
+  if (met != listed)
+    in.fail(prefix + "the cell lists hold " + std::to_string(met) + " particles, the cells of " +
+            std::to_string(listed) + " say they should");
 }
 
 }  // namespace coolgas

@@ -75,7 +75,13 @@ class CellGrid {
   // `prefix`; load() expects a grid constructed with the same geometry (and
   // links bound the same way; bound links are the caller's to save).
   void save(StateWriter& out, const std::string& prefix) const;
+  // load() checks every index and list (a crafted or damaged file is
+  // refused through in.fail(), naming it); bound links must be loaded first.
   void load(const StateReader& in, const std::string& prefix);
+  // The cells a grid of side L with cells >= min_width wide has (0 if the box
+  // is too small): what a checkpoint's heads must number, known before the
+  // grid is allocated.
+  static std::int64_t cells_for(double L, double min_width);
 
  private:
   int n_ = 0;
@@ -89,6 +95,7 @@ class CellGrid {
   std::size_t stride_ = 1;
   std::int32_t& link(int p) { return next_[std::size_t(p) * stride_]; }
   std::int32_t& head_of(int cell) { return head_[std::size_t(slot(coord(cell)))]; }
+  void check_lists(const StateReader& in, const std::string& prefix) const;
 };
 
 // One cell of a neighbour walk.

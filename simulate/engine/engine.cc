@@ -8,6 +8,7 @@
 #include "common/compensated_sum.h"
 #include "simulate/engine/pair_prediction.h"
 #include "simulate/engine/spatial_order.h"
+#include "simulate/engine/state_checks.h"
 
 namespace coolgas {
 
@@ -19,6 +20,13 @@ constexpr int kAroundLo[3] = {-1, -1, -1}, kAroundHi[3] = {1, 1, 1};
 // each less than kStallGap (relative to 1 + t) after the particle's previous
 // event.
 constexpr double kStallGap = 1e-11;
+// The same, for the whole gas: a window of this many events (or more) over
+// which simulated time advanced by at most kStallGap (1 + t). Per-particle
+// counts miss a collapse whose collisions are spread over a cluster, or
+// reset by rebuilds (every 100 N collisions) before they reach the limit;
+// this needs neither N nor r0. A healthy gas of N particles spends 2^20
+// events in ~2^20 / N collision times (>= 5e-4 of one for N < 2^31).
+constexpr std::int64_t kTimeWatchEvents = std::int64_t(1) << 20;
 // Rebuilds are due every this many collisions per particle (see engine.h):
 // they renew the Morton order, whose locality decays as particles wander,
 // and cost about one partner search per particle. Every 200 keeps long runs
@@ -71,6 +79,7 @@ Engine<Rule>::Engine(Particles particles, const Rule& rule, double now, const En
   if constexpr (Rule::kDissipative) stall_.assign(n, 0);
   move_all_to_now();
   rebuild();
+  watch_ = {c_.events, now_};
 }
 
 template <class Rule>
@@ -80,6 +89,7 @@ Engine<Rule>::Engine(const Rule& rule, const StateReader& in) : rule_(rule) {
   now_ = s.now;
   next_rebuild_ = s.next_rebuild;
   c_ = s.counters;
+  check_scalars(in, "engine/", L_, now_, c_);
   m_ = in.get<Motion>("engine/motion");
   image_ = in.get<Image>("engine/image");
   id_ = in.get<std::int32_t>("engine/id");
@@ -89,10 +99,45 @@ Engine<Rule>::Engine(const Rule& rule, const StateReader& in) : rule_(rule) {
   if (n == 0 || image_.size() != n || id_.size() != n || later_.size() != n ||
       stall_.size() != (Rule::kDissipative ? n : 0))
     in.fail("the engine's arrays differ in length");
+  check_records(in);
+  check_grid_size(in, "engine/grid/heads", CellGrid::cells_for(L_, cell_width(L_, n)));
   grid_ = CellGrid(L_, cell_width(L_, n), n);
   grid_.bind_next_links(&m_[0].next, sizeof(Motion) / sizeof(std::int32_t));
   grid_.load(in, "engine/grid/");
+  for (std::size_t i = 0; i < n; ++i) {
+    if (grid_.cell(int(i)) < 0) in.fail("engine/grid/cell[" + std::to_string(i) + "] = -1: every particle has a cell");
+    check_in_cell(in, "engine/", i, m_[i].r, grid_, grid_.cell(int(i)));
+  }
   calendar_.load(in, "engine/calendar/");
+  if (calendar_.size() != n) in.fail("engine/calendar/entries: not one per particle");
+  if (!calendar_.queued_from(now_)) in.fail("engine/calendar/entries: an event before now = " + std::to_string(now_));
+  if (in.has("engine/time_watch")) {  // absent in checkpoints written before it (format 1 adds only)
+    const auto w = in.get_value<TimeWatch>("engine/time_watch");
+    if (!(w.events >= 0 && w.events <= c_.events && std::isfinite(w.time) && w.time <= now_))
+      in.fail("engine/time_watch: its mark is not a past event and time");
+    watch_ = w;
+  } else {
+    watch_ = {c_.events, now_};
+  }
+}
+
+// The per-particle arrays of a checkpoint: finite records, ids a
+// permutation, kept events well formed (the lists and the calendar check
+// themselves as they load).
+template <class Rule>
+void Engine<Rule>::check_records(const StateReader& in) const {
+  const std::size_t n = m_.size();
+  std::vector<bool> seen(n, false);
+  for (std::size_t i = 0; i < n; ++i) {
+    check_motion(in, "engine/", i, m_[i], now_);
+    const std::int32_t id = id_[i];
+    if (id < 0 || std::size_t(id) >= n || seen[std::size_t(id)])
+      in.fail("engine/id[" + std::to_string(i) + "] = " + std::to_string(id) + ": ids must be 0.." +
+              std::to_string(n - 1) + ", each once");
+    seen[std::size_t(id)] = true;
+    if (!EventCalendar::event_in_range(later_[i], std::int64_t(n)))
+      in.fail("engine/later[" + std::to_string(i) + "]: an event with a partner or face out of range");
+  }
 }
 
 template <class Rule>
@@ -105,6 +150,7 @@ void Engine<Rule>::save(StateWriter& out) const {
   out.put("engine/stall", stall_);
   grid_.save(out, "engine/grid/");
   calendar_.save(out, "engine/calendar/");
+  out.put_value("engine/time_watch", watch_);
 }
 
 // slot_of_id()[id] = the internal index of particle id.
@@ -356,6 +402,26 @@ void Engine<Rule>::note_collision_gap(int i, double gap, int partner) {
   }
 }
 
+// Called every 4096 events (pause_due): once a window of kTimeWatchEvents
+// has passed, simulated time must have advanced, else the run is stuck in
+// inelastic collapse. The window starts where the last one ended, at an
+// event count, whatever the slicing of run_until, and is saved with the
+// engine: a resumed run stops where the whole one does.
+template <class Rule>
+void Engine<Rule>::watch_time() {
+  if constexpr (Rule::kDissipative) {
+    const std::int64_t events = c_.events - watch_.events;
+    if (events < kTimeWatchEvents) return;
+    if (now_ - watch_.time <= kStallGap * (1.0 + now_)) {
+      std::ostringstream s;
+      s << "inelastic collapse at t = " << now_ << ": " << events << " events (" << c_.collisions
+        << " collisions in all) without simulated time advancing (from t = " << watch_.time << ")";
+      throw RunStopped(StopReason::kInelasticCollapse, s.str(), now_);
+    }
+    watch_ = {c_.events, now_};
+  }
+}
+
 template <class Rule>
 void Engine<Rule>::collide(int i, int j) {
   note_collision_gap(i, now_ - m_[i].t, j);
@@ -387,7 +453,8 @@ template <class Rule>
 RunStatus Engine<Rule>::run_until(double t_stop, std::int64_t max_events, const volatile std::sig_atomic_t* interrupt) {
   const std::int64_t last_event = c_.events + max_events;
   while (true) {
-    if (RunStatus paused; pause_due(c_.events, last_event, interrupt, paused)) return paused;
+    if (RunStatus paused; pause_due(c_.events, last_event, interrupt, paused, [this] { watch_time(); }))
+      return paused;
     const int i = calendar_.top();
     if (i < 0) break;
     for (int k = 0; k < 2; ++k)

@@ -64,6 +64,13 @@ struct EngineScalars {
   EngineCounters counters;
 };
 
+// Where the check that simulated time advances last looked (engine.cc,
+// watch_time()): the event count and the time then.
+struct TimeWatch {
+  std::int64_t events;
+  double time;
+};
+
 template <class Rule>
 class Engine final : public EngineBase {
  public:
@@ -113,6 +120,8 @@ class Engine final : public EngineBase {
   Event cross(int i, int face);
   void collide(int i, int j);
   void note_collision_gap(int i, double gap, int partner);
+  void watch_time();
+  void check_records(const StateReader& in) const;
   Vec3 image_shift(int from_cell, int to_cell) const;
   // Earliest contact of a particle (at now_, at ri with vi) with the particles
   // of one cell list starting at `first`, whose images are shifted by s;
@@ -137,6 +146,7 @@ class Engine final : public EngineBase {
   double now_;
   EngineCounters c_;
   std::int64_t next_rebuild_ = 0;  // the collision count at which the next rebuild is due
+  TimeWatch watch_{0, 0};          // the start of the current window of watch_time()
   std::vector<CollisionRecord>* log_ = nullptr;
 };
 

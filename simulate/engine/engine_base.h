@@ -45,16 +45,25 @@ enum class RunStatus {
 // The check both engines make before each event: whether max_events have
 // been processed since the run_until call (its budget ends at `last_event`),
 // or, every 4096 events, whether the interrupt flag is set. Returns true and
-// sets `status` if the run must pause.
+// sets `status` if the run must pause. `every_4096` runs on that rare path
+// too (before the flag is read), so a check per slice of events costs the
+// hot loop nothing.
+template <class Tick>
 inline bool pause_due(std::int64_t events, std::int64_t last_event, const volatile std::sig_atomic_t* interrupt,
-                      RunStatus& status) {
+                      RunStatus& status, Tick&& every_4096) {
   if (events >= last_event) {
     status = RunStatus::kEventBudget;
     return true;
   }
-  if ((events & 4095) != 0 || !interrupt || !*interrupt) return false;
+  if ((events & 4095) != 0) return false;
+  every_4096();
+  if (!interrupt || !*interrupt) return false;
   status = RunStatus::kInterrupted;
   return true;
+}
+inline bool pause_due(std::int64_t events, std::int64_t last_event, const volatile std::sig_atomic_t* interrupt,
+                      RunStatus& status) {
+  return pause_due(events, last_event, interrupt, status, [] {});
 }
 
 // The aggregation observables (absent for engines whose particles never change).

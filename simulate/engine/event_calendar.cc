@@ -242,7 +242,66 @@ void EventCalendar::load(const StateReader& in, const std::string& prefix) {
   ahead_ = s.ahead;
   if (heads_.size() != std::size_t(nb_) + 1) in.fail(prefix + "heads does not match the calendar's bucket count");
   heads_[std::size_t(nb_)] = kNone;  // an earlier build's overflow list: the count below replaces it
+  check_loaded(in, prefix);
   overflow_ = std::count_if(entry_.begin(), entry_.end(), [&](const Entry& e) { return e.where == nb_; });
+}
+
+// A checkpoint's calendar is trusted by every later top() and schedule():
+// an index out of range there is a wild write, a broken list an endless
+// loop. So everything is checked once, here, in O(n + buckets).
+void EventCalendar::check_loaded(const StateReader& in, const std::string& prefix) const {
+  const auto n = std::int64_t(entry_.size());
+  const auto fail = [&](const std::string& what) { in.fail(prefix + what); };
+  const auto particle = [&](std::int64_t p) { return p >= 0 && p < n; };
+  if (nb_ < 1 || current_ < 0 || current_ > nb_)
+    fail("scalars: bucket " + std::to_string(current_) + " of " + std::to_string(nb_) + " is out of range");
+  if (!(std::isfinite(base_) && std::isfinite(width_) && width_ > 0 && std::isfinite(inv_width_) && inv_width_ > 0))
+    fail("scalars: base, width and 1/width must be finite, the widths positive");
+  if (ahead_ != kNone && !particle(ahead_)) fail("scalars: prefetch position " + std::to_string(ahead_) + " out of range");
+  if (years_ < 0) fail("scalars: a negative year count");
+  std::int64_t in_buckets = 0;
+  for (std::int64_t p = 0; p < n; ++p) {
+    const Entry& e = entry_[std::size_t(p)];
+    const bool place_ok = e.where >= kNone ? e.where <= nb_ : -2 - std::int64_t(e.where) < std::int64_t(heap_.size());
+    const bool links_ok = (e.next == kNone || particle(e.next)) && (e.prev == kNone || particle(e.prev));
+    // Queued exactly when finite: a finite event nowhere would never come due.
+    const bool queued_ok = (e.where != kNone) == std::isfinite(e.event.time);
+    if (!event_in_range(e.event, n) || !place_ok || !links_ok || !queued_ok)
+      fail("entries[" + std::to_string(p) + "] (time " + std::to_string(e.event.time) + ", place " +
+           std::to_string(e.where) + ", links " + std::to_string(e.prev) + " " + std::to_string(e.next) +
+           ") is out of range or inconsistent");
+    in_buckets += e.where >= 0 && e.where < nb_;
+  }
+  for (std::size_t k = 0; k < heap_.size(); ++k) {
+    const std::int32_t p = heap_[k];
+    if (!particle(p) || entry_[std::size_t(p)].where != -2 - std::int32_t(k) || (k > 0 && earlier(p, heap_[(k - 1) / 2])))
+      fail("heap[" + std::to_string(k) + "] = " + std::to_string(p) + " is out of range or out of heap order");
+  }
+  // Each bucket list walked from its head: every link consistent, every
+  // entry in a bucket met exactly once (so no list loops).
+  std::int64_t met = 0;
+  for (std::int32_t b = 0; b < nb_; ++b)
+    for (std::int32_t p = heads_[std::size_t(b)], prev = kNone; p != kNone; prev = p, p = entry_[std::size_t(p)].next)
+      if (!particle(p) || entry_[std::size_t(p)].where != b || entry_[std::size_t(p)].prev != prev || ++met > n)
+        fail("bucket " + std::to_string(b) + " lists entry " + std::to_string(p) + " inconsistently");
+  if (met != in_buckets)
+    fail("the bucket lists hold " + std::to_string(met) + " entries, the entries say " + std::to_string(in_buckets));
+}
+
+bool EventCalendar::event_in_range(const Event& e, std::int64_t n) {
+  if (std::isnan(e.time)) return false;
+  switch (e.kind()) {
+    case EventKind::kCollision: return e.partner() < n;
+    case EventKind::kCrossing: return e.face() >= 0 && e.face() < 6;
+    case EventKind::kNone: return true;
+  }
+  return false;
+}
+
+bool EventCalendar::queued_from(double now) const {
+  for (const Entry& e : entry_)
+    if (e.where != kNone && !(e.event.time >= now)) return false;
+  return true;
 }
 
 }  // namespace coolgas

@@ -104,7 +104,16 @@ class EventCalendar {
   // Every internal field, under names starting with `prefix` (checkpoints:
   // the restored calendar returns the same events in the same order).
   void save(StateWriter& out, const std::string& prefix) const;
+  // load() checks every index, link and count (a crafted or damaged file
+  // is refused through in.fail(), naming it, never trusted).
   void load(const StateReader& in, const std::string& prefix);
+  // Whether an event is well formed for n particles: a time that is not NaN,
+  // a partner in 0..n-1 or a face in 0..5 (checkpoints: kept events too).
+  static bool event_in_range(const Event& e, std::int64_t n);
+  // Whether every queued event is at `now` or later (the contract's "never
+  // in the past", for a calendar loaded from a checkpoint).
+  bool queued_from(double now) const;
+  std::size_t size() const { return entry_.size(); }
 
   // Statistics for benchmarks: how many years were started.
   std::int64_t years() const { return years_; }
@@ -139,6 +148,7 @@ class EventCalendar {
   void sift_down(int pos);
   void start_year(double base);
   bool advance_bucket();
+  void check_loaded(const StateReader& in, const std::string& prefix) const;
 
   std::vector<Entry> entry_;
   // nb bucket heads, and one slot that stays kNone (it held the overflow's

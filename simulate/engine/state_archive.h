@@ -64,6 +64,11 @@ class StateReader {
     if (v.size() != 1) fail("section '" + name + "' holds " + std::to_string(v.size()) + " values, not 1");
     return v[0];
   }
+  // The number of elements of a section (InputError if it is missing or of
+  // another element size): a size is checked before anything is allocated.
+  std::size_t count(const std::string& name, std::size_t element_size) const {
+    return section(name, element_size).count;
+  }
   // Throws InputError naming the file, with `what` as the reason.
   [[noreturn]] void fail(const std::string& what) const;
 

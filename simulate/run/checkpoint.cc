@@ -39,8 +39,13 @@ std::string physics_of(const Scene& s) {
 
 std::vector<char> bytes_of(const std::string& s) { return {s.begin(), s.end()}; }
 
-[[noreturn]] void fail_io(const std::string& what, const std::string& path) {
-  throw std::runtime_error("cannot write checkpoint '" + path + "': " + what + " (" + std::strerror(errno) + ")");
+// A checkpoint that cannot be written (disk full, quota, I/O error) is a
+// failed write of the run's output: WriteError, exit code 5, like the
+// trajectory's own. `error` is the errno of the failure, taken before the
+// clean-up calls that may change it.
+[[noreturn]] void fail_io(const std::string& what, const std::string& path, int error) {
+  throw WriteError("cannot write checkpoint '" + path + "': " + what + " (" + std::strerror(error) +
+                   "); the previous checkpoint is kept");
 }
 
 // Makes a rename inside `dir` durable.
@@ -86,7 +91,7 @@ void write_checkpoint(const std::string& trajectory, const Scene& scene, const E
                       const std::vector<ObservableRow>& pending) {
   const std::string path = checkpoint_path(trajectory), tmp = path + ".partial";
   std::FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (!f) fail_io("cannot create '" + tmp + "'", path);
+  if (!f) fail_io("cannot create '" + tmp + "'", path, errno);
   try {
     StateWriter out(f);
     out.put("run/physics", bytes_of(physics_of(scene)));
@@ -96,18 +101,23 @@ void write_checkpoint(const std::string& trajectory, const Scene& scene, const E
     engine.save(out);
     out.finish();
   } catch (const std::exception&) {
+    const int error = errno;
     std::fclose(f);
     std::remove(tmp.c_str());
-    fail_io("a write failed", path);
+    fail_io("a write failed", path, error);
   }
   const bool synced = ::fsync(fileno(f)) == 0;
-  if (std::fclose(f) != 0 || !synced) {
+  int error = errno;
+  const bool closed = std::fclose(f) == 0;
+  if (!closed) error = errno;
+  if (!closed || !synced) {
     std::remove(tmp.c_str());
-    fail_io("flushing to disk failed", path);
+    fail_io("flushing to disk failed", path, error);
   }
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    error = errno;
     std::remove(tmp.c_str());
-    fail_io("renaming into place failed", path);
+    fail_io("renaming into place failed", path, error);
   }
   const auto dir = std::filesystem::path(path).parent_path();
   sync_directory(dir.empty() ? "." : dir.string());

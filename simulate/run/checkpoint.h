@@ -30,8 +30,8 @@ struct RunCheckpoint {
 };
 
 // Writes the checkpoint of `trajectory` (replacing the old one atomically).
-// Throws std::runtime_error naming the file if writing fails; the previous
-// checkpoint is then still in place.
+// Throws WriteError (exit code 5) naming the file if writing fails (a full
+// disk); the previous checkpoint is then still in place.
 void write_checkpoint(const std::string& trajectory, const Scene& scene, const EngineBase& engine, double last_dump,
                       const std::vector<ObservableRow>& pending);
 

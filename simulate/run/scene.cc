@@ -1,6 +1,7 @@
 #include "simulate/run/scene.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -242,14 +243,35 @@ void flatten(const toml::value& v, const std::string& prefix, std::map<std::stri
   }
 }
 
-// The deepest nesting of brackets and braces outside strings and comments:
-// toml11 parses them recursively, so a deep text would overflow its stack.
-int nesting_depth(const std::string& text) {
-  int depth = 0, deepest = 0;
+// What check_parsable needs of a text before toml11 sees it, in one pass
+// outside strings and comments: the deepest nesting of brackets and braces
+// (toml11 parses them recursively, so a deep text would overflow its stack)
+// and the longest array with the key it is given to (toml11 takes time
+// quadratic in the length of a line: 10^5 values on one line cost ~15 s, in
+// which no signal is looked at).
+struct TextShape {
+  int deepest = 0;
+  std::size_t longest = 0;  // values in the longest array (commas + 1)
+  std::string longest_key;  // "table.key" it is given to, as written
+};
+
+std::string trimmed(const std::string& text, std::size_t from, std::size_t to) {
+  while (from < to && std::isspace(static_cast<unsigned char>(text[from]))) ++from;
+  while (to > from && std::isspace(static_cast<unsigned char>(text[to - 1]))) --to;
+  return text.substr(from, to - from);
+}
+
+// `value`: the text is one value (of --set), never a table header.
+TextShape text_shape(const std::string& text, bool value) {
+  TextShape shape;
+  int depth = 0;
   char quote = 0;
   bool comment = false;
+  std::size_t line = 0, values = 0;  // where the current line starts; values of the array open at depth 0
+  std::string table, key;
   for (std::size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
+    if (c == '\n' && !quote) line = i + 1;
     if (comment) {
       comment = c != '\n';
     } else if (quote) {
@@ -260,21 +282,42 @@ int nesting_depth(const std::string& text) {
     } else if (c == '#') {
       comment = true;
     } else if (c == '[' || c == '{') {
-      deepest = std::max(deepest, ++depth);
+      if (depth == 0 && !value && trimmed(text, line, i).empty()) {  // a table header: [name]
+        const std::size_t end = text.find(']', i);
+        table = trimmed(text, i + 1, end == std::string::npos ? text.size() : end);
+      } else if (depth == 0) {  // a value: key = [...]
+        const std::size_t eq = text.rfind('=', i);
+        const std::string k = eq != std::string::npos && eq >= line ? trimmed(text, line, eq) : "";
+        key = table.empty() || k.empty() ? k : table + "." + k;
+        values = 1;
+      }
+      shape.deepest = std::max(shape.deepest, ++depth);
     } else if (c == ']' || c == '}') {
       depth = std::max(0, depth - 1);
+      if (depth == 0 && values > shape.longest) shape.longest = values, shape.longest_key = key;
+      if (depth == 0) values = 0;
+    } else if (c == ',' && depth > 0 && values > 0) {
+      ++values;
     }
   }
-  return deepest;
+  return shape;
 }
 
-void check_parsable(const std::string& text, const std::string& source) {
+// `value_key`: the key a --set value is given to (its text holds no key).
+void check_parsable(const std::string& text, const std::string& source, const std::string& value_key = "") {
   if (text.size() > kMaxSceneBytes)
     throw InputError(source + ": the scene is " + std::to_string(text.size()) + " bytes; the limit is " +
                      std::to_string(kMaxSceneBytes) + " (a scene is a few lines)");
-  if (const int d = nesting_depth(text); d > kMaxSceneNesting)
-    throw InputError(source + ": arrays or tables nested " + std::to_string(d) + " deep; the limit is " +
+  const TextShape shape = text_shape(text, !value_key.empty());
+  if (shape.deepest > kMaxSceneNesting)
+    throw InputError(source + ": arrays or tables nested " + std::to_string(shape.deepest) + " deep; the limit is " +
                      std::to_string(kMaxSceneNesting));
+  if (double(shape.longest) > kMaxDumps) {
+    const std::string key = value_key.empty() ? shape.longest_key : value_key;
+    throw InputError(source + ": " + (key.empty() ? std::string("an array") : shown(key)) + " holds " +
+                     std::to_string(shape.longest) + " values; the limit is " + std::to_string(int(kMaxDumps)) +
+                     " (a run writes at most 1e4 dumps)");
+  }
 }
 
 toml::value parse_toml(const std::string& text, const std::string& source) {
@@ -293,7 +336,7 @@ std::pair<std::string, toml::value> parse_override(const std::string& kv) {
   if (eq == std::string::npos || eq == 0)
     throw InputError("--set '" + shown(kv) + "': expected key=value, e.g. --set collision.r0=0.1");
   const std::string key = kv.substr(0, eq), value = kv.substr(eq + 1);
-  check_parsable(value, "--set " + shown(key));
+  check_parsable(value, "--set " + shown(key), key);
   std::istringstream in("v = " + value);
   try {
     return {key, toml::find(toml::parse(in, "--set"), "v")};
@@ -383,6 +426,17 @@ double grid_points(const Scene& s, int per_decade) {
   return std::max(0.0, double(per_decade) * std::log10(s.t_end / s.t_min)) + 1;
 }
 
+// The key(s) a refused number of dumps comes from: the log grid's density,
+// the explicit list, or both, whichever holds most of them.
+std::string dumps_blame(const Scene& s, double extra) {
+  const std::string grid = "output.dumps_per_decade = " + std::to_string(s.dumps_per_decade) + " from t = " +
+                           format_number(s.t_min) + " to " + format_number(s.t_end);
+  const std::string list = "output.dump_times with " + format_number(extra) + " times";
+  const double from_grid = grid_points(s, s.dumps_per_decade);
+  if (extra > kMaxDumps / 2 && from_grid > kMaxDumps / 2) return grid + " and " + list;
+  return extra > from_grid ? list : grid;
+}
+
 }  // namespace
 
 void check_scene_size(const Scene& s) {
@@ -415,9 +469,8 @@ void check_scene_cost(const Scene& s, double memory_bytes) {
   const double extra = double(s.dump_times.size());
   const double dumps = grid_points(s, s.dumps_per_decade) + extra;
   if (dumps > kMaxDumps)
-    throw InputError("output.dumps_per_decade = " + std::to_string(s.dumps_per_decade) + " from t = " +
-                     format_number(s.t_min) + " to " + format_number(s.t_end) + " means about " + about(dumps) +
-                     " dumps (" + bytes_text(dumps * n * 60) + "); the limit is 1e4 dumps");
+    throw InputError(dumps_blame(s, extra) + " means about " + about(dumps) + " dumps (" +
+                     bytes_text(dumps * n * 60) + "); the limit is 1e4 dumps");
   const double rows = grid_points(s, s.observables_per_decade) + grid_points(s, s.dumps_per_decade) + extra;
   if (rows > kMaxObservableRows)
     throw InputError("output.observables_per_decade = " + std::to_string(s.observables_per_decade) + " from t = " +

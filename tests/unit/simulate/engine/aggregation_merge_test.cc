@@ -9,6 +9,8 @@
 #include <cmath>
 
 #include "simulate/engine/aggregation_engine.h"
+#include "simulate/run/engine_factory.h"
+#include "simulate/start/initial_state.h"
 #include "tests/support/saved_state.h"
 
 namespace coolgas {
@@ -113,6 +115,43 @@ TEST(AggregationMerge, GrowsUpToHalfTheBoxThenStops) {
     EXPECT_NEAR(stop.time, 5 - 0.5 * (4 + std::cbrt(62.0)), 1e-12);  // at the merge: distance 5, closing at 1
   }
   EXPECT_THROW(above.run_until(20.0, 1000, nullptr), RunStopped);  // and stays stopped
+}
+
+// A run that stops at L/2 stops after the chain that crossed it is
+// complete: its last state holds no overlapping pair (all pairs, minimum
+// image, to the engine's round-off of 1e-9). The scene is the one that left
+// an aggregate of diameter 10.92 at 0.868, 0.916 and 0.975 of contact with
+// three others when the run stopped mid-chain (issue 41).
+TEST(AggregationMerge, StopsAtHalfTheBoxWithItsChainComplete) {
+  Scene s;
+  s.N = 4000;
+  s.phi = 0.3;
+  s.L = std::cbrt(double(s.N) * M_PI / (6 * s.phi));
+  s.seed = 3;
+  s.model = CollisionModel::kAggregation;
+  auto engine = make_engine(s, initial_state(s), 0.0);
+  try {
+    engine->run_until(1e6, std::int64_t(1) << 40, nullptr);
+    FAIL() << "no aggregate reached half the box";
+  } catch (const RunStopped& stop) {
+    ASSERT_EQ(stop.reason, StopReason::kAggregateTooLarge);
+  }
+  const EngineFrame f = engine->frame();
+  double mass = 0;
+  std::size_t pairs = 0;
+  for (std::size_t i = 0; i < f.id.size(); ++i) {
+    mass += f.mass[i];
+    for (std::size_t j = i + 1; j < f.id.size() && f.id[i] >= 0; ++j) {
+      if (f.id[j] < 0) continue;
+      Vec3 d = minus(f.position[j], f.position[i]);
+      for (int k = 0; k < 3; ++k) d[k] -= s.L * std::round(d[k] / s.L);
+      const double contact = 0.5 * (f.diameter[i] + f.diameter[j]);
+      EXPECT_GE(std::sqrt(dot(d, d)), contact * (1 - 1e-9)) << "ids " << i << " and " << j;
+      ++pairs;
+    }
+  }
+  EXPECT_GT(pairs, 100u);
+  EXPECT_NEAR(mass, 4000.0, 1e-9);  // every particle in some aggregate
 }
 
 // An engine restored from its saved state (a checkpoint) at an arbitrary
