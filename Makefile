@@ -14,7 +14,8 @@ CMAKE_FLAGS = -DCMAKE_BUILD_TYPE=Release $(if $(filter 1,$(NATIVE)),-DCOOLGAS_NA
 DEBIAN_PACKAGES := cmake make g++ pkg-config git \
   libhdf5-dev hdf5-tools libfftw3-dev libgsl-dev libeigen3-dev \
   libgtest-dev libcli11-dev libtoml11-dev \
-  gnuplot-nox python3 python3-h5py python3-mdanalysis python3-ase python3-pandas
+  gnuplot-nox python3 python3-h5py python3-mdanalysis python3-ase python3-pandas \
+  python3-dev pybind11-dev python3-pybind11 python3-numpy python3-matplotlib python3-pytest
 
 PREFIX ?= /usr/local
 
