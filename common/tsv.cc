@@ -41,6 +41,11 @@ void TsvWriter::block(const std::string& comment) {
   rows_in_block_ = false;
 }
 
+void TsvWriter::write(const TableBlock& b) {
+  block(b.comment);
+  for (const auto& r : b.rows) row(r);
+}
+
 std::size_t Table::column(const std::string& name) const {
   for (std::size_t i = 0; i < columns.size(); ++i)
     if (columns[i] == name) return i;

@@ -27,6 +27,14 @@ inline constexpr int kTableFormat = 2;
 
 using Provenance = std::vector<std::pair<std::string, std::string>>;
 
+// One block of a table as a tool computes it for one dump: its comment
+// (without "# ") and rows. The tool writes it (TsvWriter::write); the Python
+// module (analyze/python/) hands the same rows out, so both see one result.
+struct TableBlock {
+  std::string comment;
+  std::vector<std::vector<double>> rows;
+};
+
 class TsvWriter {
  public:
   // Writes the provenance block (tool and program version first) and the
@@ -37,6 +45,8 @@ class TsvWriter {
   // Starts a new block (two blank lines, gnuplot's index separator) with an
   // optional comment such as "# t = 10".
   void block(const std::string& comment = "");
+  // block(b.comment), then its rows.
+  void write(const TableBlock& b);
   std::size_t columns() const { return ncol_; }
 
  private:

@@ -141,9 +141,8 @@ std::size_t nearest(const std::vector<double>& times, double t) {
   return best;
 }
 
-}  // namespace
-
-H5mdFrame read_h5md_frame(const std::string& path, std::optional<double> time) {
+// The frame nearest `time`, or frame `index`, or the last.
+H5mdFrame read_frame(const std::string& path, std::optional<double> time, std::optional<std::size_t> index) {
   h5::Handle f = h5::open_file(path, h5::Mode::kReadOnly);
   const Reader in{f.id(), path};
   if (!h5::exists(f.id(), std::string(layout::kH5md))) in.fail("not an H5MD file: no /h5md group");
@@ -159,8 +158,15 @@ H5mdFrame read_h5md_frame(const std::string& path, std::optional<double> time) {
   if (fr.frames == 0) in.fail(value + " holds no frames");
   const std::vector<double> times = varies ? in.times(position, fr.frames) : std::vector<double>{};
   fr.index = time && !times.empty() ? nearest(times, *time) : fr.frames - 1;
+  if (index) {
+    if (*index >= fr.frames)
+      in.fail("no frame " + std::to_string(*index) + ": " + value + " holds " + std::to_string(fr.frames) + " (0 to " +
+              std::to_string(fr.frames - 1) + ")");
+    fr.index = *index;
+  }
   if (time && times.empty() && fr.frames > 1) in.fail(position + " has no times to pick the frame nearest t = " + format_number(*time));
   if (!times.empty()) fr.time = times[fr.index];
+  fr.times = times;
   std::size_t n = 0;
   fr.position = in.per_particle(position, fr.index, fr.frames, 3, &n);
   if (n == 0) in.fail(value + " holds no particles");
@@ -173,7 +179,7 @@ H5mdFrame read_h5md_frame(const std::string& path, std::optional<double> time) {
   fr.velocity = optional(layout::kVelocity, 3);
   fr.mass = optional(layout::kMass, 1);
   fr.diameter = optional(layout::kDiameter, 1);
-  const std::vector<double> id = optional(layout::kId, 1);
+  std::vector<double> id = optional(layout::kId, 1);
   if (!id.empty()) {
     std::vector<bool> present(n);
     for (std::size_t i = 0; i < n; ++i) present[i] = id[i] != layout::kAbsentId;
@@ -181,9 +187,17 @@ H5mdFrame read_h5md_frame(const std::string& path, std::optional<double> time) {
     compact_slots(fr.velocity, present, 3);
     compact_slots(fr.mass, present, 1);
     compact_slots(fr.diameter, present, 1);
+    compact_slots(id, present, 1);
+    fr.id = std::move(id);
     if (fr.position.empty()) in.fail("frame " + std::to_string(fr.index) + " holds no particle (every id is -1)");
   }
   return fr;
 }
+
+}  // namespace
+
+H5mdFrame read_h5md_frame(const std::string& path, std::optional<double> time) { return read_frame(path, time, {}); }
+
+H5mdFrame read_h5md_frame_at(const std::string& path, std::size_t index) { return read_frame(path, {}, index); }
 
 }  // namespace coolgas

@@ -22,9 +22,11 @@ struct H5mdFrame {
   std::size_t frames = 0;      // frames of its position (1 when it does not vary in time)
   std::size_t index = 0;       // the frame read
   std::optional<double> time;  // its time, when position has a time
+  std::vector<double> times;   // every frame's time (empty when position has none)
   double L = 0;                // the box side (cubic boxes only)
   std::vector<double> position, velocity;  // 3 per particle; velocity empty when absent
   std::vector<double> mass, diameter;      // 1 per particle; empty when absent
+  std::vector<double> id;                  // 1 per particle present; empty when absent
   std::string length_unit;                 // position's `unit` attribute, "" when absent
 };
 
@@ -35,5 +37,7 @@ struct H5mdFrame {
 // several groups, a missing or misshapen element, a box that is not cubic,
 // not periodic or not three-dimensional.
 H5mdFrame read_h5md_frame(const std::string& path, std::optional<double> time);
+// Frame `index` (0-based; InputError naming the frames there are when it is beyond them).
+H5mdFrame read_h5md_frame_at(const std::string& path, std::size_t index);
 
 }  // namespace coolgas

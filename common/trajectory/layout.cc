@@ -27,4 +27,8 @@ std::optional<double> last_dump_time(hid_t file) {
 
 Layout layout_of(hid_t file) { return h5::exists(file, value_of(kId)) ? Layout::kAggregation : Layout::kGas; }
 
+bool is_coolgas(hid_t file) {
+  return h5::exists(file, std::string(kParameters)) && h5::exists(file, std::string(kPosition));
+}
+
 }  // namespace coolgas::layout

@@ -24,6 +24,7 @@ inline constexpr std::string_view kAll = "/particles/all";     // coolgas writes
 inline constexpr std::string_view kBox = "/particles/all/box";
 inline constexpr std::string_view kParameters = "/parameters";
 inline constexpr std::string_view kRestart = "/restart";
+inline constexpr std::string_view kObservables = "/observables";
 
 // Per-dump elements.
 inline constexpr std::string_view kBoxEdges = "/particles/all/box/edges";
@@ -67,6 +68,10 @@ std::string in_group(std::string_view element, std::string_view group);
 // a crash; readers leave them out.
 hsize_t complete_dumps(hid_t file);
 std::optional<double> last_dump_time(hid_t file);
+
+// A coolgas trajectory (it has /parameters and the position element), not
+// an H5MD file of another program (h5md_frame.h reads those).
+bool is_coolgas(hid_t file);
 
 enum class Layout { kGas, kAggregation };
 

@@ -26,13 +26,26 @@ struct ObservableSeries {
   std::vector<double> value;
 };
 
+// An element with `per_row` numbers in each row (total_momentum: 3), row-major.
+struct ObservableRows {
+  std::vector<double> time;
+  std::vector<double> value;
+  std::size_t per_row = 1;
+};
+
 RunInfo read_run_info(const std::string& path);
+
+// The names of the elements under /observables (e.g. "kinetic_energy"), in
+// the file's name order; empty when the file has no /observables.
+std::vector<std::string> observable_names(const std::string& path);
 
 // Reads an observable element (layout.h, e.g. layout::kKineticEnergy; a
 // scalar per row) up to the last complete dump (all rows if the file has no
 // dump). Rejects an empty element, fewer values than times, decreasing
 // times and non-finite numbers.
 ObservableSeries read_observable(const std::string& path, std::string_view element);
+// The same for an element of a scalar or a vector per row, with the same checks.
+ObservableRows read_observable_rows(const std::string& path, std::string_view element);
 
 // The ensemble check ("the same physics") is physics_difference() of
 // run_parameters.h: every field of role kPhysics is compared.

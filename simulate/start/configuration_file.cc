@@ -19,7 +19,7 @@ namespace {
 
 bool is_coolgas_trajectory(const std::string& path) {
   h5::Handle f = h5::open_file(path, h5::Mode::kReadOnly);
-  return h5::exists(f.id(), std::string(layout::kParameters)) && h5::exists(f.id(), std::string(layout::kPosition));
+  return layout::is_coolgas(f.id());
 }
 
 FileConfiguration from_coolgas(const std::string& path, std::optional<double> time) {

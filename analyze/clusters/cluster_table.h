@@ -1,0 +1,34 @@
+// One dump's rows of the coolgas-clusters tables (data-schema/tsv-tables.md,
+// "Shared table shapes"), from the cluster masses of a frame. The tool
+// writes them; the Python module (analyze/python/) returns them.
+#pragma once
+#include <span>
+#include <string>
+#include <vector>
+
+#include "analyze/clusters/mass_distribution.h"
+#include "analyze/labelling/cluster_labeller.h"
+#include "common/tsv.h"
+
+namespace coolgas {
+
+enum class ClusterTable {
+  kDistribution,  // one block per dump: t m dm N x y
+  kScaled,        // one block per dump: t x y (the paper's Fig. 3)
+  kSeries         // one row per dump: t M0 M1 M2 M_avg M_max largest_fraction
+};
+
+const std::vector<std::string>& cluster_columns(ClusterTable table);
+
+// The masses of one frame into `hist` (cleared first): the paper's clusters
+// of the particles at `positions` (x0 y0 z0 x1 ...) in a box of side L, or,
+// when `aggregate_mass` is not empty (ballistic aggregation), the
+// aggregates themselves, each of its mass rounded to whole particles.
+void fill_cluster_masses(MassHistogram& hist, ClusterLabeller& labeller, double L, std::span<const double> positions,
+                         std::span<const double> aggregate_mass);
+
+// The rows of one dump at time t in a box of side L. The series has one row
+// and no comment (it is not a block).
+TableBlock cluster_block(ClusterTable table, double t, double L, const MassHistogram& hist);
+
+}  // namespace coolgas

@@ -1,0 +1,77 @@
+// Moving C++ results into numpy arrays and checking numpy arguments, shared
+// by the binding files of the Python module. Nothing here computes physics:
+// the bindings only wrap the libraries (ARCHITECTURE.md, "analyze/python/").
+#pragma once
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "common/error.h"
+#include "common/tsv.h"
+
+namespace coolgas::python {
+
+namespace py = pybind11;
+
+// A C-contiguous float64 array, converted from any numeric array or list.
+using Doubles = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// `v` as a numpy array of `shape`, without a copy: the array owns the vector.
+template <class T>
+py::array_t<T> to_numpy(std::vector<T>&& v, std::vector<py::ssize_t> shape) {
+  auto* owned = new std::vector<T>(std::move(v));
+  py::capsule free_it(owned, [](void* p) { delete static_cast<std::vector<T>*>(p); });
+  return py::array_t<T>(shape, owned->data(), free_it);
+}
+
+// An (N, 3) array of finite numbers (positions, velocities) as x0 y0 z0 x1 ...;
+// InputError naming the argument, its shape or the first bad value.
+inline std::span<const double> xyz(const Doubles& a, const char* name) {
+  if (a.ndim() != 2 || a.shape(1) != 3)
+    throw InputError(std::string(name) + " must be an array of shape (N, 3), got " + std::to_string(a.ndim()) +
+                     " dimensions" + (a.ndim() == 2 ? " (N, " + std::to_string(a.shape(1)) + ")" : ""));
+  std::span<const double> s(a.data(), std::size_t(a.size()));
+  for (std::size_t i = 0; i < s.size(); ++i)
+    if (!std::isfinite(s[i]))
+      throw InputError(std::string(name) + "[" + std::to_string(i / 3) + ", " + std::to_string(i % 3) +
+                       "] = " + format_number(s[i]) + " is not a finite number");
+  return s;
+}
+
+// A 1-D array of finite numbers (masses, times, energies).
+inline std::span<const double> values(const Doubles& a, const char* name) {
+  if (a.ndim() != 1)
+    throw InputError(std::string(name) + " must be a 1-D array, got " + std::to_string(a.ndim()) + " dimensions");
+  std::span<const double> s(a.data(), std::size_t(a.size()));
+  for (std::size_t i = 0; i < s.size(); ++i)
+    if (!std::isfinite(s[i]))
+      throw InputError(std::string(name) + "[" + std::to_string(i) + "] = " + format_number(s[i]) +
+                       " is not a finite number");
+  return s;
+}
+
+// A table's rows as a dict {"columns", "rows" (a 2-D array), "comment"}, which
+// coolgas/_tables.py turns into a pandas DataFrame.
+inline py::dict table_dict(const std::vector<std::string>& columns, const std::vector<std::vector<double>>& rows,
+                           const std::string& comment = "") {
+  std::vector<double> flat;
+  flat.reserve(rows.size() * columns.size());
+  for (const auto& r : rows) flat.insert(flat.end(), r.begin(), r.end());
+  py::dict d;
+  d["columns"] = columns;
+  d["rows"] = to_numpy(std::move(flat), {py::ssize_t(rows.size()), py::ssize_t(columns.size())});
+  d["comment"] = comment;
+  return d;
+}
+
+// The module's parts, one per binding file.
+void bind_reading(py::module_& m);
+void bind_clusters(py::module_& m);
+void bind_velocity(py::module_& m);
+
+}  // namespace coolgas::python

@@ -1,0 +1,65 @@
+"""The analysis kernels of the coolgas tools on numpy arrays: each calls the
+C++ function the tool calls for one dump and returns the tool's columns."""
+import numpy as np
+import pandas as pd
+
+from . import _core
+from ._run import Frame
+from ._tables import frame_of
+
+
+def _frame_args(frame_or_positions, L, t):
+    """(positions, L, t, frame) from a Frame or from arrays."""
+    if isinstance(frame_or_positions, Frame):
+        f = frame_or_positions
+        return f.positions, f.L if L is None else L, f.t if t is None else t, f
+    if L is None:
+        raise TypeError("L (the box side) is required with a positions array")
+    return frame_or_positions, L, 0.0 if t is None else t, None
+
+
+def label_clusters(positions, L=None):
+    """The paper's clusters (floor(L)^3 cells of side L/floor(L); occupied
+    cells sharing a face, periodic, form a cluster): (labels, sizes).
+
+    labels[i] is the cluster of particle i, numbered by size: 0 is the
+    largest (ties by the smallest cell). sizes is a DataFrame with one row
+    per cluster in that order: cluster, mass (particles), first_cell (the
+    smallest flat cell index i + n(j + n k), n = floor(L)). Accepts a Frame."""
+    positions, L, _, _ = _frame_args(positions, L, None)
+    labels, mass, first_cell, _ = _core.label_clusters(positions, float(L))
+    sizes = pd.DataFrame({"cluster": np.arange(len(mass)), "mass": mass, "first_cell": first_cell})
+    return labels, sizes
+
+
+def clusters(frame, L=None, t=None, table="distribution", bins_per_decade=10, masses=None, slots=None):
+    """One dump's coolgas-clusters table: "distribution" (t m dm N x y),
+    "scaled" (t x y) or "series" (t M0 M1 M2 M_avg M_max largest_fraction).
+
+    frame: a Frame (ballistic aggregation: its aggregates are the clusters),
+    or positions with L (and t). masses and slots: the aggregates' masses and
+    the file's N, for arrays of a ballistic-aggregation frame. The block's
+    comment line is df.attrs["comment"]."""
+    positions, L, t, f = _frame_args(frame, L, t)
+    if f is not None and f.masses is not None and masses is None:
+        masses, slots = f.masses, f.slots
+    return frame_of(_core.cluster_table(positions, float(L), float(t), table, bins_per_decade, masses,
+                                        0 if slots is None else int(slots)))
+
+
+def velocity(frame, t=None, table="Phi", bins=120, ymax=6.0, tail_from=1.5, min_count=25):
+    """One dump's coolgas-velocity table: "Phi" (t y Phi Phi_err
+    minus_ln_Phi; y = v_alpha / v_rms, the three components pooled), "tail"
+    (t y minus_ln_Phi minus_ln_Phi_err fit) or "series" (t v_rms kappa
+    kappa_err beta beta_err tail_points). frame: a Frame or velocities (N, 3).
+    df.attrs: v_rms, kappa, kappa_err, beta, beta_err (None without a fit),
+    tail_points and the block's comment."""
+    if isinstance(frame, Frame):
+        v, t = frame.velocities, frame.t if t is None else t
+    else:
+        v, t = frame, 0.0 if t is None else t
+    d = _core.velocity_table(v, float(t), table, bins, float(ymax), float(tail_from), float(min_count))
+    df = frame_of(d)
+    for key in ("v_rms", "kappa", "kappa_err", "beta", "beta_err", "tail_points"):
+        df.attrs[key] = d[key]
+    return df

@@ -1,0 +1,138 @@
+// Reading, wrapped: TSV tables (common/tsv.h), a run's parameters and
+// observables (common/trajectory/run_info.h), the dumps of a coolgas
+// trajectory (frame_reader.h) and the frames of another program's H5MD file
+// (h5md_frame.h). Each returns plain dicts of numpy arrays; coolgas/_run.py
+// and coolgas/_tables.py make the user's objects of them.
+#include <variant>
+
+#include "analyze/python/arrays.h"
+#include "common/hdf5_file.h"
+#include "common/trajectory/frame_reader.h"
+#include "common/trajectory/h5md_frame.h"
+#include "common/trajectory/layout.h"
+#include "common/trajectory/run_info.h"
+
+namespace coolgas::python {
+namespace {
+
+py::dict read_table_dict(const std::string& path) {
+  Table t = read_table(path);
+  py::dict d = table_dict(t.columns, t.rows);
+  d["provenance"] = t.provenance;
+  d["block"] = to_numpy(std::move(t.row_block), {py::ssize_t(t.rows.size())});
+  d["source"] = t.source;
+  return d;
+}
+
+// Every /parameters field the file's model has (run_parameters.h), typed.
+py::dict parameters(const std::string& path) {
+  const RunParameters p = read_run_info(path).params;
+  py::dict d;
+  for (const ParameterField& f : run_parameter_fields()) {
+    std::visit(
+        [&](auto member) {
+          const auto& v = p.*member;
+          using V = std::decay_t<decltype(v)>;
+          if constexpr (std::is_same_v<V, std::optional<double>>) {
+            if (v) d[py::str(std::string(f.name))] = *v;
+          } else {
+            d[py::str(std::string(f.name))] = v;
+          }
+        },
+        f.member);
+  }
+  return d;
+}
+
+py::tuple observable(const std::string& path, const std::string& name) {
+  ObservableRows r = read_observable_rows(path, std::string(layout::kObservables) + "/" + name);
+  const auto rows = py::ssize_t(r.time.size());
+  py::array value = r.per_row == 1 ? py::array(to_numpy(std::move(r.value), {rows}))
+                                   : py::array(to_numpy(std::move(r.value), {rows, py::ssize_t(r.per_row)}));
+  return py::make_tuple(to_numpy(std::move(r.time), {rows}), value);
+}
+
+bool is_coolgas_file(const std::string& path) {
+  h5::Handle f = h5::open_file(path, h5::Mode::kReadOnly);
+  return layout::is_coolgas(f.id());
+}
+
+// A coolgas trajectory opened once; the dumps complete at that moment.
+class TrajectoryView {
+ public:
+  explicit TrajectoryView(const std::string& path) : traj_(path, kPosition | kVelocity | kImage | kDiameter) {}
+
+  py::dict read(std::size_t dump) const {
+    if (dump >= traj_.dump_times().size())
+      throw py::index_error("dump " + std::to_string(dump) + " out of range: the file holds " +
+                            std::to_string(traj_.dump_times().size()) + " complete dumps");
+    Frame f;
+    traj_.read(dump, f);
+    const auto n = py::ssize_t(f.particles());
+    py::dict d;
+    d["index"] = f.dump;
+    d["t"] = f.time;
+    d["step"] = f.step;
+    d["L"] = f.L;
+    d["positions"] = to_numpy(std::move(f.position), {n, 3});
+    d["velocities"] = to_numpy(std::move(f.velocity), {n, 3});
+    d["images"] = to_numpy(std::move(f.image), {n, 3});
+    if (traj_.aggregates()) {
+      d["ids"] = to_numpy(std::move(f.id), {n});
+      d["masses"] = to_numpy(std::move(f.mass), {n});
+      d["diameters"] = to_numpy(std::move(f.diameter), {n});
+    }
+    return d;
+  }
+
+  const Trajectory& trajectory() const { return traj_; }
+
+ private:
+  Trajectory traj_;
+};
+
+py::dict h5md_frame_dict(H5mdFrame f) {
+  const auto n = py::ssize_t(f.position.size() / 3);
+  py::dict d;
+  d["index"] = f.index;
+  d["frames"] = f.frames;
+  d["group"] = f.group;
+  d["t"] = f.time ? py::object(py::float_(*f.time)) : py::object(py::none());
+  d["times"] = to_numpy(std::move(f.times), {py::ssize_t(f.times.size())});
+  d["L"] = f.L;
+  d["length_unit"] = f.length_unit;
+  d["positions"] = to_numpy(std::move(f.position), {n, 3});
+  if (!f.velocity.empty()) d["velocities"] = to_numpy(std::move(f.velocity), {n, 3});
+  if (!f.mass.empty()) d["masses"] = to_numpy(std::move(f.mass), {n});
+  if (!f.diameter.empty()) d["diameters"] = to_numpy(std::move(f.diameter), {n});
+  if (!f.id.empty()) d["ids"] = to_numpy(std::move(f.id), {n});
+  return d;
+}
+
+}  // namespace
+
+void bind_reading(py::module_& m) {
+  m.def("read_table", &read_table_dict, py::arg("path"), "a TSV table: columns, rows, provenance, blocks");
+  m.def("parameters", &parameters, py::arg("path"), "the /parameters of a coolgas trajectory");
+  m.def("observable_names", &observable_names, py::arg("path"), "the elements under /observables");
+  m.def("observable", &observable, py::arg("path"), py::arg("name"),
+        "one observable element up to the last complete dump: (time, value)");
+  m.def("is_coolgas_file", &is_coolgas_file, py::arg("path"), "a coolgas trajectory, not another program's H5MD file");
+  py::class_<TrajectoryView>(m, "Trajectory", "the complete dumps of a coolgas trajectory at the moment it is opened")
+      .def(py::init<const std::string&>(), py::arg("path"))
+      .def_property_readonly("times",
+                             [](const TrajectoryView& v) {
+                               auto t = v.trajectory().dump_times();
+                               return to_numpy(std::move(t), {py::ssize_t(v.trajectory().dump_times().size())});
+                             })
+      .def_property_readonly("slots", [](const TrajectoryView& v) { return v.trajectory().particles(); })
+      .def_property_readonly("aggregates", [](const TrajectoryView& v) { return v.trajectory().aggregates(); })
+      .def("nearest", [](const TrajectoryView& v, double t) { return v.trajectory().nearest_dump(t); }, py::arg("t"))
+      .def("read", &TrajectoryView::read, py::arg("dump"));
+  m.def("h5md_frame", [](const std::string& path, std::size_t index) { return h5md_frame_dict(read_h5md_frame_at(path, index)); },
+        py::arg("path"), py::arg("index"), "frame `index` of an H5MD 1.1 file of any program");
+  m.def("h5md_frame_near", [](const std::string& path, double t) { return h5md_frame_dict(read_h5md_frame(path, t)); },
+        py::arg("path"), py::arg("t"), "the frame of an H5MD 1.1 file nearest time t");
+}
+
+}  // namespace coolgas::python

@@ -1,0 +1,57 @@
+"""Clusters: coolgas.clusters on a frame's arrays equals coolgas-clusters on
+the same file to the last bit (every table, gas and aggregation), and
+label_clusters' labels and size table agree with the tool's masses."""
+import numpy as np
+import pytest
+
+import coolgas
+from conftest import tool
+
+
+def cli_table(tmp_path, *args):
+    path = tmp_path / "cli.tsv"
+    path.write_text(tool("clusters", *args).stdout)
+    return coolgas.read_table(path)
+
+
+@pytest.mark.parametrize("table, flag", [("distribution", None), ("scaled", "--scaled"), ("series", "--series")])
+@pytest.mark.parametrize("run", ["gas", "aggregates"])
+def test_equals_the_tool(run, table, flag, request, tmp_path):
+    path = request.getfixturevalue(run)
+    frames = coolgas.open(path).frames
+    for i in (len(frames) // 2, len(frames) - 1):
+        fr = frames[i]
+        cli = cli_table(tmp_path, path, "--time", repr(fr.t), "--exact-time", *([flag] if flag else []),
+                        "--bins-per-decade", 7)
+        py = coolgas.clusters(fr, table=table, bins_per_decade=7)
+        assert list(py.columns) == list(cli.columns)
+        assert py.to_numpy().tobytes() == cli.to_numpy().tobytes()  # bit for bit
+        if table != "series":
+            assert "# " + py.attrs["comment"] in tool("clusters", path, "--time", repr(fr.t), "--bins-per-decade",
+                                                      7).stdout
+
+
+def test_labels_and_sizes_are_the_tools_clusters(gas, tmp_path):
+    fr = coolgas.open(gas).frames[-1]
+    labels, sizes = coolgas.label_clusters(fr)
+    assert len(labels) == len(fr.positions)
+    # the size table is the labels counted, largest first, covering every particle
+    np.testing.assert_array_equal(np.bincount(labels), sizes["mass"].to_numpy())
+    assert (np.diff(sizes["mass"].to_numpy()) <= 0).all() and sizes["mass"].sum() == len(labels)
+    # M_max and the cluster count per volume are the tool's
+    series = cli_table(tmp_path, gas, "--series", "--time", repr(fr.t), "--exact-time")
+    assert sizes["mass"].iloc[0] == series["M_max"].iloc[0]
+    assert len(sizes) / fr.L ** 3 == series["M0"].iloc[0]
+    # two particles in one cell share a label; a particle alone in a cube of empty cells is its own cluster
+    cells = np.floor(fr.positions / (fr.L / np.floor(fr.L))).astype(int)
+    flat = cells[:, 0] + int(np.floor(fr.L)) * (cells[:, 1] + int(np.floor(fr.L)) * cells[:, 2])
+    order = np.argsort(flat, kind="stable")
+    same_cell = flat[order][1:] == flat[order][:-1]
+    assert (labels[order][1:][same_cell] == labels[order][:-1][same_cell]).all()
+
+
+def test_face_neighbours_across_the_boundary_join():
+    # cells (0,0,0) and (9,0,0) share a face through the periodic boundary; (5,5,5) is alone
+    labels, sizes = coolgas.label_clusters([[0.5, 0.5, 0.5], [9.5, 0.5, 0.5], [5.5, 5.5, 5.5], [5.5, 6.5, 6.5]], 10.0)
+    np.testing.assert_array_equal(labels, [0, 0, 1, 2])
+    np.testing.assert_array_equal(sizes["mass"], [2, 1, 1])

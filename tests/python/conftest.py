@@ -1,0 +1,57 @@
+"""Shared runs for the Python tests: a small inelastic gas and its
+ballistic-aggregation counterpart, simulated once per test file by the CLI
+(so every comparison is Python against the tool on the same file)."""
+import os
+import subprocess
+
+import pytest
+
+BIN = os.environ["COOLGAS_BIN_DIR"]
+
+GAS = """[system]
+L = 16
+phi = 0.208
+seed = 7
+[collision]
+model = "inelastic"
+r0 = 0.1
+delta = 1e-4
+[run]
+t_end = 300
+[output]
+dumps_per_decade = 3
+"""
+
+AGGREGATES = """[system]
+N = 3000
+phi = 0.1
+seed = 2
+[collision]
+model = "aggregation"
+[run]
+t_end = 20
+"""
+
+
+def tool(name, *args, check=True):
+    """Runs bin/coolgas-<name>; the CompletedProcess (text)."""
+    return subprocess.run([os.path.join(BIN, "coolgas-" + name), *map(str, args)], capture_output=True, text=True,
+                          check=check)
+
+
+def simulate_cli(tmp, name, scene):
+    scene_path = tmp / (name + ".toml")
+    scene_path.write_text(scene)
+    out = tmp / (name + ".h5")
+    tool("simulate", "-q", scene_path, "-o", out)
+    return out
+
+
+@pytest.fixture(scope="module")
+def gas(tmp_path_factory):
+    return simulate_cli(tmp_path_factory.mktemp("gas"), "gas", GAS)
+
+
+@pytest.fixture(scope="module")
+def aggregates(tmp_path_factory):
+    return simulate_cli(tmp_path_factory.mktemp("ba"), "ba", AGGREGATES)

@@ -1,0 +1,167 @@
+"""Reading: run.parameters, run.observables and run.frames equal what h5py
+reads from the same file (the H5MD profile, data-schema/h5md-profile.md),
+read_table equals pandas on the same table, another program's H5MD file
+reads through the same objects, and a file still being written reads."""
+import os
+import subprocess
+import time
+
+import h5py
+import numpy as np
+import pandas as pd
+import pytest
+
+import coolgas
+from conftest import BIN, tool
+
+
+def test_parameters_are_the_files(gas):
+    p = coolgas.open(gas).parameters
+    with h5py.File(gas, "r") as f:
+        attrs = f["parameters"].attrs
+        for key in ("seed", "N", "L", "phi", "T0", "r0", "delta"):
+            assert p[key] == attrs[key], key
+        assert p["model"] == "inelastic" and p["program_version"] == coolgas.__version__
+        assert p["scene"] == attrs["scene"]
+    assert p["scene_dict"]["collision"]["r0"] == 0.1 and p["scene_dict"]["system"]["seed"] == 7
+    assert "time" in p["units"]
+
+
+def test_observables_are_the_files(gas):
+    obs = coolgas.open(gas).observables
+    assert obs.index.name == "t"
+    with h5py.File(gas, "r") as f:
+        for name in ("kinetic_energy", "collisions", "collisions_per_particle", "collisions_below_delta"):
+            np.testing.assert_array_equal(obs[name].to_numpy(), f[f"observables/{name}/value"][:])
+            np.testing.assert_array_equal(obs.index.to_numpy(), f[f"observables/{name}/time"][:])
+        p = f["observables/total_momentum/value"][:]
+        np.testing.assert_array_equal(obs[["total_momentum_x", "total_momentum_y", "total_momentum_z"]].to_numpy(), p)
+
+
+def test_frames_are_the_files_dumps(gas):
+    frames = coolgas.open(gas).frames
+    with h5py.File(gas, "r") as f:
+        times = f["particles/all/position/time"][:]
+        assert len(frames) == len(times)
+        np.testing.assert_array_equal(frames.times, times)
+        for i in (0, len(times) // 2, -1):
+            fr = frames[i]
+            assert fr.t == times[i]
+            np.testing.assert_array_equal(fr.positions, f["particles/all/position/value"][i])
+            np.testing.assert_array_equal(fr.velocities, f["particles/all/velocity/value"][i])
+            np.testing.assert_array_equal(fr.images, f["particles/all/image/value"][i])
+            np.testing.assert_array_equal(fr.box, np.diag(f["particles/all/box/edges/value"][i]))
+            np.testing.assert_array_equal(fr.ids, np.arange(f["parameters"].attrs["N"]))
+            assert fr.masses is None and fr.diameters is None
+        # nearest time: the earlier dump on a tie, as the tools' --time
+        mid = 0.5 * (times[2] + times[3])
+        assert frames.at(mid).index == 2 and frames.at(times[3] * 1.01).index == 3
+    with pytest.raises(IndexError):
+        frames[len(times)]
+    with pytest.raises(TypeError):
+        frames[1.5]
+
+
+def test_aggregation_frames_hold_the_live_aggregates_only(aggregates):
+    run = coolgas.open(aggregates)
+    fr = run.frames[-1]
+    with h5py.File(aggregates, "r") as f:
+        ids = f["particles/all/id/value"][-1]
+        live = ids != -1
+        assert live.sum() < len(ids)  # some have merged
+        np.testing.assert_array_equal(fr.ids, ids[live])
+        np.testing.assert_array_equal(fr.masses, f["particles/all/mass/value"][-1][live])
+        np.testing.assert_array_equal(fr.diameters, f["particles/all/diameter/value"][-1][live])
+        np.testing.assert_array_equal(fr.positions, f["particles/all/position/value"][-1][live])
+    assert fr.masses.sum() == run.parameters["N"]  # mass is conserved
+    assert "aggregates" in run.observables.columns
+
+
+def test_read_table_is_pandas_with_provenance(gas, tmp_path):
+    out = tool("energy", gas).stdout
+    path = tmp_path / "E.tsv"
+    path.write_text(out)
+    df = coolgas.read_table(path)
+    # round_trip: pandas' default float parser may miss the last bit of the shortest form
+    ref = pd.read_csv(path, sep="\t", comment="#", float_precision="round_trip")
+    pd.testing.assert_frame_equal(df, ref, check_exact=True, check_dtype=False)  # every column float64 here
+    assert df.attrs["tool"] == "coolgas-energy"
+    assert df.attrs["version"] == coolgas.__version__
+    assert df.attrs["input"] == str(gas)
+    assert df.attrs["L"] == "16"
+
+
+def test_read_table_refuses_a_ragged_table(tmp_path):
+    path = tmp_path / "bad.tsv"
+    path.write_text("t\tE\n1\t2\n3\n")
+    with pytest.raises(coolgas.InputError, match=r"bad\.tsv:3: 1 fields, expected 2"):
+        coolgas.read_table(path)
+
+
+def test_another_programs_h5md_file(tmp_path):
+    """An H5MD 1.1 file as another program writes it (group 'atoms', ids with
+    a hole, a time-dependent box, one observable), read through the same objects."""
+    path = tmp_path / "other.h5"
+    rng = np.random.default_rng(1)
+    pos = rng.uniform(0, 10, (3, 5, 3))
+    vel = rng.normal(size=(3, 5, 3))
+    with h5py.File(path, "w") as f:
+        f.create_group("h5md").attrs["version"] = [1, 1]
+        g = f.create_group("particles/atoms")
+        box = g.create_group("box")
+        box.attrs["dimension"] = 3
+        box.attrs["boundary"] = ["periodic"] * 3
+        box.create_dataset("edges/value", data=np.tile(np.eye(3) * 10, (3, 1, 1)))
+        box.create_dataset("edges/time", data=[0.0, 1.0, 2.0])
+        box.create_dataset("edges/step", data=[0, 1, 2])
+        for name, data in (("position", pos), ("velocity", vel), ("id", np.tile([4, 3, -1, 1, 0], (3, 1)))):
+            g.create_dataset(f"{name}/value", data=data)
+            g.create_dataset(f"{name}/time", data=[0.0, 1.0, 2.0])
+            g.create_dataset(f"{name}/step", data=[0, 1, 2])
+        f.create_dataset("observables/energy/value", data=[3.0, 2.0, 1.0])
+        f.create_dataset("observables/energy/time", data=[0.0, 1.0, 2.0])
+        f.create_dataset("observables/energy/step", data=[0, 1, 2])
+    run = coolgas.open(path)
+    assert not run.is_coolgas and run.parameters["group"] == "atoms" and run.parameters["L"] == 10
+    assert len(run.frames) == 3
+    fr = run.frames.at(1.2)
+    present = [0, 1, 3, 4]
+    assert fr.index == 1 and fr.t == 1.0 and fr.L == 10
+    np.testing.assert_array_equal(fr.positions, pos[1][present])
+    np.testing.assert_array_equal(fr.velocities, vel[1][present])
+    np.testing.assert_array_equal(fr.ids, [4, 3, 1, 0])
+    np.testing.assert_array_equal(run.observables["energy"].to_numpy(), [3.0, 2.0, 1.0])
+
+
+def test_a_file_being_written_reads_its_complete_dumps(tmp_path):
+    """coolgas.open while coolgas-simulate writes: every frame read is
+    complete and equal to the same dump of the finished file."""
+    scene = tmp_path / "live.toml"
+    scene.write_text("[system]\nN = 20000\nphi = 0.2\nseed = 5\n[collision]\nmodel = \"inelastic\"\nr0 = 0.5\n"
+                     "delta = 1e-4\n[run]\nt_end = 60\n[output]\ndumps_per_decade = 20\nt_min = 0.1\n")
+    out = tmp_path / "live.h5"
+    proc = subprocess.Popen([os.path.join(BIN, "coolgas-simulate"), "-q", scene, "-o", out])
+    seen = []
+    try:
+        deadline = time.time() + 120
+        while proc.poll() is None and time.time() < deadline:
+            if out.exists():
+                try:
+                    run = coolgas.open(out)
+                    obs = run.observables  # first: the frames read after hold at least its dumps
+                    frames = run.frames
+                except coolgas.InputError:  # the file exists but holds no dump yet
+                    time.sleep(0.05)
+                    continue
+                last = frames[-1]
+                seen.append((len(frames), last.t, last.velocities.copy()))
+                assert obs.index[-1] <= last.t  # observables up to the last complete dump
+            time.sleep(0.05)
+    finally:
+        proc.wait()
+    assert proc.returncode == 0
+    assert len({n for n, _, _ in seen}) >= 2, "the file was never seen growing"
+    done = coolgas.open(out).frames
+    for n, t, v in seen:
+        assert done[n - 1].t == t
+        np.testing.assert_array_equal(done[n - 1].velocities, v)
