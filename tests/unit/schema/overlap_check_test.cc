@@ -64,7 +64,9 @@ TEST(OverlapCheck, SameAsAllPairsOnRandomFrames) {
       }
     const Finding f = check(r, d, L);
     ASSERT_EQ(bool(f), pairs > 0) << frame;
-    if (pairs > 1) EXPECT_NE(f->find("(and " + std::to_string(pairs - 1) + " more)"), std::string::npos) << *f;
+    if (pairs > 1) {
+      EXPECT_NE(f->find("(and " + std::to_string(pairs - 1) + " more)"), std::string::npos) << *f;
+    }
   }
 }
 
