@@ -248,8 +248,8 @@ Handle open_file(const std::string& path, Mode mode) {
         // An HDF5 file that HDF5 will not open was most often left "open for
         // writing" by a program killed before it started SWMR writing.
         if (H5Fis_hdf5(path.c_str()) > 0)
-          throw InputError("cannot open '" + path + "': HDF5 refuses it (left open for writing by a killed program? " +
-                           "'h5clear -s " + path + "' clears that flag; else the file is damaged)");
+          throw InputError("cannot open '" + path + "': HDF5 refuses it (left by a killed writer? " +
+                           "'h5clear -s --increment " + path + "' or a --resume repairs that; else the file is damaged)");
         throw InputError("cannot open '" + path + "' as an HDF5 file (missing, unreadable or not HDF5)");
       case Mode::kReadWrite:
       case Mode::kAppend:
@@ -330,8 +330,60 @@ void release_reserve(const Handle& file) {
 
 void flush(const Handle& file) { check_status(H5Fflush(file.id(), H5F_SCOPE_GLOBAL), "flush"); }
 
+namespace {
+
+// Makes the file at least `end` bytes long, with disk blocks where the file
+// system can reserve them; returns errno or 0.
+int grow_file(int fd, off_t end) {
+  struct stat st {};
+  if (fstat(fd, &st) != 0) return errno;
+  if (st.st_size >= end) return 0;
+  const int err = posix_fallocate(fd, st.st_size, end - st.st_size);
+  if (err != EOPNOTSUPP && err != EINVAL) return err;
+  return ftruncate(fd, end) == 0 ? 0 : errno;
+}
+
+}  // namespace
+
+// The file grows first: HDF5 writes the new end into the superblock at its
+// next flush, also the one of a close after an error.
 void extend_allocation_past_file_end(const Handle& file, hsize_t margin) {
+  haddr_t eoa = 0;
+  struct stat st {};
+  const int fd = descriptor(file);
+  if (fd >= 0 && H5Fget_eoa(file.id(), &eoa) >= 0 && fstat(fd, &st) == 0) {
+    const haddr_t end = std::max<haddr_t>(eoa, static_cast<haddr_t>(st.st_size)) + margin;
+    if (const int err = grow_file(fd, static_cast<off_t>(end)); err != 0)
+      throw Error("HDF5: extend the file to its allocation", std::strerror(err));
+  }
   check_status(H5Fincrement_filesize(file.id(), margin), "extend the allocation to the file's end");
+}
+
+bool cover_recorded_allocation(const std::string& path) {
+  // Superblock version 2/3: signature (8), version, sizes of offsets and
+  // lengths, flags, then base address, extension address, end of file
+  // address (8 bytes each, little-endian) at byte 28.
+  const int fd = ::open(path.c_str(), O_RDWR | O_CLOEXEC);
+  if (fd < 0) return false;
+  unsigned char sb[36] = {};
+  bool grew = false;
+  if (pread(fd, sb, sizeof sb, 0) == static_cast<ssize_t>(sizeof sb) &&
+      std::memcmp(sb, "\x89HDF\r\n\x1a\n", 8) == 0 && (sb[8] == 2 || sb[8] == 3) && sb[9] == 8) {
+    std::uint64_t end = 0;
+    for (int i = 7; i >= 0; --i) end = (end << 8) | sb[28 + i];
+    struct stat st {};
+    if (fstat(fd, &st) == 0 && end > static_cast<std::uint64_t>(st.st_size) && end < (std::uint64_t{1} << 62)) {
+      const int err = grow_file(fd, static_cast<off_t>(end));
+      if (err == 0 && fsync(fd) == 0) {
+        grew = true;
+      } else {
+        ::close(fd);
+        throw Error("HDF5: grow '" + path + "' to its recorded size", std::strerror(err ? err : errno));
+      }
+    }
+  }
+  ::close(fd);
+  return grew;
 }
 
 hsize_t chunk_bytes(hid_t dataset) {

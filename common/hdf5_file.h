@@ -66,8 +66,21 @@ void flush(const Handle& file);
 // A writer killed in the middle of a write can leave the file's recorded end
 // of allocation (EOA) short of chunks its index already lists; HDF5 then
 // fails when it frees them (shrinking the dataset) or closes the file. Sets
-// the EOA to the file's size plus `margin` bytes, as `h5clear -i` does.
+// the EOA to the file's size plus `margin` bytes, as `h5clear -i` does, and
+// grows the file to that end at once (before the EOA reaches the superblock):
+// a file whose superblock records more than its size is refused by HDF5 as
+// truncated, so a kill or a failed write (a full disk, a size limit) after
+// the next flush must not find it shorter. Throws Error with the system's
+// reason when the file cannot grow; the file is then unchanged.
 void extend_allocation_past_file_end(const Handle& file, hsize_t margin);
+
+// A file whose superblock records an end of allocation beyond its size
+// (written by a version that grew the allocation before the file, then
+// killed or out of space) is refused by HDF5 as truncated. Grows the file
+// with zeros to the recorded end, as `h5clear --increment` would, so that it
+// opens; the bytes already there are not touched. Returns whether it grew.
+// Only files with a version 2/3 superblock at offset 0 (all coolgas writes).
+bool cover_recorded_allocation(const std::string& path);
 // The bytes of one chunk of a chunked dataset, uncompressed; 0 if not chunked.
 hsize_t chunk_bytes(hid_t dataset);
 // Whether the open file can be opened with kAppend: it is in the 1.10

@@ -145,11 +145,22 @@ void H5mdWriter::create_objects(const RunParameters& params, const DumpStorage& 
   flush_file();
 }
 
-H5mdWriter H5mdWriter::reopen(const std::string& path, const std::string* new_scene) {
+WriterLock H5mdWriter::claim(const std::string& path) {
+  WriterLock lock = WriterLock::take(path);
+  // Zeros past the last complete burst, which reopen() drops.
+  try {
+    h5::cover_recorded_allocation(path);
+  } catch (const h5::Error& e) {
+    throw WriteError("cannot write '" + path + "': " + e.cause);
+  }
+  return lock;
+}
+
+H5mdWriter H5mdWriter::reopen(const std::string& path, const std::string* new_scene, WriterLock lock) {
   ignore_file_size_signal();
   H5mdWriter w;
   w.path_ = path;
-  w.lock_ = WriterLock::take(path);  // before the status flags are cleared
+  w.lock_ = lock ? std::move(lock) : claim(path);  // before the status flags are cleared
   const bool current = check_resumable(path);
   if (new_scene || !current) w.lock_ = rewrite_through_copy(path, new_scene, !current);
   w.file_ = h5::open_file(path, h5::Mode::kAppend);

@@ -94,7 +94,14 @@ class H5mdWriter {
   // conversion of a file of an earlier version, are made in a copy of the
   // file (FILE.partial, moved into place whole): a kill at any moment of a
   // reopen leaves a file that resumes.
-  static H5mdWriter reopen(const std::string& path, const std::string* new_scene = nullptr);
+  // `lock`: the file's writer lock, taken by claim() before the file was
+  // read (taken here when not given).
+  static H5mdWriter reopen(const std::string& path, const std::string* new_scene = nullptr, WriterLock lock = {});
+  // The first step of a resume, before anything is read: takes the writer
+  // lock (InputError if another process writes the file) and grows a file
+  // an earlier version left recording more bytes than it holds
+  // (h5::cover_recorded_allocation), which HDF5 would refuse to open.
+  static WriterLock claim(const std::string& path);
 
   void add_observables(const ObservableRow& row) { pending_.push_back(row); }
   // Writes the buffered observables, then the frame, flushes, then its restart row, and flushes.

@@ -394,6 +394,8 @@ int resume(const SimulationRequest& req) {
       throw InputError("--set " + key + " cannot change on --resume: only run.* and output.* keys can");
   }
   const double interval = checkpoint_interval();
+  // Before the file is read: a second --resume of it is refused at once.
+  WriterLock lock = H5mdWriter::claim(req.resume);
   ResumePoint rp = read_resume_point(req.resume);
   const Scene scene = parse_scene(rp.scene_toml, req.resume + ":/parameters/scene", req.overrides);
   check_valid_to_resume(req.resume);
@@ -401,7 +403,7 @@ int resume(const SimulationRequest& req) {
     // Killed after its last dump, the file still has the killed writer's
     // "open for writing" flags: opening it to append and closing it clears
     // them, so that every program reads it.
-    H5mdWriter::reopen(req.resume);
+    H5mdWriter::reopen(req.resume, nullptr, std::move(lock));
     std::cerr << "coolgas-simulate: '" << req.resume << "' already reached run.t_end = " << scene.t_end
               << "; nothing to do (extend it with --set run.t_end=...)\n";
     return kExitOk;
@@ -424,7 +426,7 @@ int resume(const SimulationRequest& req) {
   // that changes it copies the file: h5md_writer.h).
   const std::string text = scene.to_toml();
   const bool changed = text != parse_scene(rp.scene_toml, req.resume + ":/parameters/scene", {}).to_toml();
-  H5mdWriter writer = H5mdWriter::reopen(req.resume, changed ? &text : nullptr);
+  H5mdWriter writer = H5mdWriter::reopen(req.resume, changed ? &text : nullptr, std::move(lock));
   Driver driver(scene, *engine, writer, req.resume, req.quiet, interval);
   driver.resume_after(rp.time, ck ? ck->pending : std::vector<ObservableRow>{});
   return drive(driver, scene);

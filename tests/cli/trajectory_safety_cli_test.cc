@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -178,6 +179,70 @@ TEST_F(TrajectorySafety, ADiskWithAFewKilobytesFreeIsExit5LeavingNothing) {
     EXPECT_EQ(test::line_count(r.err), 1) << r.err;
     EXPECT_EQ(left, "") << kb << " kB";
   }
+}
+
+// The same run as `whole`, stopped at its first dumps, then extended.
+std::string same_as(const std::string& a, const std::string& b) {
+  const auto d = run_command("h5diff " + a + " " + b + " /particles && h5diff " + a + " " + b + " /observables");
+  return d.exit_code == 0 ? "" : d.out + d.err;
+}
+
+// A file-size limit (as a full disk) met by an extension, in its first
+// moments (the file grown for the interrupted burst's chunks, before
+// HDF5 records that end) or later: exit 5 with one line, the file as valid
+// as before, and a --resume without the limit carries it to the
+// uninterrupted run's result bit for bit. (The end of allocation once reached
+// the superblock before the file had grown: HDF5 then refused the file as
+// truncated, for good.)
+TEST_F(TrajectorySafety, AWriteFailingDuringAnExtensionLeavesTheRunResumable) {
+  const std::string part = dir + "/part.h5";
+  ASSERT_EQ(run_command(bin("coolgas-simulate") + " " + scene + " -q -o " + part + " --set run.t_end=3").exit_code, 0);
+  const auto kb = std::filesystem::file_size(part) / 1024;
+  for (const auto extra : {8, 400, 3000}) {
+    const std::string out = dir + "/extended_" + std::to_string(extra) + ".h5";
+    std::filesystem::copy_file(part, out);
+    std::filesystem::copy_file(part + ".checkpoint", out + ".checkpoint");
+    const auto r = run_command("ulimit -f " + std::to_string(kb + extra) + "; " + bin("coolgas-simulate") +
+                               " -q --resume " + out + " --set run.t_end=300");
+    EXPECT_EQ(r.exit_code, kExitWrite) << "+" << extra << " kB: " << r.err;
+    EXPECT_EQ(test::line_count(r.err), 1) << r.err;
+    EXPECT_EQ(validate(out), "") << "+" << extra << " kB";
+    const auto resumed = run_command(bin("coolgas-simulate") + " -q --resume " + out + " --set run.t_end=300");
+    EXPECT_EQ(resumed.exit_code, 0) << resumed.err;
+    EXPECT_EQ(same_as(dir + "/whole.h5", out), "") << "+" << extra << " kB";
+  }
+}
+
+// A file whose superblock records more bytes than it holds (what the defect
+// above left) is refused by HDF5 as truncated: the tools say what repairs it,
+// and --resume repairs it itself (zeros up to the recorded end, past the last
+// complete dump) and continues exactly.
+TEST_F(TrajectorySafety, AFileRecordingMoreBytesThanItHoldsIsRepairedByResume) {
+  const std::string out = dir + "/short.h5";
+  ASSERT_EQ(run_command(bin("coolgas-simulate") + " " + scene + " -q -o " + out + " --set run.t_end=3").exit_code, 0);
+  const auto size = std::filesystem::file_size(out);
+  ASSERT_EQ(run_command("h5clear --increment=65536 " + out).exit_code, 0);
+  std::filesystem::resize_file(out, size);
+  const auto v = run_command(bin("coolgas-validate") + " " + out);
+  EXPECT_EQ(v.exit_code, 2) << v.err;
+  EXPECT_NE(v.err.find("'h5clear -s "), std::string::npos) << v.err;
+  EXPECT_NE(v.err.find("' or a --resume repairs that"), std::string::npos) << v.err;
+  const auto r = run_command(bin("coolgas-simulate") + " -q --resume " + out + " --set run.t_end=300");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(same_as(dir + "/whole.h5", out), "");
+}
+
+// While one --resume runs, a second of the same file is refused. (The lock
+// once went with the first close of any other descriptor of the file, which
+// a resume makes by reading it: two writers then wrote one file.)
+TEST_F(TrajectorySafety, ASecondResumeOfARunningResumeIsRefused) {
+  const std::string out = dir + "/twice.h5";
+  ASSERT_EQ(run_command(bin("coolgas-simulate") + " " + scene + " -q -o " + out + " --set run.t_end=3").exit_code, 0);
+  const auto r = run_command("(" + bin("coolgas-simulate") + " -q --resume " + out +
+                             " --set run.t_end=1e8 & p=$!; sleep 1; " + bin("coolgas-simulate") + " -q --resume " + out +
+                             " --set run.t_end=1e8; echo second=$?; kill -KILL $p; wait $p)");
+  EXPECT_NE(r.out.find("second=2"), std::string::npos) << r.out << r.err;
+  EXPECT_NE(r.err.find("is being written by another coolgas-simulate"), std::string::npos) << r.err;
 }
 
 }  // namespace
