@@ -109,7 +109,6 @@ class AggregationEngine final : public EngineBase {
   void advance(int i);
   bool rebuild_grid(int* follow = nullptr);
   int order_in_space(int follow = -1);
-  double typical_width() const;
   void place(int i, int fine);
   int fine_cell(int i) const { return large_.contains(i) ? large_.fine_cell(i) : grid_->cell(i); }
   int reach_of(int i) const;

@@ -111,7 +111,7 @@ struct NeighbourCell {
 // f(NeighbourCell) for the cells around c at offsets o[d] in [lo[d], hi[d]]
 // (each within -1..1; z slowest, x fastest) of a grid of n³ cells in a box
 // of side L (L only sets the shifts). The engine's partner search has a
-// faster copy for interior cells (neighbour_cells below), tested against it;
+// faster copy for interior cells (neighbour_slots below), tested against it;
 // the centre grid's overlap test (rsa_centre_grid.h) walks nearest cells
 // first instead, since it stops at the first hit.
 template <class F>

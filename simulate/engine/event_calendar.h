@@ -117,7 +117,6 @@ class EventCalendar {
 
   // Statistics for benchmarks: how many years were started.
   std::int64_t years() const { return years_; }
-  double bucket_width() const { return width_; }
 
  private:
   static constexpr std::int32_t kNone = -1;

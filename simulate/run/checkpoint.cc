@@ -11,6 +11,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "common/durable_file.h"
 #include "common/error.h"
 #include "common/memory.h"
 #include "simulate/engine/state_archive.h"
@@ -46,14 +47,6 @@ std::vector<char> bytes_of(const std::string& s) { return {s.begin(), s.end()}; 
 [[noreturn]] void fail_io(const std::string& what, const std::string& path, int error) {
   throw WriteError("cannot write checkpoint '" + path + "': " + what + " (" + std::strerror(error) +
                    "); the previous checkpoint is kept");
-}
-
-// Makes a rename inside `dir` durable.
-void sync_directory(const std::string& dir) {
-  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY);
-  if (fd < 0) return;  // best effort: the data itself is already on disk
-  ::fsync(fd);
-  ::close(fd);
 }
 
 [[noreturn]] void refuse(const std::string& path, const std::string& why) {
