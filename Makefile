@@ -13,14 +13,15 @@ CMAKE_FLAGS = -DCMAKE_BUILD_TYPE=Release $(if $(filter 1,$(NATIVE)),-DCOOLGAS_NA
 # gnuplot for the pipelines' figures, help2man for the manual pages, the
 # Python package's build and its numpy/pandas), which
 # `make demo` installs; and what only the tests need (Python readers that
-# check real clients open our files, pytest), which `make test` adds. Both
+# check real clients open our files, pytest, clang-tidy for the lint test),
+# which `make test` adds. Both
 # without recommended packages.
 BUILD_PACKAGES := cmake make g++ pkg-config git \
   libhdf5-dev hdf5-tools libfftw3-dev libgsl-dev libeigen3-dev \
   libgtest-dev libcli11-dev libtoml11-dev \
   gnuplot-nox help2man man-db \
   python3 python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pandas
-TEST_PACKAGES := python3-h5py python3-mdanalysis python3-ase python3-matplotlib python3-pytest
+TEST_PACKAGES := python3-h5py python3-mdanalysis python3-ase python3-matplotlib python3-pytest clang-tidy-15
 
 PREFIX ?= /usr/local
 

@@ -40,7 +40,7 @@ class StdoutBuffer : public std::streambuf {
       if (fd > 1) ::dup2(fd, 1), ::close(fd);
     }
   }
-  ~StdoutBuffer() override { sync(); }
+  ~StdoutBuffer() override { StdoutBuffer::sync(); }
   int error() const { return error_; }
   // Flushes and closes fd 1, so that an error reported only at close (NFS,
   // quota) is not lost either. Returns the first error, or 0.

@@ -11,7 +11,8 @@ PYBIND11_MODULE(_core, m) {
   // InputError (the tools' exit code 2) becomes coolgas.InputError, a
   // ValueError, with the one-line message the tool prints after "error: ".
   static py::exception<coolgas::InputError> input_error(m, "InputError", PyExc_ValueError);
-  py::register_exception_translator([](std::exception_ptr p) {
+  // By value: pybind11 takes a plain function of std::exception_ptr.
+  py::register_exception_translator([](std::exception_ptr p) {  // NOLINT(performance-unnecessary-value-param)
     try {
       if (p) std::rethrow_exception(p);
     } catch (const coolgas::InputError& e) {

@@ -610,7 +610,8 @@ Scene parse_scene(const std::string& toml_text, const std::string& source, const
     kv[key] = value;
     overridden.insert(key);
   }
-  for (const auto& [key, value] : kv) {
+  for (const auto& entry : kv) {
+    const std::string& key = entry.first;  // a name, not a binding: lambdas capture it (clang before 16 cannot)
     const bool known = std::any_of(scene_keys().begin(), scene_keys().end(),
                                    [&](const SceneKey& k) { return key == k.key; });
     if (!known) throw InputError("unknown scene key '" + shown(key) + "'" + did_you_mean(key));

@@ -28,7 +28,7 @@ class Search {
 
   bool corners() const {
     for (int b = 0; b < 8; ++b)
-      if (free({b & 1 ? hi_.x : lo_.x, b & 2 ? hi_.y : lo_.y, b & 4 ? hi_.z : lo_.z})) return true;
+      if (is_free({b & 1 ? hi_.x : lo_.x, b & 2 ? hi_.y : lo_.y, b & 4 ? hi_.z : lo_.z})) return true;
     return false;
   }
 
@@ -42,7 +42,7 @@ class Search {
         q[b1] = e & 1 ? hi_[b1] : lo_[b1];
         q[b2] = e & 2 ? hi_[b2] : lo_[b2];
         q[a] = (p.c - p.n[b1] * q[b1] - p.n[b2] * q[b2]) / p.n[a];
-        if (inside(q) && free(q)) return true;
+        if (inside(q) && is_free(q)) return true;
       }
     }
     return false;
@@ -60,7 +60,7 @@ class Search {
         const double u = p.c - p.n[a] * q[a], v = r.c - r.n[a] * q[a];
         q[b1] = (u * r.n[b2] - v * p.n[b2]) / det;
         q[b2] = (p.n[b1] * v - r.n[b1] * u) / det;
-        if (inside(q) && free(q)) return true;
+        if (inside(q) && is_free(q)) return true;
       }
     }
     return false;
@@ -73,7 +73,7 @@ class Search {
     if (det == 0) return false;
     Vec3 q;
     for (int d = 0; d < 3; ++d) q[d] = (p.c * rs[d] + r.c * sp[d] + s.c * pr[d]) / det;
-    return inside(q) && free(q);
+    return inside(q) && is_free(q);
   }
 
  private:
@@ -82,7 +82,7 @@ class Search {
       if (q[d] < lo_[d] - slack_ || q[d] > hi_[d] + slack_) return false;
     return true;
   }
-  bool free(const Vec3& q) const {
+  bool is_free(const Vec3& q) const {
     for (const Vec3& c : centres_) {
       const Vec3 d = minus(q, c);
       if (dot(d, d) < 1.0 - kTolerance) return false;

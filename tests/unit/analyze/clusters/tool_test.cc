@@ -21,7 +21,7 @@ namespace {
 // x face (two centres share a cell), a mass-3 line along z, two singletons.
 // The second frame moves everything into one cell: one cluster of mass 9.
 std::string write_run(const std::string& name) {
-  const std::string path = test::scratch_dir(name) + "/run.h5";
+  std::string path = test::scratch_dir(name) + "/run.h5";
   RunParameters p;
   p.N = 9;
   p.L = 6.3;

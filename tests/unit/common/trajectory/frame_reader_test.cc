@@ -16,7 +16,7 @@ namespace {
 constexpr int kN = 4;
 
 std::string write_run(const std::string& name, int frames) {
-  const std::string path = test::scratch_dir(name) + "/run.h5";
+  std::string path = test::scratch_dir(name) + "/run.h5";
   RunParameters p;
   p.N = kN;
   p.L = 7.5;

@@ -16,7 +16,7 @@ namespace {
 // Three frames of four particles in group "gas"; frame f has positions 0.5 i + f
 // and box side 10 + f; time = 10 + 2.5 f through a scalar step with offset.
 std::string write_file(const std::string& name) {
-  const std::string path = test::scratch_dir(name) + "/other.h5";
+  std::string path = test::scratch_dir(name) + "/other.h5";
   h5::Handle f = h5::open_file(path, h5::Mode::kCreateTruncate);
   for (const char* g : {"h5md", "particles/gas/position", "particles/gas/box/edges"}) h5::create_group(f.id(), g);
   h5::Handle value = h5::create_series(f.id(), "particles/gas/position/value", h5::Type::kFloat64, {4, 3}, 4);

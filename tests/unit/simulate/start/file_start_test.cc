@@ -37,7 +37,7 @@ XyzFrame lattice(int n, bool velocities) {
 }
 
 std::string write_xyz(const std::string& dir, const XyzFrame& f) {
-  const std::string path = dir + "/start.xyz";
+  std::string path = dir + "/start.xyz";
   std::ofstream out(path);
   write_xyz_frame(out, f, {});
   return path;
@@ -189,7 +189,7 @@ TEST(FileStart, BadConfigurationsAreRefusedNamingWhatIsWrong) {
 
 // Another program's H5MD file of one frame (the lattice of `f`) at time `t`.
 std::string write_h5md(const std::string& dir, const XyzFrame& f, double t) {
-  const std::string path = dir + "/other.h5";
+  std::string path = dir + "/other.h5";
   h5::Handle file = h5::open_file(path, h5::Mode::kCreateTruncate);
   for (const char* g : {"h5md", "particles/all/position", "particles/all/box"}) h5::create_group(file.id(), g);
   const hsize_t n = f.position.size() / 3;
