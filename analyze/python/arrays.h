@@ -7,6 +7,8 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <initializer_list>
+#include <utility>
 #include <span>
 #include <string>
 #include <vector>
@@ -53,6 +55,19 @@ inline std::span<const double> values(const Doubles& a, const char* name) {
       throw InputError(std::string(name) + "[" + std::to_string(i) + "] = " + format_number(s[i]) +
                        " is not a finite number");
   return s;
+}
+
+// The value named `name` among `choices`; InputError "<what> = '<name>' is
+// not a <kind>; allowed: a, b, c" otherwise.
+template <class E>
+E choice(const std::string& name, std::initializer_list<std::pair<const char*, E>> choices, const char* what,
+         const char* kind) {
+  std::string allowed;
+  for (const auto& [n, value] : choices) {
+    if (name == n) return value;
+    allowed += (allowed.empty() ? "" : ", ") + std::string(n);
+  }
+  throw InputError(std::string(what) + " = '" + shown(name) + "' is not " + kind + "; allowed: " + allowed);
 }
 
 // A table's rows as a dict {"columns", "rows" (a 2-D array), "comment"}, which

@@ -8,10 +8,11 @@ namespace coolgas::python {
 namespace {
 
 ShapeTable table_of(const std::string& name) {
-  if (name == "mass_radius") return ShapeTable::kMassRadius;
-  if (name == "series") return ShapeTable::kSeries;
-  if (name == "clusters") return ShapeTable::kClusters;
-  throw InputError("table = '" + shown(name) + "' is not a shape table; allowed: mass_radius, series, clusters");
+  return choice<ShapeTable>(name,
+                            {{"mass_radius", ShapeTable::kMassRadius},
+                             {"series", ShapeTable::kSeries},
+                             {"clusters", ShapeTable::kClusters}},
+                            "table", "a shape table");
 }
 
 // Gas: the paper's clusters of `positions`; aggregation: `masses` (the

@@ -7,10 +7,11 @@ namespace coolgas::python {
 namespace {
 
 StructureTable table_of(const std::string& name) {
-  if (name == "spectrum") return StructureTable::kSpectrum;
-  if (name == "series") return StructureTable::kSeries;
-  if (name == "correlation") return StructureTable::kCorrelation;
-  throw InputError("table = '" + shown(name) + "' is not a structure table; allowed: spectrum, series, correlation");
+  return choice<StructureTable>(name,
+                                {{"spectrum", StructureTable::kSpectrum},
+                                 {"series", StructureTable::kSeries},
+                                 {"correlation", StructureTable::kCorrelation}},
+                                "table", "a structure table");
 }
 
 py::dict table(const Doubles& positions, double L, double t, const std::string& table,

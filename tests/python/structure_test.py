@@ -7,7 +7,7 @@ import pandas as pd
 import pytest
 
 import coolgas
-from conftest import tool
+from conftest import assert_the_tool_per_dump, tool
 
 FLAGS = {"spectrum": [], "series": ["--series"], "correlation": ["--correlation"]}
 
@@ -21,17 +21,10 @@ def cli_table(tmp_path, *args):
 @pytest.mark.parametrize("table", ["spectrum", "series", "correlation"])
 @pytest.mark.parametrize("run", ["gas", "aggregates"])
 def test_equals_the_tool(run, table, request, tmp_path):
-    path = request.getfixturevalue(run)
-    frames = coolgas.open(path).frames
-    for i in (len(frames) // 2, len(frames) - 1):
-        fr = frames[i]
-        cli, out = cli_table(tmp_path, path, "--time", repr(fr.t), "--exact-time", "--direct-shells", 2,
-                             "--peak-fraction", 0.15, *FLAGS[table])
-        py = coolgas.structure(fr, table=table, direct_shells=2, peak_fraction=0.15)
-        assert list(py.columns) == list(cli.columns)
-        assert py.to_numpy().tobytes() == cli.to_numpy().tobytes()  # bit for bit
-        if table != "series":
-            assert "# " + py.attrs["comment"] + "\n" in out
+    assert_the_tool_per_dump(request.getfixturevalue(run), "structure",
+                             ["--direct-shells", 2, "--peak-fraction", 0.15, *FLAGS[table]],
+                             lambda fr: coolgas.structure(fr, table=table, direct_shells=2, peak_fraction=0.15),
+                             tmp_path, block=table != "series")
 
 
 def test_arrays_and_a_chosen_grid_equal_the_tool(gas, tmp_path):
