@@ -43,6 +43,10 @@ void TsvWriter::block(const std::string& comment) {
 
 void TsvWriter::write(const TableBlock& b) {
   block(b.comment);
+  append(b);
+}
+
+void TsvWriter::append(const TableBlock& b) {
   for (const auto& r : b.rows) row(r);
 }
 

@@ -47,6 +47,8 @@ class TsvWriter {
   void block(const std::string& comment = "");
   // block(b.comment), then its rows.
   void write(const TableBlock& b);
+  // Its rows only, in the current block: a series, one row per dump.
+  void append(const TableBlock& b);
   std::size_t columns() const { return ncol_; }
 
  private:

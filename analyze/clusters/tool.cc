@@ -46,11 +46,8 @@ void run_clusters(const ClustersOptions& opt, std::ostream& final_out) {
     fill_cluster_masses(hist, labeller, frame.L, frame.position,
                         traj.aggregates() ? std::span<const double>(frame.mass) : std::span<const double>());
     const TableBlock b = cluster_block(table, frame.time, frame.L, hist);
-    if (table == ClusterTable::kSeries) {
-      for (const auto& r : b.rows) out.row(r);
-    } else {
-      out.write(b);
-    }
+    if (table == ClusterTable::kSeries) out.append(b);  // a row per dump, not a block
+    else out.write(b);
   }
   final_out << os.str();
 }

@@ -36,10 +36,13 @@ Window default_window(const std::vector<Table>& tables, const FitColumns& column
   return w;
 }
 
-std::vector<SizeEnsemble> load_sizes(CollapseOptions& o) {
-  if (o.inputs.empty()) throw InputError("no E(t) tables given (usage: coolgas-collapse TABLE...)");
-  std::vector<Table> tables;
-  for (const auto& path : o.inputs) tables.push_back(read_table(path));
+void check_min_overlap(const CollapseOptions& o) {
+  if (!(o.search.min_overlap_decades >= 0))
+    throw InputError("--min-overlap " + format_number(o.search.min_overlap_decades) + " is not allowed; it must be >= 0");
+}
+
+std::vector<SizeEnsemble> load_sizes(const std::vector<Table>& tables, CollapseOptions& o) {
+  if (tables.empty()) throw InputError("no E(t) tables given (usage: coolgas-collapse TABLE...)");
   if (o.auto_window) o.t_window = default_window(tables, o.columns);
   std::vector<ScalingCurve> curves;
   for (const auto& table : tables) curves.push_back(make_scaling_curve(table, o.columns, o.t_window));
@@ -59,13 +62,7 @@ std::string uncertainty_text(const CollapseFit& fit, std::uint64_t seed) {
   return kind + std::to_string(fit.replicas) + " replicas, seed " + std::to_string(seed);
 }
 
-struct Results {
-  double theta, z, quality;
-  std::optional<CollapseFit> fit;
-  std::optional<PowerLawFit> eta;
-};
-
-Provenance collapse_provenance(const CollapseOptions& o, const std::vector<SizeEnsemble>& sizes, const Results& r) {
+Provenance collapse_provenance(const CollapseOptions& o, const std::vector<SizeEnsemble>& sizes, const CollapseResult& r) {
   Provenance p;
   for (const auto& s : sizes)
     for (const auto& c : s.runs) p.emplace_back("input", c.source + " (L = " + format_number(c.L) + ")");
@@ -92,21 +89,22 @@ Provenance collapse_provenance(const CollapseOptions& o, const std::vector<SizeE
   return p;
 }
 
-void write_curves(const std::vector<ScalingCurve>& curves, const Results& r, const Provenance& p, std::ostream& out) {
-  TsvWriter w(out, kTool, p, {"x", "y", "L", "t", "E"});
+std::vector<TableBlock> curve_blocks(const std::vector<ScalingCurve>& curves, const CollapseResult& r) {
+  std::vector<TableBlock> blocks;
   for (const auto& c : curves) {
     // No "# L = ..." block comment: before the first row read_table would take
     // it for the column line; the L column says it instead.
-    w.block();
+    TableBlock& b = blocks.emplace_back();
     const double sx = std::exp(c.ln_x_shift(r.z)), sy = std::exp(c.ln_y_shift(r.theta, r.z));
-    for (std::size_t i = 0; i < c.t.size(); ++i) w.row({c.t[i] * sx, c.E[i] * sy, c.L, c.t[i], c.E[i]});
+    for (std::size_t i = 0; i < c.t.size(); ++i) b.rows.push_back({c.t[i] * sx, c.E[i] * sy, c.L, c.t[i], c.E[i]});
   }
+  return blocks;
 }
 
 // Exponents so large that a scaled point overflows (--theta 1e308: E
 // L^(z theta) = inf) or underflows to 0 would write inf, nan or 0 where the
 // table promises a number: refused with one line before anything is written.
-void check_scaled_points(const std::vector<ScalingCurve>& curves, const Results& r) {
+void check_scaled_points(const std::vector<ScalingCurve>& curves, const CollapseResult& r) {
   for (const auto& c : curves)
     for (std::size_t i = 0; i < c.t.size(); ++i) {
       const double x = c.t[i] * std::exp(c.ln_x_shift(r.z)), y = c.E[i] * std::exp(c.ln_y_shift(r.theta, r.z));
@@ -117,27 +115,27 @@ void check_scaled_points(const std::vector<ScalingCurve>& curves, const Results&
     }
 }
 
-void write_summary(const CollapseOptions& o, const Results& r, const Provenance& p, std::ostream& out) {
-  std::vector<std::string> names{"theta", "theta_err", "z", "z_err", "quality"};
+void summarise(const CollapseOptions& o, CollapseResult& r) {
+  r.columns = {"theta", "theta_err", "z", "z_err", "quality"};
   std::vector<double> values{r.theta, r.fit ? r.fit->theta_err : 0, r.z, r.fit ? r.fit->z_err : 0, r.quality};
   if (o.eta_window) {  // the columns stay when the fit is impossible, so readers find them
     const double nan = std::nan("");
-    names.insert(names.end(), {"eta", "eta_err"});
+    r.columns.insert(r.columns.end(), {"eta", "eta_err"});
     values.insert(values.end(), {r.eta ? r.eta->theta : nan, r.eta ? r.eta->theta_err : nan});
   }
-  TsvWriter w(out, kTool, p, names);
-  w.row(values);
+  r.blocks = {TableBlock{"", {values}}};
 }
 
 }  // namespace
 
-void write_collapse_table(const CollapseOptions& options, std::ostream& out) {
+CollapseResult collapse_tables(const std::vector<Table>& tables, const CollapseOptions& options) {
+  check_min_overlap(options);
   CollapseOptions o = options;  // the default window, once chosen, goes into the provenance
-  if (!(o.search.min_overlap_decades >= 0))
-    throw InputError("--min-overlap " + format_number(o.search.min_overlap_decades) + " is not allowed; it must be >= 0");
-  const auto sizes = load_sizes(o);
+  const auto sizes = load_sizes(tables, o);
   const auto curves = mean_curves(sizes);
-  Results r{o.theta, o.z, 0, std::nullopt, std::nullopt};
+  CollapseResult r;
+  r.theta = o.theta;
+  r.z = o.z;
   if (o.optimize) {
     CollapseSearch s = o.search;
     s.theta0 = o.theta;
@@ -149,9 +147,26 @@ void write_collapse_table(const CollapseOptions& options, std::ostream& out) {
   r.quality = collapse_quality(curves, r.theta, r.z, o.search.min_overlap_decades);
   if (o.eta_window) r.eta = fit_tail_exponent(curves, r.theta, r.z, *o.eta_window);
   check_scaled_points(curves, r);
-  const Provenance p = collapse_provenance(o, sizes, r);
-  if (o.summary) write_summary(o, r, p, out);
-  else write_curves(curves, r, p, out);
+  r.provenance = collapse_provenance(o, sizes, r);
+  if (o.summary) {
+    summarise(o, r);
+  } else {
+    r.columns = {"x", "y", "L", "t", "E"};
+    r.blocks = curve_blocks(curves, r);
+  }
+  return r;
+}
+
+void write_collapse_table(const CollapseOptions& options, std::ostream& out) {
+  check_min_overlap(options);  // before any table is read
+  std::vector<Table> tables;
+  for (const auto& path : options.inputs) tables.push_back(read_table(path));
+  const CollapseResult r = collapse_tables(tables, options);
+  TsvWriter w(out, kTool, r.provenance, r.columns);
+  for (const auto& b : r.blocks) {
+    if (options.summary) w.append(b);
+    else w.write(b);
+  }
 }
 
 }  // namespace coolgas

@@ -8,6 +8,8 @@
 
 #include "analyze/collapse/optimize.h"
 #include "analyze/curves/fit_data.h"
+#include "analyze/curves/power_law.h"
+#include "common/tsv.h"
 
 namespace coolgas {
 
@@ -24,6 +26,21 @@ struct CollapseOptions {
   bool seed_weights = false;        // weigh the collapse by the scatter of each L's runs (seed_weights.h)
 };
 
+// The collapse of E(t) tables already read (one or more per L; options.inputs
+// unused): its provenance and the table's columns and blocks, one per L in
+// increasing L, or the summary's one row. The tool writes it; the Python
+// module (analyze/python/) returns it.
+struct CollapseResult {
+  Provenance provenance;
+  std::vector<std::string> columns;
+  std::vector<TableBlock> blocks;
+  double theta = 0, z = 0, quality = 0;
+  std::optional<CollapseFit> fit;   // with --optimize
+  std::optional<PowerLawFit> eta;   // with an eta window, when 3 or more points lie in it
+};
+CollapseResult collapse_tables(const std::vector<Table>& tables, const CollapseOptions& options);
+
+// Reads options.inputs and writes the table.
 void write_collapse_table(const CollapseOptions& options, std::ostream& out);
 
 }  // namespace coolgas

@@ -7,6 +7,8 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <initializer_list>
+#include <utility>
 #include <span>
 #include <string>
 #include <vector>
@@ -55,6 +57,19 @@ inline std::span<const double> values(const Doubles& a, const char* name) {
   return s;
 }
 
+// The value named `name` among `choices`; InputError "<what> = '<name>' is
+// not a <kind>; allowed: a, b, c" otherwise.
+template <class E>
+E choice(const std::string& name, std::initializer_list<std::pair<const char*, E>> choices, const char* what,
+         const char* kind) {
+  std::string allowed;
+  for (const auto& [n, value] : choices) {
+    if (name == n) return value;
+    allowed += (allowed.empty() ? "" : ", ") + std::string(n);
+  }
+  throw InputError(std::string(what) + " = '" + shown(name) + "' is not " + kind + "; allowed: " + allowed);
+}
+
 // A table's rows as a dict {"columns", "rows" (a 2-D array), "comment"}, which
 // coolgas/_tables.py turns into a pandas DataFrame.
 inline py::dict table_dict(const std::vector<std::string>& columns, const std::vector<std::vector<double>>& rows,
@@ -69,9 +84,39 @@ inline py::dict table_dict(const std::vector<std::string>& columns, const std::v
   return d;
 }
 
+// A table as common/tsv.h reads it, from `columns` and a 2-D array of rows
+// (one block): what a tool given a TSV file works on. InputError, as
+// read_table's, for a wrong shape or a value that is not a finite number.
+inline Table table_of(const std::vector<std::string>& columns, const Doubles& rows, const std::string& source,
+                      Provenance provenance = {}) {
+  if (rows.ndim() != 2 || rows.shape(1) != py::ssize_t(columns.size()))
+    throw InputError(source + ": rows must be an array of shape (n, " + std::to_string(columns.size()) +
+                     ") for the columns given, got " + std::to_string(rows.ndim()) + " dimensions" +
+                     (rows.ndim() == 2 ? " (n, " + std::to_string(rows.shape(1)) + ")" : ""));
+  Table t;
+  t.source = source;
+  t.provenance = std::move(provenance);
+  t.columns = columns;
+  const auto* v = rows.data();
+  for (py::ssize_t r = 0; r < rows.shape(0); ++r) {
+    t.rows.emplace_back(v + r * rows.shape(1), v + (r + 1) * rows.shape(1));
+    for (std::size_t c = 0; c < columns.size(); ++c)
+      if (!std::isfinite(t.rows.back()[c]))
+        throw InputError(source + ": " + columns[c] + " = " + format_number(t.rows.back()[c]) + " in row " +
+                         std::to_string(r + 1) + " is not a finite number");
+    t.row_block.push_back(0);
+  }
+  if (t.rows.empty()) throw InputError(source + ": empty table (no data rows)");
+  return t;
+}
+
 // The module's parts, one per binding file.
 void bind_reading(py::module_& m);
 void bind_clusters(py::module_& m);
 void bind_velocity(py::module_& m);
+void bind_structure(py::module_& m);
+void bind_shape(py::module_& m);
+void bind_collapse(py::module_& m);
+void bind_smoluchowski(py::module_& m);
 
 }  // namespace coolgas::python

@@ -8,10 +8,11 @@ namespace coolgas::python {
 namespace {
 
 ClusterTable table_of(const std::string& name) {
-  if (name == "distribution") return ClusterTable::kDistribution;
-  if (name == "scaled") return ClusterTable::kScaled;
-  if (name == "series") return ClusterTable::kSeries;
-  throw InputError("table = '" + shown(name) + "' is not a cluster table; allowed: distribution, scaled, series");
+  return choice<ClusterTable>(name,
+                              {{"distribution", ClusterTable::kDistribution},
+                               {"scaled", ClusterTable::kScaled},
+                               {"series", ClusterTable::kSeries}},
+                              "table", "a cluster table");
 }
 
 // Labels and the size table: (rank per particle, mass per cluster, smallest cell per cluster), largest first.

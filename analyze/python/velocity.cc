@@ -7,10 +7,11 @@ namespace coolgas::python {
 namespace {
 
 VelocityTable table_of(const std::string& name) {
-  if (name == "Phi") return VelocityTable::kPhi;
-  if (name == "tail") return VelocityTable::kTail;
-  if (name == "series") return VelocityTable::kSeries;
-  throw InputError("table = '" + shown(name) + "' is not a velocity table; allowed: Phi, tail, series");
+  return choice<VelocityTable>(name,
+                               {{"Phi", VelocityTable::kPhi},
+                                {"tail", VelocityTable::kTail},
+                                {"series", VelocityTable::kSeries}},
+                               "table", "a velocity table");
 }
 
 py::dict table(const Doubles& velocities, double t, const std::string& table, int bins, double ymax, double tail_from,

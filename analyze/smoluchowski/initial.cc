@@ -16,8 +16,9 @@ std::int64_t bin_low_edge(double m, double dm) {
   return std::llround((-(dm - 1) + std::sqrt((dm - 1) * (dm - 1) + 4 * m * m)) / 2);
 }
 
-std::vector<double> from_table(const std::string& path) {
-  const Table t = read_table(path);
+}  // namespace
+
+std::vector<double> initial_masses(const Table& t) {
   const std::size_t cm = t.column("m"), cn = t.column("N");
   const bool binned = std::find(t.columns.begin(), t.columns.end(), "dm") != t.columns.end();
   const std::size_t cd = binned ? t.column("dm") : 0;
@@ -37,11 +38,9 @@ std::vector<double> from_table(const std::string& path) {
   return c;
 }
 
-}  // namespace
-
 std::vector<double> initial_masses(const std::string& spec) {
   if (spec == "mono") return {0.0, 1.0};
-  return from_table(spec);
+  return initial_masses(read_table(spec));
 }
 
 std::vector<double> on_grid(const MassGrid& grid, const std::vector<double>& by_mass) {

@@ -11,11 +11,14 @@
 #include <vector>
 
 #include "analyze/smoluchowski/grid.h"
+#include "common/tsv.h"
 
 namespace coolgas::smoluchowski {
 
 // c_m(0) for integer masses m = 1..(size-1) (index = mass, entry 0 unused).
 std::vector<double> initial_masses(const std::string& spec);
+// The same from a table already read (its first block).
+std::vector<double> initial_masses(const Table& table);
 
 // The same distribution on a grid. InputError if it holds masses above the cut-off.
 std::vector<double> on_grid(const MassGrid& grid, const std::vector<double>& by_mass);

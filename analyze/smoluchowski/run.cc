@@ -114,36 +114,33 @@ Provenance provenance(const RunOptions& o, const Kernel& k, const MassGrid& g) {
   return p;
 }
 
-// The two tables: N(m,t) blocks and the series, each on stdout or a file.
-class Tables {
+// The two tables as TSV: N(m,t) blocks or the series on stdout, the series
+// also in a file.
+class TsvRows : public RunRows {
  public:
-  Tables(const RunOptions& o, const Provenance& prov, std::ostream& out) : o_(o), out_(out) {
-    if (!o.series_file.empty()) {
-      file_.open(o.series_file);
-      if (!file_) throw InputError("cannot write the series file '" + o.series_file + "'");
+  TsvRows(const RunOptions& o, std::ostream& out) : o_(o), out_(out) {}
+  bool wants_distribution() const override { return !o_.series; }
+  bool wants_series() const override { return o_.series || !o_.series_file.empty(); }
+
+  void begin(const Provenance& prov) override {
+    if (!o_.series_file.empty()) {
+      file_.open(o_.series_file);
+      if (!file_) throw InputError("cannot write the series file '" + o_.series_file + "'");
     }
     const std::string tool = "coolgas-smoluchowski";
-    if (o.series) series_.emplace(out, tool, prov, series_columns());
-    else dist_.emplace(out, tool, prov, std::vector<std::string>{"t", "m", "dm", "N", "x", "y"});
+    if (o_.series) series_.emplace(out_, tool, prov, series_columns());
+    else dist_.emplace(out_, tool, prov, distribution_columns());
     if (file_.is_open()) series_.emplace(file_, tool, prov, series_columns());
   }
-  bool wants_series() const { return series_.has_value(); }
-
-  void write(const Checkpoint& cp, double t_user, const MassGrid& g, const std::vector<double>& c) {
-    const Moments mom = moments(g, c);
-    if (cp.distribution && dist_) {
-      dist_->block("t = " + format_number(t_user));
-      for (const auto& b : binned_distribution(g, c, o_.bins_per_decade))
-        dist_->row({t_user, b.m, b.dm, b.N, b.m / mom.mean(), b.N * mom.mean() * mom.mean()});
-    }
-    if (cp.series && series_) {
-      const double mmax = largest_mass(g, c, o_.volume);
-      series_->row({t_user, mom.M0, mom.M1, mom.M2, mom.mean(), mmax, mmax / (mom.M1 * o_.volume)});
-    }
+  void distribution(const TableBlock& b) override {
+    dist_->write(b);
     check_file();
   }
-
-  void footer(const std::string& line) {
+  void series(const std::vector<double>& row) override {
+    series_->row(row);
+    check_file();
+  }
+  void end(const std::string& line) override {
     out_ << "# " << line << "\n";
     if (!file_.is_open()) return;
     file_ << "# " << line << "\n";
@@ -161,14 +158,27 @@ class Tables {
     throw WriteError("cannot write the series file '" + o_.series_file + "': " +
                      (errno ? std::strerror(errno) : "a write failed"));
   }
-  static std::vector<std::string> series_columns() {
-    return {"t", "M0", "M1", "M2", "M_avg", "M_max", "largest_fraction"};
-  }
   const RunOptions& o_;
   std::ostream& out_;
   std::ofstream file_;
   std::optional<TsvWriter> dist_, series_;
 };
+
+// The rows of one checkpoint at time t_user (the options' convention).
+void hand_over(RunRows& rows, const RunOptions& o, const Checkpoint& cp, double t_user, const MassGrid& g,
+               const std::vector<double>& c) {
+  const Moments mom = moments(g, c);
+  if (cp.distribution && rows.wants_distribution()) {
+    TableBlock b{"t = " + format_number(t_user), {}};
+    for (const auto& p : binned_distribution(g, c, o.bins_per_decade))
+      b.rows.push_back({t_user, p.m, p.dm, p.N, p.m / mom.mean(), p.N * mom.mean() * mom.mean()});
+    rows.distribution(b);
+  }
+  if (cp.series && rows.wants_series()) {
+    const double mmax = largest_mass(g, c, o.volume);
+    rows.series({t_user, mom.M0, mom.M1, mom.M2, mom.mean(), mmax, mmax / (mom.M1 * o.volume)});
+  }
+}
 
 // Finds the time at which the mean mass reaches `target` inside the last step
 // [t_a, t_b] by regula falsi on restarts from the saved state at t_a.
@@ -233,12 +243,27 @@ void check_finite(const MassGrid& g, const std::vector<double>& c, double t_user
 
 }  // namespace
 
+const std::vector<std::string>& distribution_columns() {
+  static const std::vector<std::string> columns{"t", "m", "dm", "N", "x", "y"};
+  return columns;
+}
+
+const std::vector<std::string>& series_columns() {
+  static const std::vector<std::string> columns{"t", "M0", "M1", "M2", "M_avg", "M_max", "largest_fraction"};
+  return columns;
+}
+
 RunSummary run(const RunOptions& o, std::ostream& out, std::ostream& warn) {
+  TsvRows rows(o, out);
+  return run(o, rows, warn);
+}
+
+RunSummary run(const RunOptions& o, RunRows& rows, std::ostream& warn) {
   validate(o);
   const Kernel kernel = parse_kernel(o.kernel);
   auto rhs = make_rhs(kernel, o.method);
   const MassGrid& g = rhs->grid();
-  auto c0 = on_grid(g, initial_masses(o.initial));
+  auto c0 = on_grid(g, o.initial_by_mass.empty() ? initial_masses(o.initial) : o.initial_by_mass);
   const double M1_0 = moments(g, c0).M1;
   if (!(M1_0 > 0)) throw InputError("initial distribution '" + o.initial + "' holds no clusters");
   Integrator it(*rhs, std::move(c0), o.integrator);
@@ -248,23 +273,24 @@ RunSummary run(const RunOptions& o, std::ostream& out, std::ostream& warn) {
   if (o.t_end) t_stop = *o.t_end * f;
   else if (o.until_mean_mass) t_stop = kUntilCap;
   else t_stop = *std::max_element(o.times.begin(), o.times.end()) * f;
-  Tables tables(o, provenance(o, kernel, g), out);
+  rows.begin(provenance(o, kernel, g));
   LeakWatch leak(o, M1_0, warn);
   bool reached = false;
-  for (const auto& cp : schedule(o, tables.wants_series(), t_stop)) {
+  for (const auto& cp : schedule(o, rows.wants_series(), t_stop)) {
     while (it.time() < cp.t && !reached) {
       if (interrupted()) stop_interrupted(it.time() / f);
       const double t_a = it.time();
       const auto c_a = it.state();
       it.step(cp.t);
       check_finite(g, it.state(), it.time() / f, o.kernel);
+      rows.after_step();
       if (o.until_mean_mass && moments(g, it.state()).mean() >= *o.until_mean_mass) {
         refine_crossing(it, g, *o.until_mean_mass, t_a, c_a);
         reached = true;
       }
     }
     const Checkpoint here = reached ? Checkpoint{it.time(), true, true} : cp;
-    tables.write(here, it.time() / f, g, it.state());
+    hand_over(rows, o, here, it.time() / f, g, it.state());
     leak.check(it.time() / f, g, it.state());
     if (reached) break;
   }
@@ -272,7 +298,7 @@ RunSummary run(const RunOptions& o, std::ostream& out, std::ostream& warn) {
     warn << "coolgas-smoluchowski: warning: the mean mass did not reach " << format_number(*o.until_mean_mass)
          << " by t = " << format_number(it.time() / f) << "\n";
   RunSummary s{it.time() / f, moments(g, it.state()), leak.fraction(g, it.state()), it.steps(), it.evaluations()};
-  tables.footer("end: t = " + format_number(s.t) + ", leaked_mass_fraction = " + format_number(s.leaked_fraction) +
+  rows.end("end: t = " + format_number(s.t) + ", leaked_mass_fraction = " + format_number(s.leaked_fraction) +
                 ", steps = " + std::to_string(s.steps) + ", rhs_evaluations = " + std::to_string(s.evaluations));
   return s;
 }

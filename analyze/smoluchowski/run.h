@@ -17,6 +17,7 @@
 #include "analyze/smoluchowski/integrator.h"
 #include "analyze/smoluchowski/method.h"
 #include "analyze/smoluchowski/observables.h"
+#include "common/tsv.h"
 
 namespace coolgas::smoluchowski {
 
@@ -29,7 +30,8 @@ struct RunOptions {
   MethodOptions method;
   IntegratorOptions integrator;
   Convention convention = Convention::HalfGain;
-  std::string initial = "mono";
+  std::string initial = "mono";            // "mono" or a table's path (initial.h)
+  std::vector<double> initial_by_mass;    // when not empty: c_m(0) by mass (initial.h), `initial` only names it
   std::vector<double> times;              // N(m,t) blocks at these times (and at the end)
   std::optional<double> t_end;            // stop here
   std::optional<double> until_mean_mass;  // or stop when M_avg reaches this
@@ -53,8 +55,31 @@ struct RunSummary {
   long steps = 0, evaluations = 0;
 };
 
-// Runs and writes the tables; warnings (mass leak, target not reached) go to
-// `warn` as single lines.
+// What a run produces, as it goes: the tool writes it as TSV tables, the
+// Python module (analyze/python/) collects it.
+class RunRows {
+ public:
+  virtual ~RunRows() = default;
+  virtual bool wants_distribution() const = 0;
+  virtual bool wants_series() const = 0;  // adds the series' times to the steps' limits
+  // Once, before the first step (what the tables' headers say).
+  virtual void begin(const Provenance& provenance) = 0;
+  virtual void distribution(const TableBlock& block) = 0;  // N(m,t) at one time
+  virtual void series(const std::vector<double>& row) = 0;
+  virtual void end(const std::string& line) = 0;  // "end: t = ..., leaked_mass_fraction = ..."
+  // After every step: a caller that cannot take SIGINT through the tool's
+  // flag (Python) lets Ctrl-C through here.
+  virtual void after_step() {}
+};
+
+const std::vector<std::string>& distribution_columns();  // t m dm N x y
+const std::vector<std::string>& series_columns();        // t M0 M1 M2 M_avg M_max largest_fraction
+
+// Runs, handing the rows to `rows`; warnings (mass leak, target not
+// reached) go to `warn` as single lines.
+RunSummary run(const RunOptions& o, RunRows& rows, std::ostream& warn);
+// Runs and writes the tables: N(m,t) or, with o.series, the series on
+// `out`, the series also to o.series_file when given.
 RunSummary run(const RunOptions& o, std::ostream& out, std::ostream& warn);
 
 }  // namespace coolgas::smoluchowski

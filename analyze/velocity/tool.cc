@@ -68,7 +68,7 @@ void run_velocity(const VelocityOptions& opt, std::ostream& final_out) {
     const TableBlock b = velocity_block(opt.table, frame.time, hist, s, opt.tail_from);
     if (opt.table == VelocityTable::kSeries) {
       if (!s.fit) note(no_tail_text(traj, frame, opt, s.tail.size()) + "; beta is nan in that row");
-      for (const auto& r : b.rows) out.row(r);
+      out.append(b);  // a row per dump, not a block
     } else {
       out.write(b);
     }

@@ -55,3 +55,23 @@ def gas(tmp_path_factory):
 @pytest.fixture(scope="module")
 def aggregates(tmp_path_factory):
     return simulate_cli(tmp_path_factory.mktemp("ba"), "ba", AGGREGATES)
+
+
+def assert_the_tool_per_dump(path, name, args, kernel, tmp_path, block=True):
+    """For the middle and the last dump of `path`: kernel(frame) equals
+    coolgas-<name> --time t --exact-time ARGS to the last bit (the tool
+    prints shortest round-trip numbers, read back as the very doubles), and
+    for a table of blocks its block comment is the tool's."""
+    import coolgas
+    import pandas as pd
+    frames = coolgas.open(path).frames
+    for i in (len(frames) // 2, len(frames) - 1):
+        fr = frames[i]
+        out = tool(name, path, "--time", repr(fr.t), "--exact-time", *args).stdout
+        (tmp_path / "cli.tsv").write_text(out)
+        cli = pd.read_csv(tmp_path / "cli.tsv", sep="\t", comment="#", float_precision="round_trip")
+        py = kernel(fr)
+        assert list(py.columns) == list(cli.columns)
+        assert py.to_numpy().tobytes() == cli.to_numpy().tobytes()  # bit for bit
+        if block:
+            assert "# " + py.attrs["comment"] + "\n" in out

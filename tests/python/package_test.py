@@ -11,7 +11,8 @@ import coolgas
 from conftest import BIN, tool
 
 
-@pytest.mark.parametrize("name", ["simulate", "clusters", "velocity", "energy"])
+@pytest.mark.parametrize("name", ["simulate", "clusters", "velocity", "energy", "structure", "shape", "collapse",
+                                  "smoluchowski"])
 def test_version_is_the_tools(name):
     assert tool(name, "--version").stdout.strip() == f"coolgas-{name} {coolgas.__version__}"
 

@@ -63,3 +63,61 @@ def velocity(frame, t=None, table="Phi", bins=120, ymax=6.0, tail_from=1.5, min_
     for key in ("v_rms", "kappa", "kappa_err", "beta", "beta_err", "tail_points"):
         df.attrs[key] = d[key]
     return df
+
+
+def _given(**options):
+    """The options not None: the others keep the tool's defaults (held by _core)."""
+    return {k: v for k, v in options.items() if v is not None}
+
+
+def window(w):
+    """A window "lo:hi" (the tools' syntax) from a string, or from (lo, hi) with None for an open end."""
+    if w is None or isinstance(w, str):
+        return w
+    lo, hi = w
+    return ("" if lo is None else repr(float(lo))) + ":" + ("" if hi is None else repr(float(hi)))
+
+
+def structure(frame, L=None, t=None, table="spectrum", velocities=None, masses=None, grid=None, peak_fraction=None,
+              direct_shells=None):
+    """One dump's coolgas-structure table: "spectrum" (t shell k S S_err
+    modes x y; x = k L_t, y = S / L_t^3), "series" (t L_t k_mean k_cut
+    k_peak S_peak L_C L_v) or "correlation" (t r C C_v points).
+
+    frame: a Frame (ballistic aggregation: the aggregates weighted by their
+    masses), or positions with L (and t, velocities, masses). velocities are
+    needed by "series" and "correlation". grid: points per side (default: the
+    even number below L); peak_fraction, direct_shells: the tool's options.
+    df.attrs: the block's comment (L_t, k_cut, the exact sum's check) and grid."""
+    positions, L, t, f = _frame_args(frame, L, t)
+    if f is not None:
+        velocities = f.velocities if velocities is None else velocities
+        masses = f.masses if masses is None else masses
+    if table == "spectrum":
+        velocities = None  # S(k) reads positions only, as the tool does
+    d = _core.structure_table(positions, float(L), float(t), table, velocities=velocities, masses=masses,
+                              **_given(grid=grid, peak_fraction=peak_fraction, direct_shells=direct_shells))
+    df = frame_of(d)
+    df.attrs["grid"] = d["grid"]
+    return df
+
+
+def shape(frame, L=None, t=None, table="mass_radius", bins_per_decade=None, fit_mass=None, min_mass=None,
+          masses=None):
+    """One dump's coolgas-shape table: "mass_radius" (t m dm clusters Rg
+    Rg_err asphericity prolateness), "series" (t d_f d_f_err fit_bins
+    fitted_clusters asphericity prolateness wrapping_fraction) or "clusters"
+    (t mass Rg lambda1 lambda2 lambda3 asphericity prolateness wraps: each
+    cluster of at least min_mass particles, its gyration tensor's
+    eigenvalues ascending).
+
+    frame: a Frame (ballistic aggregation: its aggregates, solid spheres of
+    diameter m^(1/3)), or positions with L (and t; masses for aggregates).
+    fit_mass: the d_f fit's mass window, "lo:hi" or (lo, hi), None ends
+    open. The block's comment (d_f and its error) is df.attrs["comment"]."""
+    positions, L, t, f = _frame_args(frame, L, t)
+    if f is not None and masses is None:
+        masses = f.masses
+    return frame_of(_core.shape_table(positions, float(L), float(t), table, masses=masses,
+                                      **_given(bins_per_decade=bins_per_decade, fit_mass=window(fit_mass),
+                                               min_mass=min_mass)))

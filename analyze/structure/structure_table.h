@@ -1,0 +1,35 @@
+// One frame's rows of the coolgas-structure tables (data-schema/tsv-tables.md,
+// "coolgas-structure"), from its positions, velocities and weights. The tool
+// writes them; the Python module (analyze/python/) returns them.
+#pragma once
+#include <span>
+#include <string>
+#include <vector>
+
+#include "analyze/structure/frame_structure.h"
+#include "analyze/structure/tool.h"
+#include "common/tsv.h"
+
+namespace coolgas {
+
+const std::vector<std::string>& structure_columns(StructureTable table);
+
+// InputError unless the grid is 0 or even in [8, 1024], the peak fraction in
+// (0, 1) and the direct shells in [0, 8] (the tool's options, named as such).
+void check_structure_options(int grid, double peak_fraction, int direct_shells);
+
+// The grid points per side for box side L: `grid`, or when 0 the even number
+// nearest below L (spacing about sigma). InputError if that is below 8.
+int structure_grid_points(int grid, double L);
+
+// The rows of one frame at time t in a box of side L, on `fs` (its grid
+// chosen by structure_grid_points): the spectrum's block (its comment the
+// check against the exact sum over `direct_shells` shells), the series' one
+// row (no comment) or the correlation's block. Positions and velocities are
+// x0 y0 z0 x1 ...; `weights` one per point (aggregates: their masses), empty
+// for unit weights; velocities are used by the series and correlation only.
+TableBlock structure_block(StructureTable table, FrameStructure& fs, double t, double L,
+                           std::span<const double> positions, std::span<const double> velocities,
+                           std::span<const double> weights, double peak_fraction, int direct_shells);
+
+}  // namespace coolgas
