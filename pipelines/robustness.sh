@@ -54,6 +54,15 @@ for choice in start weights eta drop product; do
   fi
   theta=$(value "$t" theta) theta_err=$(value "$t" theta_err) z=$(value "$t" z) z_err=$(value "$t" z_err)
   eta=$(value "$t" eta) eta_err=$(value "$t" eta_err) q=$(value "$t" quality)
+  # A search that ran off to z <= 1/2 or theta <= 0 found no finite-size
+  # scaling: with t/L^z hardly scaled the curves are only shifted up or down
+  # (by z theta ln L), which sizes too close together allow at any z (the
+  # demo's L = 48 and 68 alone: z = 1.5e-7, theta = -5.6e5).
+  if awk "BEGIN { exit !($z <= 0.5 || $theta <= 0) }"; then
+    printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\tnot determined: the search ran off to z = %s, theta = %s, a collapse by a vertical shift alone (the sizes left do not fix z)\n' \
+      "$choice" "$change" "$theta" "$theta_err" "$z" "$z_err" "$eta" "$eta_err" "$q" "$(printf '%.3g' "$z")" "$(printf '%.3g' "$theta")"
+    continue
+  fi
   verdict=$(awk -v c="$choice" -v q="$q" -v bq="$b_q" -v zt="$z_theta" \
     -v a="$theta $theta_err $b_theta $b_theta_err" -v b="$z $z_err $b_z $b_z_err" -v e="$eta $eta_err $b_eta $b_eta_err" '
     function num(v) { return v ~ /^[-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?$/ }
@@ -75,8 +84,8 @@ for choice in start weights eta drop product; do
       sub(/;$/, "", v)
       if (c == "product") {
         split(a, pa, " "); split(b, pb, " ")
-        v = v (!moved_tz ? "; theta and z are consistent with z theta = " zt \
-                           : sprintf("; the data prefer the free fit (z theta = %.3g)", pa[3] * pb[3]))
+        v = v sprintf("; %s z theta = %s (the free fit has %.3f)", moved_tz ? "theta or z moves by more than its error with" \
+                      : "theta and z are consistent with", zt, pa[3] * pb[3])
         if (num(q) && num(bq) && bq > 0) v = v sprintf(", quality %.3g times the free fit'"'"'s", q / bq)
       }
       print v
