@@ -47,10 +47,12 @@ SIZE_T_END_L48 := 400000
 SIZE_T_END_L68 := 500000
 SIZE_T_END_L96 := 300000
 SIZE_T_END_L136 := 200000
-# Restart points: a run stopped without its final dump (killed, not
-# signalled) resumes from its last dump, and on the log grid the large boxes'
-# late decade would have none; these bound the work lost to about 10 minutes
-# of an L = 136 run (47 MB a dump there, 0.6 GB for the 12).
+# Dumps through the late decade, where one a decade gives two: the
+# velocity and cluster statistics of the largest boxes (beta, kappa, the
+# largest cluster's share) as they cross over to the finite-size regime, for
+# their trends with L and t (47 MB a dump at L = 136, 0.6 GB for the 12).
+# (Restarts need no dumps: the checkpoint, every 5 minutes of wall time, is
+# where an interrupted run resumes; docs/reliability.md.)
 ENERGY_OUTPUT = observables_per_decade = 20$(newline)dumps_per_decade = 1$(newline)dump_times = [2e4, 3e4, 4e4, \
   5e4, 6e4, 7e4, 8e4, 9e4, 1.2e5, 1.4e5, 1.6e5, 1.8e5]
 THETA_WINDOW := 100:10000
