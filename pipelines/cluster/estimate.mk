@@ -8,8 +8,8 @@
 # $(OUT)/scenes when it reads common.mk; nothing is simulated). plan_cpu_h is
 # the run's expected CPU hours (estimate.sh's cpu_h, without the margin);
 # measured_cpu_h beside it the CPU time of the run in OUT when it is complete
-# (NAME.cpu_s of pipelines/timed-run.sh; '-' before; of a run resumed in
-# slices, only its last slice), so the plan stands beside what it cost.
+# (NAME.cpu_s of pipelines/timed-run.sh, '-' before; of a run made in
+# slices, all of them but any killed by SIGKILL), so the plan stands beside what it cost.
 # (sorted: the snapshot run may be a Fig. 2 run too, counted once)
 ESTIMATE_RUNS := $(sort $(SNAP_RUN) $(foreach L,$(SIZE_L),$(call size_runs,$(L))) \
                  $(foreach p,$(PARAM_SETS),$(call param_runs,$(p))) $(BA_RUNS))
