@@ -16,7 +16,9 @@
 # A choice whose collapse cannot be made (e.g. no overlap once a size is
 # dropped) is written as a table holding the tool's one-line error, which
 # robustness.sh reports in its row: every other row stays.
-ROBUST_T_WINDOW ?= $(shell awk -v w='$(COLLAPSE_T_WINDOW)' 'BEGIN { split(w, p, ":"); printf "%g:%s", 3 * (p[1] == "" ? 1 : p[1]), p[2] }')
+ifndef ROBUST_T_WINDOW
+ROBUST_T_WINDOW := $(shell awk -v w='$(COLLAPSE_T_WINDOW)' 'BEGIN { split(w, p, ":"); printf "%g:%s", 3 * (p[1] == "" ? 1 : p[1]), p[2] }')
+endif
 ROBUST_ETA_WINDOW ?= 1:
 ROBUST_Z_THETA ?= 3
 ROBUST_OTHER_WEIGHTS := $(if $(filter seeds,$(COLLAPSE_WEIGHTS)),none,seeds)
@@ -37,13 +39,17 @@ ROBUST_CHOICES := start weights eta drop product
 ROBUST_TABLES := $(foreach c,$(ROBUST_CHOICES),$(TABLES)/collapse_robust_$(c).tsv)
 robust_inputs = $(if $(filter drop,$(1)),$(ROBUST_DROP_TABLES),$(SIZE_RUN_TABLES))
 
-# The collapse of one choice; on failure its error line, as '# error: ...'.
+# The collapse of one choice; when the tool cannot make it (exit code 2: no
+# collapse of these data), its error line as '# error: ...'; any other
+# failure (an interrupt: 3) fails the step, to be made again.
 # (Explicit rules, one per choice: a pattern rule with these prerequisites
 # was not found by make -j on a fresh OUT, while the runs were being made.)
 define robust_rule
 $(TABLES)/collapse_robust_$(1).tsv: $(call robust_inputs,$(1)) $(call knob,robust_$(1),$(ROBUST_ARGS_$(1)))
-	@if $(BIN)/coolgas-collapse $(ROBUST_ARGS_$(1)) $(call robust_inputs,$(1)) > $$@.tmp 2> $$@.err; then mv $$@.tmp $$@; \
-	else printf '# error: %s\n' "$$$$(tail -n 1 $$@.err)" > $$@; rm -f $$@.tmp; cat $$@; fi; rm -f $$@.err
+	@rc=0; $(BIN)/coolgas-collapse $(ROBUST_ARGS_$(1)) $(call robust_inputs,$(1)) > $$@.tmp 2> $$@.err || rc=$$$$?; \
+	if [ $$$$rc -eq 0 ]; then mv $$@.tmp $$@; \
+	elif [ $$$$rc -eq 2 ]; then printf '# error: %s\n' "$$$$(tail -n 1 $$@.err)" > $$@; rm -f $$@.tmp; cat $$@; \
+	else cat $$@.err >&2; rm -f $$@.tmp $$@.err; exit $$$$rc; fi; rm -f $$@.err
 endef
 $(foreach c,$(ROBUST_CHOICES),$(eval $(call robust_rule,$(c))))
 
