@@ -174,7 +174,7 @@ endif
 # ---------------------------------------------------------------- figures
 FIGURES := $(OUT)/fig1_energy_size.png $(OUT)/fig2_energy_parameters.png $(OUT)/fig3_clusters.png \
            $(OUT)/fig4_largest_mass.png $(OUT)/fig5_velocity.png $(OUT)/smoluchowski.png $(OUT)/structure.png
-RESULTS := $(FIGURES) $(OUT)/exponents.tsv $(OUT)/exponents.md
+RESULTS := $(FIGURES) $(OUT)/exponents.tsv $(OUT)/robustness.tsv $(OUT)/exponents.md
 
 # No recipes here, so that 'make -q' after a finished run exits 0. The longest
 # run (Figs. 3-5) is listed first so that make -j starts it first.
@@ -408,6 +408,9 @@ $(OUT)/exponents.tsv: $(EXPONENT_INPUTS) $(BA_FITS) $(PIPE)tsv-value.sh $(PIPE)e
 	  $(L_MAX) $(SNAP_L) "$(PARAM_SETS)" "$(BA_FITS)" "$(STRUCTURE_GAS)" \
 	  "$(notdir $(basename $(MMAX_GAS_RUNS)))" "$(notdir $(basename $(BA_RUNS)))" > $@
 
-$(OUT)/exponents.md: $(OUT)/exponents.tsv $(PIPE)exponents-md.sh
-	sh $(PIPE)exponents-md.sh $< "$(SCALE)" > $@
+# Fig. 1's collapse under other analysis choices, side by side (pipelines/robustness.mk).
+include $(PIPE)robustness.mk
+
+$(OUT)/exponents.md: $(OUT)/exponents.tsv $(OUT)/robustness.tsv $(PIPE)exponents-md.sh
+	sh $(PIPE)exponents-md.sh $< "$(SCALE)" $(OUT)/robustness.tsv > $@
 	@echo "$(SCALE) pipeline: figures and tables in $(OUT)"; cat $@

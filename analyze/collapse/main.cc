@@ -27,7 +27,12 @@ int main(int argc, char** argv) {
     app.add_option("tables", o.inputs, "E(t) tables: one per L, or one per run (seed) of each L (- for stdin, once)")->required();
     app.add_option("--theta", o.theta, "energy exponent theta (with --optimize: the starting value)")->capture_default_str();
     app.add_option("--z", o.z, "dynamical exponent z (with --optimize: the starting value)")->capture_default_str();
-    app.add_flag("--optimize", o.optimize, "find the theta and z that collapse the curves best");
+    auto* optimize_opt = app.add_flag("--optimize", o.optimize, "find the theta and z that collapse the curves best");
+    app.add_option("--z-theta", o.z_theta,
+                   "with --optimize: hold the product z theta at this value (the paper's E L^3 against t/L^(5/2):\n"
+                   "3 = d) and find the z that collapses best, theta = z_theta / z; errors from the jackknife over\n"
+                   "runs (two or more tables of every L, or --bootstrap 0). Compare its quality with the free fit's")
+        ->needs(optimize_opt);
     app.add_option("--bootstrap", o.search.bootstrap, "bootstrap replicas with one table per L (0: no uncertainties at all)")
         ->capture_default_str();
     app.add_option("--seed", o.search.seed, "random seed of the bootstrap")->capture_default_str();

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <ostream>
 
+#include "analyze/collapse/fixed_product.h"
 #include "analyze/collapse/quality.h"
 #include "analyze/collapse/seed_weights.h"
 #include "analyze/collapse/tail.h"
@@ -72,6 +73,8 @@ Provenance collapse_provenance(const CollapseOptions& o, const std::vector<SizeE
                                              "each L's runs (+-" + std::to_string(kScatterRows) + " rows, at least " +
                                              format_number(kScatterFloor) + "^2)"
                                            : "none");
+  if (o.optimize && o.z_theta)
+    p.emplace_back("z_theta", format_number(*o.z_theta) + " (fixed: z optimised, theta = z_theta / z)");
   p.emplace_back("theta", format_number(r.theta));
   p.emplace_back("z", format_number(r.z));
   if (r.fit) {
@@ -140,7 +143,7 @@ CollapseResult collapse_tables(const std::vector<Table>& tables, const CollapseO
     CollapseSearch s = o.search;
     s.theta0 = o.theta;
     s.z0 = o.z;
-    r.fit = optimize_collapse(sizes, s);
+    r.fit = o.z_theta ? optimize_collapse_fixed_product(sizes, s, *o.z_theta) : optimize_collapse(sizes, s);
     r.theta = r.fit->theta;
     r.z = r.fit->z;
   }

@@ -24,6 +24,7 @@ struct CollapseOptions {
   std::optional<Window> eta_window; // fit f(x) ~ x^-eta over this x window
   bool summary = false;             // one row of results instead of the curves
   bool seed_weights = false;        // weigh the collapse by the scatter of each L's runs (seed_weights.h)
+  std::optional<double> z_theta;    // --optimize with z theta held here, theta = z_theta / z (fixed_product.h)
 };
 
 // The collapse of E(t) tables already read (one or more per L; options.inputs

@@ -5,8 +5,9 @@
 # aggregation), for a scheduler's request (pipelines/cluster/paper.sbatch)
 # and the paper scale's plan (make -C pipelines/paper estimate).
 # DUMP_TIMES: the scene's output.dump_times, comma-separated ("" for none).
-# Prints: L N mem_GB hours dumps disk_GB peak_GB (one line, tab-separated):
-# mem_GB and hours with the margin of a request, peak_GB without.
+# Prints: L N mem_GB hours dumps disk_GB peak_GB cpu_h (one line,
+# tab-separated): mem_GB and hours with the margin of a request, peak_GB and
+# cpu_h (the expected CPU hours of the run) without.
 #
 # Every figure comes from a measurement on this project's machine:
 #   N        = PHI L^3 / (pi/6)
@@ -35,13 +36,18 @@
 #     Other phi, r0, delta: C times the ratio C_set / C_gas measured at
 #     L = 34, t = 1e4 (runs of the same scene with that one value changed;
 #     table below), 1 with a note on stderr for a set not measured. Rate,
-#     per CPU second on the shared machine (other jobs on the second core):
-#     3.63e5 collisions for N <= 1.3e5 (the whole L = 68 run to t = 3e5:
-#     7.97e7 collisions with set-up and dumps in 219 s of user + system time,
-#     /usr/bin/time), 1.88e5 for larger N (that times 0.519, the ratio of
-#     build/bench/engine_bench W2 at N = 1e6, 20 collisions per particle,
-#     203 000 per CPU second, over the same at N = 1.25e5, 391 000; taken for
-#     N = 8e6 too, not measured: both sizes are far beyond the 32 MB cache).
+#     per CPU second on the shared machine (other jobs on both cores), of
+#     whole runs of the workstation's Fig. 1 scene (set-up and dumps
+#     included; user + system time of pipelines/timed-run.sh's NAME.cpu_s,
+#     niced): 6.61e5 collisions for N <= 1.3e5 (L = 68 to t = 1e4: 3.497e7
+#     collisions in 52.9 s) and 4.07e5 for larger N (L = 136, N = 999 267,
+#     to t = 1e3: 7.815e7 collisions in 192.0 s), taken for N = 8e6 too, not
+#     measured. The same runs check the collision counts: 559.9 and 156.4
+#     per particle, the table's 559.9 and 153.7 (+1.8 %). (The rates stated
+#     here before, 3.63e5 and 1.88e5, from an older build under other load,
+#     were 1.8 and 2.2 times too slow: they planned 1 872 CPU-s for a
+#     workstation run at L = 100 to t = 1e5 that took 672 and 696; these
+#     rates plan 865.)
 #     Set-up: 5 equilibration collisions per particle.
 #     Aggregation: at most N - 1 merges (a bound), at the merge rate and
 #     with the set-up time per particle of W3b (build/bench/aggregation_bench
@@ -96,7 +102,7 @@ BEGIN {
   ratio["0.208 0.9 1e-4"] = 0.364  # C = 193.2 at t = 1e4
   ratio["0.208 0.1 1e-3"] = 0.388  # C = 205.8 at t = 1e4
   ratio["0.208 0.1 1e-5"] = 2.288  # C = 1213.1 at t = 1e4
-  rate_small = 3.63e5; rate_large = 1.88e5  # collisions per CPU second
+  rate_small = 6.61e5; rate_large = 4.07e5  # collisions per CPU second
 
   N = phi * L * L * L / (pi / 6)
   ba = (r0 == "aggregation")
@@ -121,5 +127,5 @@ BEGIN {
     bytes = 47
   }
   mem = int((1.5 * peak + 256e6) / 1e9) + 1
-  printf "%s\t%.0f\t%d\t%.2f\t%d\t%.1f\t%.2f\n", L, N, mem, 1.5 * seconds / 3600, dumps, dumps * N * bytes / 1e9, peak / 1e9
+  printf "%s\t%.0f\t%d\t%.2f\t%d\t%.1f\t%.2f\t%.4f\n", L, N, mem, 1.5 * seconds / 3600, dumps, dumps * N * bytes / 1e9, peak / 1e9, seconds / 3600
 }'

@@ -31,6 +31,12 @@ COLLAPSE_WEIGHTS := seeds
 # x >= 1: the finite-size regime, where E(t) L^(z theta) ~ x^-eta.
 COLLAPSE_ETA_WINDOW := 1:
 COLLAPSE_BOOTSTRAP := 100
+# The robustness block (pipelines/robustness.mk): the same collapse from
+# t = 300, three times later, away from the crossover from Haff's law that
+# ends near t = 100, and eta over x >= 3 only, deeper in the finite-size
+# regime (the scaled data reach x = 8-15).
+ROBUST_T_WINDOW := 300:
+ROBUST_ETA_WINDOW := 3:
 
 # Fig. 2: E(t) for several phi, r0, delta, fitted between the crossover from
 # Haff's regime (t ~ 100 at phi = 0.208) and the finite-size crossover

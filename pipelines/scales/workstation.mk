@@ -1,46 +1,70 @@
 # SCALE = workstation: the closest one 2-core, 24 GB machine gets to the
 # paper in an afternoon. Planned by the measured rates of
-# pipelines/cluster/estimate.sh (make -C pipelines/workstation estimate):
-# about 3 core-hours without the margin of a request, so about 1.5 hours of
-# wall time with make -j2 (the longest run, delta = 1e-5, about 25 minutes),
-# peak memory 0.2 GB a run, about 9 GB on disk. Run here at 7dc619d: 1.66
-# core-hours of runs, 61 minutes of wall time on 2 cores, 8.1 GB. Every run resumes
+# pipelines/cluster/estimate.sh, which state each run's cost:
+#   make -C pipelines/workstation estimate OUT=...
+# The plan of 2026-12-05 (docs/studies.md, "The workstation scale,
+# planned"): 4.1 CPU hours (Fig. 1: 3.5), so about 2-2.5 hours of wall time
+# with make -j2 on an otherwise idle machine; the longest runs, L = 136 to
+# t = 2e5, 0.88 CPU hours each; peak memory 0.2 GB a run, 13 GB on disk. The scale before (Fig. 1 to L = 100) was run at 7dc619d: 1.66
+# core-hours of runs, 61 minutes on 2 cores, 8.1 GB. Every run resumes
 # (coolgas-simulate --resume; make reruns only what is missing), so it can be
 # run in slices. Every variable is documented in pipelines/common.mk.
 PHI := 0.208
 R0 := 0.1
 DELTA := 1e-4
 
-# Fig. 1: the demo's L = 34, 48, 68 with more seeds and later times, and
-# L = 100 (the largest box a workstation affords twice) to x = t/L^(5/2) = 1,
-# so its curve reaches the crossover (to x = 0.5 the collapse gave z = 3.6;
-# to x = 1 it still does, see below).
-# The late end is set by the cut-off: once E(t) falls to about delta^2 = 1e-8
-# the relative speeds inside clusters drop below delta, those collisions turn
-# elastic and E(t) flattens (a single L = 34 run: local slope of E 1.8-2.0 at
-# x = 5-26, 1.5 at x = 47, 0.4 at x = 450). E ~ L^-3 f(x) reaches 1e-8 at
-# x ~ 25 for L = 34 and at smaller x in larger boxes, so eta is fitted over
-# x = 3-20 and the small boxes end near x = 30.
-# Measured in this scale's runs (docs/studies.md, "The workstation scale, run
-# here"): L = 100 to t = 1e5 took 672 and 696 CPU-s; theta = 1.192 +- 0.003
-# from L = 100 over t = 100-1e4, but the weighted collapse of all four sizes
-# gave z = 3.63 +- 0.41 (its quality falls steadily with z: the power-law
-# part collapses at any z), and at that z no point lies in x = 3-20, so eta
-# is nan (coolgas-collapse says so and the exponent table says why).
-SIZE_L := 34 48 68 100
+# Fig. 1: the paper's L = 34, 68, 136 with 48 and 96 between (steps of
+# sqrt 2), so that the crossover of the largest boxes pins z. The scale
+# before stopped at L = 100 to t = 1e5 (x = t/L^(5/2) = 1) with 2 seeds: its
+# weighted collapse gave z = 3.63 +- 0.41 (its quality falls steadily with
+# z: the power-law part collapses at any z, and only the crossovers of boxes
+# of different sizes fix their shift), at that z no point lay in x = 3-20 and
+# eta was nan. The crossover of a box of side L lies near x = 0.1-1, so
+# L = 136 runs to t = 2e5 (x = 0.93) and L = 96 to 3e5 (x = 3.3); three seeds
+# of each, because the jackknife over runs with two of a size comes out about
+# half the true error (analyze/collapse/seed_weights.h).
+# The late end of the small boxes is set by the cut-off: once E(t) falls to
+# about delta^2 = 1e-8 the relative speeds inside clusters drop below delta,
+# those collisions turn elastic and E(t) flattens (a single L = 34 run: local
+# slope of E 1.8-2.0 at x = 5-26, 1.5 at x = 47, 0.4 at x = 450). E ~ L^-3
+# f(x) reaches 1e-8 at x ~ 25 for L = 34 and at smaller x in larger boxes,
+# so eta is fitted over x = 3-20 and the small boxes end near x = 30.
+# Costs (CPU hours a run, estimate.sh, whose rates were measured on this
+# machine on 2026-12-05 with niced runs of these scenes: L = 68 to t = 1e4
+# in 52.9 CPU-s and L = 136 to t = 1e3 in 192.0, which the model gives as
+# 53 and 195; its extrapolation of the collision count past t = 3162 planned
+# 865 CPU-s for the scale before's L = 100 runs to 1e5, which took 672 and
+# 696): L = 34 to 2e5 0.0025, 48 to 4e5 0.0069, 68 to 5e5 0.035, 96 to 3e5
+# 0.21, 136 to 2e5 0.88.
+SIZE_L := 34 48 68 96 136
 SIZE_SEEDS := 1 2 3 4 5 6 7 8
 SIZE_SEEDS_L48 := 1 2 3 4 5 6
 SIZE_SEEDS_L68 := 1 2 3 4
-SIZE_SEEDS_L100 := 1 2
+SIZE_SEEDS_L96 := 1 2 3
+SIZE_SEEDS_L136 := 1 2 3
 SIZE_T_END := 200000
 SIZE_T_END_L48 := 400000
 SIZE_T_END_L68 := 500000
-SIZE_T_END_L100 := 100000
+SIZE_T_END_L96 := 300000
+SIZE_T_END_L136 := 200000
+# Dumps through the late decade, where one a decade gives two: the
+# velocity and cluster statistics of the largest boxes (beta, kappa, the
+# largest cluster's share) as they cross over to the finite-size regime, for
+# their trends with L and t (47 MB a dump at L = 136, 0.6 GB for the 12).
+# (Restarts need no dumps: the checkpoint, every 5 minutes of wall time, is
+# where an interrupted run resumes; docs/reliability.md.)
+ENERGY_OUTPUT = observables_per_decade = 20$(newline)dumps_per_decade = 1$(newline)dump_times = [2e4, 3e4, 4e4, \
+  5e4, 6e4, 7e4, 8e4, 9e4, 1.2e5, 1.4e5, 1.6e5, 1.8e5]
 THETA_WINDOW := 100:10000
 COLLAPSE_T_WINDOW := 100:
 COLLAPSE_WEIGHTS := seeds
 COLLAPSE_ETA_WINDOW := 3:20
 COLLAPSE_BOOTSTRAP := 200
+# The robustness block (pipelines/robustness.mk): the collapse from t = 300
+# (three times later, away from the crossover from Haff's law near t = 100),
+# and eta over x = 1-10, nearer the crossover than 3-20.
+ROBUST_T_WINDOW := 300:
+ROBUST_ETA_WINDOW := 1:10
 
 # Fig. 2 at L = 100 (x = 0.1 at t = 1e4), the paper's four phi, five r0 and
 # three delta. Dilute gases and nearly elastic ones leave Haff's regime later,

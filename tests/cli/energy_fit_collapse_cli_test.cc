@@ -68,6 +68,30 @@ TEST_F(EnergyFitCollapseCli, EnergyFitAndCollapseChainThroughPipes) {
   EXPECT_NEAR(z, 2.5, 0.02);
 }
 
+// With z theta held at 3 (the paper's E L^3 against t/L^(5/2)), the data's
+// own product, z alone is found again from a start far off, theta = 3/z, in
+// the same row as the free fit; the product needs --optimize.
+TEST_F(EnergyFitCollapseCli, FixedProductCollapseFindsZAndHoldsTheProduct) {
+  std::string tables;
+  for (double L : {16.0, 32.0})
+    for (int seed : {1, 2}) {
+      const std::string e = *dir + "/run_L" + std::to_string(int(L)) + "_s" + std::to_string(seed) + ".tsv";
+      ASSERT_EQ(run_command(bin("coolgas-energy") + " " + path(L, seed) + " > " + e).exit_code, 0);
+      tables += " " + e;
+    }
+  auto r = run_command(bin("coolgas-collapse") + " --optimize --z-theta 3 --z 2 --summary" + tables);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("# z_theta: 3 (fixed"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("jackknife over whole runs"), std::string::npos) << r.out;
+  const std::string row = r.out.substr(r.out.rfind('\n', r.out.size() - 2) + 1);
+  double theta = 0, theta_err = 0, z = 0, z_err = 0, quality = -1;
+  ASSERT_EQ(std::sscanf(row.c_str(), "%lf %lf %lf %lf %lf", &theta, &theta_err, &z, &z_err, &quality), 5) << r.out;
+  EXPECT_NEAR(z, 2.5, 0.01);
+  EXPECT_NEAR(theta * z, 3.0, 1e-12);
+  EXPECT_GE(quality, 0.0);
+  expect_one_error_line(run_command(bin("coolgas-collapse") + " --z-theta 3" + tables), "--z-theta");
+}
+
 TEST_F(EnergyFitCollapseCli, AnEtaWindowBeyondTheDataGivesNanAndANoteNotARefusal) {
   const std::string e16 = *dir + "/e16.tsv", e32 = *dir + "/e32.tsv";
   ASSERT_EQ(run_command(bin("coolgas-energy") + " " + path(16, 1) + " > " + e16).exit_code, 0);

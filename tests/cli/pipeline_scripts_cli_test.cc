@@ -53,6 +53,26 @@ TEST(TimedRun, AFailedCommandKeepsItsExitCodeAndWritesNoTimes) {
   EXPECT_FALSE(std::filesystem::exists(dir + "/run.cpu_s"));
 }
 
+// A run made in slices: each slice's CPU time is kept (a failed or stopped
+// one too), and the run's CPU time is their sum. Two earlier slices of 1.50
+// and 2.25 s are in the file; the last slice adds its own, at most its wall
+// time (+ 0.02 s for the resolution of both).
+TEST(TimedRun, ARunInSlicesCostsTheCpuTimeOfAllOfThem) {
+  const std::string dir = test::scratch_dir("pipeline_scripts_slices");
+  std::filesystem::remove(dir + "/run.cpu_s.slices");
+  const auto failed = run_command(timed_run(dir + "/run.wall_s", "sh -c 'exit 3'"));
+  EXPECT_EQ(failed.exit_code, 3);
+  EXPECT_FALSE(std::filesystem::exists(dir + "/run.cpu_s"));
+  EXPECT_TRUE(std::filesystem::exists(dir + "/run.cpu_s.slices"));  // the stopped slice, counted
+  std::ofstream(dir + "/run.cpu_s.slices") << "1.50\n2.25\n";
+  const auto r = run_command(timed_run(dir + "/run.wall_s", "awk 'BEGIN { for (i = 0; i < 3e5; i++) s += i }'"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const double wall = read_number(dir + "/run.wall_s"), cpu = read_number(dir + "/run.cpu_s");
+  EXPECT_GE(cpu, 3.75);
+  EXPECT_LE(cpu, 3.75 + wall + 0.02);
+  EXPECT_FALSE(std::filesystem::exists(dir + "/run.cpu_s.slices"));  // summed into run.cpu_s
+}
+
 TEST(H5Last, GivesTheCollisionsOfARunAtItsEnd) {
   const std::string dir = test::scratch_dir("pipeline_scripts");
   const std::string scene = test::write_file(dir, "run.toml",

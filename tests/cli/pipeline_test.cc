@@ -147,6 +147,29 @@ TEST(Pipeline, TinyPipelineRunsEndToEndAndIsIncremental) {
   // The comparison row is the log of the two times' ratio (rounded to 3 digits).
   EXPECT_NEAR(value("log10(t_jump/t_inhom)"), std::log10(value("t_jump, its centre") / value("t_inhom, ")), 0.01);
 
+  // The robustness block (pipelines/robustness.mk, robustness.sh): the
+  // pipeline's collapse and one row per other analysis choice. Identities:
+  // the eta window changes only eta (the same search on the same data gives
+  // theta and z bit for bit); the fixed-product row holds z theta = 3; and its
+  // quality, a minimum of the same Q over a line of the free fit's plane,
+  // is not below the free fit's.
+  {
+    std::string columns;
+    const auto rows = tsv_rows(out + "/robustness.tsv", &columns);
+    EXPECT_EQ(columns, "choice\tchange\ttheta\ttheta_err\tz\tz_err\teta\teta_err\tquality\tverdict");
+    std::map<std::string, std::vector<std::string>> by_choice;
+    for (const auto& r : rows) by_choice[r.at(0)] = r;
+    for (const char* choice : {"pipeline", "start", "weights", "eta", "drop", "product"})
+      EXPECT_EQ(by_choice.count(choice), 1u) << choice;
+    const auto number = [&](const char* choice, int column) { return std::stod(by_choice[choice].at(column)); };
+    EXPECT_EQ(by_choice["eta"].at(2), by_choice["pipeline"].at(2));  // theta
+    EXPECT_EQ(by_choice["eta"].at(4), by_choice["pipeline"].at(4));  // z
+    EXPECT_NEAR(number("product", 2) * number("product", 4), 3.0, 1e-12);
+    EXPECT_GE(number("product", 8), number("pipeline", 8) * (1 - 1e-9));
+    EXPECT_DOUBLE_EQ(number("pipeline", 2), value("theta, collapse"));
+    for (const auto& r : rows) EXPECT_FALSE(r.at(9).empty()) << r.at(0);  // every row has a verdict
+  }
+
   // Every table of the figures parses, and each fitted theta of Fig. 2 is finite.
   int fits = 0;
   for (const auto& entry : fs::directory_iterator(out + "/tables")) {

@@ -25,7 +25,7 @@ SKIPPED = {
     "make -C pipelines/demo -j2": "the demo pipeline: about 30 minutes (the recipes run at SCALE=tiny in tests/cli/pipeline_test.cc)",
     "make -C pipelines/demo reanalyze": "needs an archive of demo runs; tests/cli/pipeline_test.cc runs reanalyze from the tiny runs",
     "make -C pipelines/paper -j": "the paper scale: hundreds of core-hours on a cluster (srun)",
-    "make -C pipelines/workstation -j": "the workstation scale: 1.7 core-hours, an hour on 2 cores (its plan is run: make -C pipelines/workstation estimate)",
+    "make -C pipelines/workstation -j": "the workstation scale: 4.1 core-hours planned, 2-2.5 hours on 2 cores (its plan is run: make -C pipelines/workstation estimate)",
     "sbatch pipelines/cluster/paper.sbatch": "needs a Slurm cluster (its shell is checked with sh -n below)",
     "sbatch --ntasks=2": "needs a Slurm cluster (its shell is checked with sh -n below)",
     "make install": "installs into PREFIX; tests/cli/installed_tree.sh (ctest InstalledTree.*) installs into a fresh prefix and runs the pages, completion and pipelines there",
