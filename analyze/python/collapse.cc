@@ -25,10 +25,11 @@ std::vector<Table> tables_of(const py::list& curves) {
 py::dict collapse(const py::list& curves, double theta, double z, bool optimize, int bootstrap, std::uint64_t seed,
                   double min_overlap, const std::optional<std::string>& t_window,
                   const std::optional<std::string>& eta_window, const std::string& weights, bool summary,
-                  const std::string& t_column, const std::string& e_column) {
+                  const std::string& t_column, const std::string& e_column, const std::optional<double>& z_theta) {
   if (weights != "none" && weights != "seeds")
     throw InputError("weights = '" + shown(weights) + "' is not a weighting; allowed: none, seeds");
   if (bootstrap < 0) throw InputError("bootstrap must be >= 0 replicas, got " + std::to_string(bootstrap));
+  if (z_theta && !optimize) throw InputError("z_theta holds z theta fixed while optimising: it needs optimize=True");
   CollapseOptions o;
   o.columns.t = t_column;
   o.columns.E = e_column;
@@ -43,6 +44,7 @@ py::dict collapse(const py::list& curves, double theta, double z, bool optimize,
   if (eta_window) o.eta_window = parse_window(*eta_window, "eta_window");
   o.seed_weights = weights == "seeds";
   o.summary = summary;
+  o.z_theta = z_theta;
   const CollapseResult r = collapse_tables(tables_of(curves), o);
   std::vector<std::vector<double>> rows;
   std::vector<std::int32_t> block;
@@ -73,7 +75,8 @@ void bind_collapse(py::module_& m) {
         py::arg("optimize") = false, py::arg("bootstrap") = d.search.bootstrap, py::arg("seed") = d.search.seed,
         py::arg("min_overlap") = d.search.min_overlap_decades, py::arg("t_window") = py::none(),
         py::arg("eta_window") = py::none(), py::arg("weights") = "none", py::arg("summary") = false,
-        py::arg("t_column") = d.columns.t, py::arg("e_column") = d.columns.E);
+        py::arg("t_column") = d.columns.t, py::arg("e_column") = d.columns.E,
+        py::arg("z_theta") = py::none());
 }
 
 }  // namespace coolgas::python

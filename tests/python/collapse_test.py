@@ -80,6 +80,15 @@ def test_seeds_jackknife_and_weights_equal_the_tool(energy, tmp_path):
     np.testing.assert_array_equal(py.to_numpy(), cli.to_numpy())
 
 
+def test_fixed_product_equals_the_tool(energy, tmp_path):
+    paths = [energy[f"E{L}-{s}"] for L in SIZES for s in (1, 2)]
+    cli, _ = cli_table(tmp_path, *paths, "--optimize", "--summary", "--z-theta", "3", "--t-window", "1:2000")
+    py = coolgas.collapse([coolgas.read_table(p) for p in paths], optimize=True, summary=True, z_theta=3,
+                          t_window="1:2000")
+    np.testing.assert_array_equal(py.to_numpy(), cli.to_numpy())
+    assert py.attrs["z"] * py.attrs["theta"] == pytest.approx(3, rel=1e-14)
+
+
 def test_arrays_are_the_same_tables(energy):
     tables = [coolgas.read_table(energy[f"E{L}"]) for L in SIZES]
     from_frames = coolgas.collapse(tables, theta=1.3, z=2.7)
@@ -112,3 +121,5 @@ def test_bad_arguments_raise_python_errors(energy):
         coolgas.collapse([(10, t, 1 / t), (12, t, 1 / t)], min_overlap=-1)
     with pytest.raises(coolgas.InputError, match="t_window"):
         coolgas.collapse([(10, t, 1 / t), (12, t, 1 / t)], t_window="5")
+    with pytest.raises(coolgas.InputError, match="needs optimize=True"):
+        coolgas.collapse([(10, t, 1 / t), (12, t, 1 / t)], z_theta=3)

@@ -29,7 +29,7 @@ def _curve(i, c):
 
 
 def collapse(curves, theta=None, z=None, optimize=False, bootstrap=None, seed=None, min_overlap=None, t_window=None,
-             eta_window=None, weights="none", summary=False, t_column=None, e_column=None):
+             eta_window=None, weights="none", summary=False, t_column=None, e_column=None, z_theta=None):
     """coolgas-collapse on E(t) curves: finite-size scaling E(t) =
     L^(-z theta) f(t/L^z). Returns the tool's table: the scaled curves
     (x y L t E, one block per L ascending, df.attrs["block"]) or, with
@@ -39,7 +39,9 @@ def collapse(curves, theta=None, z=None, optimize=False, bootstrap=None, seed=No
     attrs["L"]), dicts {"L", "t", "E"[, "E_err"]} or tuples (L, t, E[,
     E_err]); several of one L are its runs (seeds). optimize: find theta and
     z (starting from theta, z); without t_window it collapses from where
-    every curve is past Haff's law, as the tool does. Windows: "lo:hi" or
+    every curve is past Haff's law, as the tool does. z_theta (with
+    optimize): hold z theta at this value and find z alone (--z-theta; 3
+    is the paper's E L^3 against t/L^(5/2)). Windows: "lo:hi" or
     (lo, hi). weights: "none" or "seeds". df.attrs: theta, z, quality,
     theta_err, z_err, eta, eta_err (None when not computed), provenance."""
     if isinstance(curves, (pd.DataFrame, dict, tuple)):
@@ -48,7 +50,7 @@ def collapse(curves, theta=None, z=None, optimize=False, bootstrap=None, seed=No
     d = _core.collapse([_curve(i, c) for i, c in enumerate(curves)], optimize=bool(optimize), weights=weights,
                        summary=bool(summary), t_window=window(t_window), eta_window=window(eta_window),
                        **_given(theta=theta, z=z, bootstrap=bootstrap, seed=seed, min_overlap=min_overlap,
-                                t_column=t_column, e_column=e_column))
+                                t_column=t_column, e_column=e_column, z_theta=z_theta))
     df = pd.DataFrame(d["rows"], columns=list(d["columns"]))
     df.attrs["block"] = d["block"]
     df.attrs["provenance"] = [tuple(kv) for kv in d["provenance"]]
