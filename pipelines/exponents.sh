@@ -84,6 +84,10 @@ xlo=${xr% *} xhi=${xr#* }
 if awk "BEGIN { exit !($xlo < 0.1 && $xhi > 1) }"; then reg=yes; else reg="no: the scaled data span x = $xlo to $xhi, not both x < 0.1 and x > 1"; fi
 row "theta, collapse E L^(z theta) vs t/L^z" 1 "$(value "$collapse" theta '#')" "$(value "$collapse" theta_err '#')" 1.2 0 "$reg"
 row "z, same collapse" 1 "$(value "$collapse" z '#')" "$(value "$collapse" z_err '#')" 2.5 0 "$reg"
+# The product z theta, the exponent of L in E L^(z theta): mean field (and the
+# paper's Fig. 1) has z theta = d = 3. Its error comes from the same
+# replicas as theta's and z's, which are correlated.
+row "z theta, same collapse (mean field: d)" 1 "$(value "$collapse" z_theta '#')" "$(value "$collapse" z_theta_err '#')" 3 0 "$reg"
 collapse_regime=$reg
 ew=$(value "$collapse" eta_window '#')
 ewlo=${ew%%:*}

@@ -12,8 +12,11 @@
 # change); otherwise it names what moved and by how many of those errors, so
 # the table says which choice decides. The fixed-product row (z theta = d,
 # the paper's form E L^3 against t/L^(5/2)) also gives its quality Q over the
-# free fit's: both are minima of the same Q (same runs, window, weights), the
-# fixed one over a line of the free one's plane, so the ratio is >= 1; the
+# free fit's, and the free fit's product z theta with its error from the
+# same jackknife replicas (its distance from d in those errors says whether
+# the data prefer the paper's form). Both qualities are minima of the same
+# Q (same runs, window, weights), the fixed one over a line of the free
+# one's plane, so the ratio is >= 1; the
 # verdict (consistent with z theta = d, or the free fit preferred) is the
 # same rule as every row's, for theta and z (eta is not part of the relation).
 # eta's error is that of its power-law fit to the pooled scaled points, which
@@ -63,7 +66,7 @@ for choice in start weights eta drop product; do
       "$choice" "$change" "$theta" "$theta_err" "$z" "$z_err" "$eta" "$eta_err" "$q" "$(printf '%.3g' "$z")" "$(printf '%.3g' "$theta")"
     continue
   fi
-  verdict=$(awk -v c="$choice" -v q="$q" -v bq="$b_q" -v zt="$z_theta" \
+  verdict=$(awk -v c="$choice" -v q="$q" -v bq="$b_q" -v zt="$z_theta" -v ft="$(meta z_theta) $(meta z_theta_err)" \
     -v a="$theta $theta_err $b_theta $b_theta_err" -v b="$z $z_err $b_z $b_z_err" -v e="$eta $eta_err $b_eta $b_eta_err" '
     function num(v) { return v ~ /^[-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?$/ }
     # "name moves by k sigma" when |v - ref| exceeds the larger error
@@ -84,8 +87,11 @@ for choice in start weights eta drop product; do
       sub(/;$/, "", v)
       if (c == "product") {
         split(a, pa, " "); split(b, pb, " ")
-        v = v sprintf("; %s z theta = %s (the free fit has %.3f)", moved_tz ? "theta or z moves by more than its error with" \
-                      : "theta and z are consistent with", zt, pa[3] * pb[3])
+        split(ft, pf, " ")
+        free = num(pf[2]) && pf[2] > 0 ? sprintf("%.3f +- %.3f, %.1f sigma from %s", pf[1], pf[2], (pf[1] - zt) / pf[2], zt) \
+                                       : sprintf("%.3f", pa[3] * pb[3])
+        v = v sprintf("; %s z theta = %s (the free fit has %s)", moved_tz ? "theta or z moves by more than its error with" \
+                      : "theta and z are consistent with", zt, free)
         if (num(q) && num(bq) && bq > 0) v = v sprintf(", quality %.3g times the free fit'"'"'s", q / bq)
       }
       print v

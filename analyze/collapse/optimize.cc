@@ -120,11 +120,11 @@ SizeEnsemble without_run(const SizeEnsemble& e, std::size_t r) {
 // `means`: every size's mean curve (mean_curves(sizes)); a replica replaces one.
 void jackknife_runs(const std::vector<SizeEnsemble>& sizes, const std::vector<ScalingCurve>& means,
                     const Minimum& best, double min_overlap, CollapseFit& fit) {
-  double var_theta = 0, var_z = 0;
+  double var_theta = 0, var_z = 0, var_product = 0;
   fit.replicas = 0;
   for (std::size_t s = 0; s < sizes.size(); ++s) {
     const std::size_t n = sizes[s].runs.size();
-    std::vector<double> thetas, zs;
+    std::vector<double> thetas, zs, products;
     for (std::size_t r = 0; r < n; ++r) {
       throw_if_interrupted(std::size_t(fit.replicas), total_runs(sizes), "jackknife replicas");
       std::vector<ScalingCurve> replica = means;
@@ -132,21 +132,24 @@ void jackknife_runs(const std::vector<SizeEnsemble>& sizes, const std::vector<Sc
       const Minimum m = minimise(replica, best.theta, best.z, min_overlap);
       thetas.push_back(m.theta);
       zs.push_back(m.z);
+      products.push_back(m.z * m.theta);
       ++fit.replicas;
     }
     const double factor = double(n - 1) / double(n);
     var_theta += factor * sum_of_squares(thetas);
     var_z += factor * sum_of_squares(zs);
+    var_product += factor * sum_of_squares(products);
   }
   fit.theta_err = std::sqrt(var_theta);
   fit.z_err = std::sqrt(var_z);
+  fit.z_theta_err = std::sqrt(var_product);
 }
 
 void bootstrap(const std::vector<ScalingCurve>& curves, const Minimum& best, const CollapseSearch& search,
                CollapseFit& fit) {
   std::unique_ptr<gsl_rng, void (*)(gsl_rng*)> rng(gsl_rng_alloc(gsl_rng_mt19937), gsl_rng_free);
   gsl_rng_set(rng.get(), static_cast<unsigned long>(search.seed));
-  std::vector<double> thetas, zs;
+  std::vector<double> thetas, zs, products;
   for (int b = 0; b < search.bootstrap; ++b) {
     throw_if_interrupted(std::size_t(b), std::size_t(search.bootstrap), "bootstrap replicas");
     const auto replica =
@@ -154,11 +157,13 @@ void bootstrap(const std::vector<ScalingCurve>& curves, const Minimum& best, con
     const Minimum m = minimise(replica, best.theta, best.z, search.min_overlap_decades);
     thetas.push_back(m.theta);
     zs.push_back(m.z);
+    products.push_back(m.z * m.theta);
   }
   fit.replicas = search.bootstrap;
   const double dof = std::max(1.0, double(thetas.size()) - 1);
   fit.theta_err = std::sqrt(sum_of_squares(thetas) / dof);
   fit.z_err = std::sqrt(sum_of_squares(zs) / dof);
+  fit.z_theta_err = std::sqrt(sum_of_squares(products) / dof);
 }
 
 BootstrapKind resampling_kind(const std::vector<SizeEnsemble>& sizes, const std::vector<ScalingCurve>& means) {

@@ -42,6 +42,11 @@ struct CollapseFit {
   double theta_err = 0, z_err = 0;  // 0 when bootstrap = 0
   int replicas = 0;
   BootstrapKind kind = BootstrapKind::kErrors;
+  // The error of the product z theta (the paper's E L^(z theta): mean field
+  // has z theta = d) from the same replicas: theta and z are correlated,
+  // so it is not theirs combined as if independent. 0 when bootstrap = 0,
+  // and when the product is held fixed (fixed_product.h).
+  double z_theta_err = 0;
 };
 
 // Needs >= 2 sizes; the collapse is of each size's mean curve. InputError if

@@ -80,6 +80,10 @@ Provenance collapse_provenance(const CollapseOptions& o, const std::vector<SizeE
   if (r.fit) {
     p.emplace_back("theta_err", format_number(r.fit->theta_err));
     p.emplace_back("z_err", format_number(r.fit->z_err));
+    if (!o.z_theta) {  // the free fit's product, to set beside the fixed one's (--z-theta 3: mean field)
+      p.emplace_back("z_theta", format_number(r.z * r.theta));
+      p.emplace_back("z_theta_err", format_number(r.fit->z_theta_err));
+    }
     p.emplace_back("uncertainty", uncertainty_text(*r.fit, o.search.seed));
   }
   p.emplace_back("quality", format_number(r.quality));

@@ -62,6 +62,7 @@ py::dict collapse(const py::list& curves, double theta, double z, bool optimize,
   const auto number_or_none = [](bool has, double v) { return has ? py::object(py::float_(v)) : py::object(py::none()); };
   d["theta_err"] = number_or_none(bool(r.fit), r.fit ? r.fit->theta_err : 0);
   d["z_err"] = number_or_none(bool(r.fit), r.fit ? r.fit->z_err : 0);
+  d["z_theta_err"] = number_or_none(r.fit && !z_theta, r.fit ? r.fit->z_theta_err : 0);  // the free fit's product
   d["eta"] = number_or_none(bool(r.eta), r.eta ? r.eta->theta : 0);
   d["eta_err"] = number_or_none(bool(r.eta), r.eta ? r.eta->theta_err : 0);
   return d;

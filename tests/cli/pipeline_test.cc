@@ -112,6 +112,10 @@ TEST(Pipeline, TinyPipelineRunsEndToEndAndIsIncremental) {
   EXPECT_LT(value("theta, power-law fit"), 1.7);
   EXPECT_GT(row("theta, collapse").error, 0.0);
   EXPECT_GT(value("z, same collapse"), 0.5);
+  // The product row is the same fit's theta z (identity), with an error of its own.
+  EXPECT_NEAR(value("z theta, same collapse"), value("theta, collapse") * value("z, same collapse"),
+              1e-12 * value("z theta, same collapse"));
+  EXPECT_GT(row("z theta, same collapse").error, 0.0);
   EXPECT_GT(value("theta, power-law fit"), 0.5);
   EXPECT_GT(value("largest cluster"), 0.0);
   EXPECT_LE(value("largest cluster"), 1.0);

@@ -66,7 +66,7 @@ def test_equals_the_tool(case, energy, tmp_path):
     np.testing.assert_array_equal(py.to_numpy(), cli.to_numpy())  # exact: no tolerance
     if "summary" not in options:
         np.testing.assert_array_equal(py.attrs["block"], cli_attrs.attrs["block"])  # one block per L
-    for key in ("theta", "z", "quality", "theta_err", "z_err"):
+    for key in ("theta", "z", "quality", "theta_err", "z_err", "z_theta_err"):
         if key in cli_attrs.attrs:
             assert py.attrs[key] == float(cli_attrs.attrs[key])
     assert py.attrs["theta_err"] is None or "theta_err" in cli_attrs.attrs

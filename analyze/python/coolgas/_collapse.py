@@ -43,7 +43,9 @@ def collapse(curves, theta=None, z=None, optimize=False, bootstrap=None, seed=No
     optimize): hold z theta at this value and find z alone (--z-theta; 3
     is the paper's E L^3 against t/L^(5/2)). Windows: "lo:hi" or
     (lo, hi). weights: "none" or "seeds". df.attrs: theta, z, quality,
-    theta_err, z_err, eta, eta_err (None when not computed), provenance."""
+    theta_err, z_err, z_theta_err (the free fit's product z theta, its
+    error from the same replicas), eta, eta_err (None when not computed),
+    provenance."""
     if isinstance(curves, (pd.DataFrame, dict, tuple)):
         raise TypeError("curves must be a list of curves (several L), not a single "
                         f"{type(curves).__name__}")
@@ -54,6 +56,6 @@ def collapse(curves, theta=None, z=None, optimize=False, bootstrap=None, seed=No
     df = pd.DataFrame(d["rows"], columns=list(d["columns"]))
     df.attrs["block"] = d["block"]
     df.attrs["provenance"] = [tuple(kv) for kv in d["provenance"]]
-    for key in ("theta", "z", "quality", "theta_err", "z_err", "eta", "eta_err"):
+    for key in ("theta", "z", "quality", "theta_err", "z_err", "z_theta_err", "eta", "eta_err"):
         df.attrs[key] = d[key]
     return df

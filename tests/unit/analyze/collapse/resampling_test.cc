@@ -92,15 +92,17 @@ TEST(CollapseResampling, ErrorFallsAsOneOverSqrtRuns) {
 }
 
 // (ii) |theta - 6/5| <= theta_err in about 68 % of 40 ensembles (binomial
-// standard deviation 7 %), and likewise for z.
+// standard deviation 7 %), and likewise for z and for the product z theta
+// (whose error comes from the same replicas, keeping their correlation).
 TEST(CollapseResampling, OneStandardErrorCoversTheTruthAtItsStatedRate) {
-  int theta_in = 0, z_in = 0, bootstrap_in = 0;
+  int theta_in = 0, z_in = 0, product_in = 0, bootstrap_in = 0;
   const int trials = 40;
   for (std::uint64_t seed = 1; seed <= trials; ++seed) {
     const auto sizes = synthetic_ensemble(5, 1000 + seed);
     const CollapseFit f = fit(sizes);
     theta_in += std::abs(f.theta - kTrueTheta) <= f.theta_err;
     z_in += std::abs(f.z - kTrueZ) <= f.z_err;
+    product_in += std::abs(f.z * f.theta - kTrueZ * kTrueTheta) <= f.z_theta_err;
     CollapseSearch s;
     s.bootstrap = 40;
     const CollapseFit p = optimize_collapse(mean_curves(sizes), s);  // one mean curve per size
@@ -111,6 +113,8 @@ TEST(CollapseResampling, OneStandardErrorCoversTheTruthAtItsStatedRate) {
   EXPECT_LE(theta_in, 0.86 * trials);
   EXPECT_GE(z_in, 0.50 * trials);
   EXPECT_LE(z_in, 0.86 * trials);
+  EXPECT_GE(product_in, 0.50 * trials);
+  EXPECT_LE(product_in, 0.86 * trials);
   EXPECT_LT(bootstrap_in, 0.40 * trials);  // the point bootstrap's error is far too small here
 }
 
