@@ -212,6 +212,13 @@ if [ -f "$tables/tail_ba.tsv" ]; then
   row "beta_BA, -ln Phi(y) ~ y^beta at t = $(short "$1"), phi = $(short "$(value "$tables/tail_ba.tsv" phi '#')") (paper: 0.70, not 2/theta_BA)" 5 "$(short "$2")" "$(short "$3")" 0.70 0 yes
 fi
 
+# BA's cluster-size distribution below its mean mass (the gas's tau row is Fig. 3's other half).
+if [ -f "$tables/fit_nm_ba.tsv" ]; then
+  fit=$tables/fit_nm_ba.tsv
+  row "tau_BA, N(m) ~ m^-tau for m = 1 to M_avg = $(short "$(value "$fit" t_max)") at t = $(short "$(sed -n 's/^# time: //p' "$tables/nm_ba.tsv" | tail -n 1)") (paper: 0.2, then an exponential tail)" 3 \
+    "$(value "$fit" theta)" "$(value "$fit" theta_err)" 0.2 0 yes
+fi
+
 # Ballistic aggregation: the paper gives theta_BA = 1.283 +- 0.005 at phi = 0.005 and 1.206 +- 0.005 at 0.208.
 for fit in $ba_fits; do
   phi=$(basename "$fit" .tsv | sed 's/^fit_energy_ba_phi//; s/_s[0-9]*$//')

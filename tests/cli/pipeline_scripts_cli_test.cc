@@ -2,12 +2,16 @@
 // pipelines/timed-run.sh (wall and CPU time of a run), pipelines/h5-last.sh
 // (the last value of a dataset, or the last up to a time, e.g. a run's
 // collision count) and
-// pipelines/readme-table.sh (a pipeline's table copied into the README).
+// pipelines/readme-table.sh (a pipeline's table copied into the README) and
+// pipelines/verdicts.sh (the paper's claims judged on an exponent table).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "common/trajectory/resume_frame.h"
 #include "tests/support/cli_checks.h"
@@ -144,6 +148,52 @@ TEST(ReadmeTable, AReadmeWithoutTheMarkersIsOneErrorLineAndStaysAsItWas) {
       run_command("sh " + source("pipelines/readme-table.sh") + " " + table + " " + readme + " exponents-paper"),
       "exponents-paper:begin");
   EXPECT_EQ(read_text(readme), text);
+}
+
+// An exponent table (pipelines/exponents.sh's columns) of the given rows:
+// quantity, measured, error, regime.
+std::string exponent_table(const std::string& dir, const std::vector<std::array<std::string, 4>>& rows) {
+  std::string text = "quantity\tfigure\tmeasured\terror\tpaper\tpaper_error\tdeviation\tregime\n# tool: test\n";
+  for (const auto& r : rows) text += r[0] + "\t1\t" + r[1] + "\t" + r[2] + "\t-\t-\t-\t" + r[3] + "\n";
+  return test::write_file(dir, "exponents.tsv", text);
+}
+
+// The verdict of the claim starting with `claim` in verdicts.sh's output.
+std::string verdict_of(const std::string& table, const std::string& claim) {
+  const auto r = run_command("sh " + source("pipelines/verdicts.sh") + " " + table);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  std::istringstream lines(r.out);
+  for (std::string line; std::getline(lines, line);)
+    if (line.rfind(claim, 0) == 0) return line.substr(line.rfind('\t') + 1);
+  ADD_FAILURE() << "no claim '" << claim << "' in\n" << r.out;
+  return "";
+}
+
+// The rules stated in verdicts.sh: within the tolerance supports, beyond it
+// by more than 3 errors does not, between decides nothing, and evidence
+// outside the paper's regime decides nothing and says why.
+TEST(Verdicts, WithinToleranceBeyondItAndOutsideTheRegime) {
+  const std::string dir = test::scratch_dir("pipeline_scripts");
+  const auto theta = [&](const std::string& collapse, const std::string& fit, const std::string& regime) {
+    return verdict_of(exponent_table(dir, {{"theta, collapse E L^(z theta) vs t/L^z", collapse, "0.01", "yes"},
+                                           {"theta, power-law fit at L = 68", fit, "0.005", regime}}),
+                      "theta agrees");
+  };
+  EXPECT_EQ(theta("1.21", "1.19", "yes").rfind("supported:", 0), 0u);
+  EXPECT_EQ(theta("1.49", "1.5", "yes").rfind("not supported:", 0), 0u);
+  EXPECT_EQ(theta("1.25", "1.19", "yes").rfind("not decided at this scale:", 0), 0u);
+  EXPECT_EQ(theta("1.21", "1.19", "no: too late"), "not decided at this scale (theta, power-law fit at L = 68: too late)");
+
+  const auto z = [&](const std::string& value, const std::string& error) {
+    return verdict_of(exponent_table(dir, {{"z, same collapse", value, error, "yes"}}), "E(t) obeys");
+  };
+  EXPECT_EQ(z("2.6", "0.1").rfind("supported:", 0), 0u);
+  EXPECT_EQ(z("3.5", "0.1").rfind("not supported:", 0), 0u);        // 1 beyond 0.25, 7.5 errors
+  EXPECT_EQ(z("2.8", "0.1").rfind("not decided at this scale:", 0), 0u);  // 0.05 beyond: under 3 errors
+  EXPECT_NE(z("2.5", "0.3").find("uncertain by more than 0.25"), std::string::npos);
+
+  // A claim whose rows the table lacks is not decided, and says which rows.
+  EXPECT_NE(verdict_of(exponent_table(dir, {}), "the kurtosis").find("no row kappa"), std::string::npos);
 }
 
 }  // namespace

@@ -151,6 +151,25 @@ TEST(Pipeline, TinyPipelineRunsEndToEndAndIsIncremental) {
   // The comparison row is the log of the two times' ratio (rounded to 3 digits).
   EXPECT_NEAR(value("log10(t_jump/t_inhom)"), std::log10(value("t_jump, its centre") / value("t_inhom, ")), 0.01);
 
+  // exponents.md ends with the paper's claims, each with a verdict of the
+  // three kinds pipelines/verdicts.sh gives.
+  {
+    const std::string md = test::read_text(out + "/exponents.md");
+    const auto at = md.find("| the paper's claim | evidence | verdict |");
+    ASSERT_NE(at, std::string::npos);
+    std::istringstream lines(md.substr(at));
+    int claims = 0;
+    for (std::string line; std::getline(lines, line);) {
+      if (line.rfind("| ", 0) != 0 || line.rfind("| the paper's claim", 0) == 0) continue;
+      ++claims;
+      const std::string verdict = line.substr(line.rfind(" | ", line.size() - 3) + 3);
+      EXPECT_TRUE(verdict.rfind("supported", 0) == 0 || verdict.rfind("not supported", 0) == 0 ||
+                  verdict.rfind("not decided at this scale", 0) == 0)
+          << line;
+    }
+    EXPECT_EQ(claims, 8);
+  }
+
   // The robustness block (pipelines/robustness.mk, robustness.sh): the
   // pipeline's collapse and one row per other analysis choice. Identities:
   // the eta window changes only eta (the same search on the same data gives
