@@ -96,4 +96,19 @@ std::vector<ScalingCurve> mean_curves(const std::vector<SizeEnsemble>& sizes) {
   return out;
 }
 
+SizeEnsemble without_run(const SizeEnsemble& e, std::size_t r) {
+  SizeEnsemble out = e;
+  out.runs.erase(out.runs.begin() + std::ptrdiff_t(r));
+  if (!e.scatter.ln_t.empty() && out.runs.size() >= 2) estimate_seed_scatter(out);
+  return out;
+}
+
+double sum_of_squares(const std::vector<double>& v) {
+  double mean = 0, ss = 0;
+  for (double x : v) mean += x;
+  mean /= double(v.size());
+  for (double x : v) ss += (x - mean) * (x - mean);
+  return ss;
+}
+
 }  // namespace coolgas

@@ -41,4 +41,13 @@ ScalingCurve ensemble_mean(const SizeEnsemble& e);  // every run once
 // The mean curve of every size, in increasing L.
 std::vector<ScalingCurve> mean_curves(const std::vector<SizeEnsemble>& sizes);
 
+// The size without its run r, for the jackknife over runs. Weights, when the
+// collapse has them, are estimated again from the runs left (if two or more
+// are), so that their dependence on the data is resampled too; with one left
+// it keeps the scatter of all of them.
+SizeEnsemble without_run(const SizeEnsemble& e, std::size_t r);
+
+// Sum of squared deviations from the mean (the replicas' spread).
+double sum_of_squares(const std::vector<double>& v);
+
 }  // namespace coolgas

@@ -72,23 +72,6 @@ Point minimise(const std::vector<ScalingCurve>& curves, double product, double z
   return b.q < best.q ? b : best;
 }
 
-// As optimize.cc's: the size without run r, its weights estimated again from
-// the runs left when two or more are.
-SizeEnsemble without_run(const SizeEnsemble& e, std::size_t r) {
-  SizeEnsemble out = e;
-  out.runs.erase(out.runs.begin() + std::ptrdiff_t(r));
-  if (!e.scatter.ln_t.empty() && out.runs.size() >= 2) estimate_seed_scatter(out);
-  return out;
-}
-
-double sum_of_squares(const std::vector<double>& v) {
-  double mean = 0, ss = 0;
-  for (double x : v) mean += x;
-  mean /= double(v.size());
-  for (double x : v) ss += (x - mean) * (x - mean);
-  return ss;
-}
-
 }  // namespace fixed
 }  // namespace
 
@@ -127,15 +110,15 @@ CollapseFit optimize_collapse_fixed_product(const std::vector<SizeEnsemble>& siz
     for (std::size_t r = 0; r < n; ++r) {
       throw_if_interrupted(std::size_t(fit.replicas), runs, "jackknife replicas");
       std::vector<ScalingCurve> replica = means;
-      replica[s] = ensemble_mean(fixed::without_run(sizes[s], r));
+      replica[s] = ensemble_mean(without_run(sizes[s], r));
       const double zr = std::exp(fixed::minimise(replica, product, z, search.min_overlap_decades).u);
       zs.push_back(zr);
       thetas.push_back(product / zr);
       ++fit.replicas;
     }
     const double factor = double(n - 1) / double(n);
-    var_z += factor * fixed::sum_of_squares(zs);
-    var_theta += factor * fixed::sum_of_squares(thetas);
+    var_z += factor * sum_of_squares(zs);
+    var_theta += factor * sum_of_squares(thetas);
   }
   fit.z_err = std::sqrt(var_z);
   fit.theta_err = std::sqrt(var_theta);

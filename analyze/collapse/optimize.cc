@@ -90,30 +90,10 @@ std::vector<ScalingCurve> resample_rows(const std::vector<ScalingCurve>& curves,
   return out;
 }
 
-// Sum of squared deviations from the mean.
-double sum_of_squares(const std::vector<double>& v) {
-  double mean = 0, ss = 0;
-  for (double x : v) mean += x;
-  mean /= double(v.size());
-  for (double x : v) ss += (x - mean) * (x - mean);
-  return ss;
-}
-
 std::size_t total_runs(const std::vector<SizeEnsemble>& sizes) {
   std::size_t n = 0;
   for (const auto& s : sizes) n += s.runs.size();
   return n;
-}
-
-// The size without its run r. Weights, when the collapse has them, are
-// estimated again from the runs left (if two or more are), so that their
-// dependence on the data is resampled too; with one left it keeps the
-// scatter of all of them.
-SizeEnsemble without_run(const SizeEnsemble& e, std::size_t r) {
-  SizeEnsemble out = e;
-  out.runs.erase(out.runs.begin() + std::ptrdiff_t(r));
-  if (!e.scatter.ln_t.empty() && out.runs.size() >= 2) estimate_seed_scatter(out);
-  return out;
 }
 
 // The stratified delete-one jackknife over runs (optimize.h).

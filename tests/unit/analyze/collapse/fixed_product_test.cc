@@ -11,7 +11,7 @@
 #include "analyze/collapse/fixed_product.h"
 #include "analyze/collapse/optimize.h"
 #include "common/error.h"
-#include "common/random.h"
+#include "tests/unit/analyze/collapse/synthetic_runs.h"
 
 namespace coolgas {
 namespace {
@@ -20,35 +20,8 @@ namespace fixed_product_test {
 
 constexpr double kEta = 1.83;
 
-ScalingCurve synthetic_run(double L, double theta, double z, Random& rng) {
-  const double a = 0.05 * rng.normal(), b = 0.05 * rng.normal();
-  ScalingCurve c;
-  c.source = "synthetic";
-  c.L = L;
-  c.ln_L = std::log(L);
-  const int per_decade = 10, decades = 6;  // t from 1 to 1e6
-  for (int k = 0; k <= per_decade * decades; ++k) {
-    const double t = std::pow(10.0, double(k) / per_decade), x = t / std::pow(L, z);
-    const double u = 2.0 * k / (per_decade * decades) - 1;
-    const double ln_E = -z * theta * c.ln_L - theta * std::log(x) + (theta - kEta) * std::log1p(x) + a + b * u +
-                        0.005 * rng.normal();
-    c.t.push_back(t);
-    c.E.push_back(std::exp(ln_E));
-    c.ln_t.push_back(std::log(t));
-    c.ln_E.push_back(ln_E);
-  }
-  return c;
-}
-
 std::vector<SizeEnsemble> ensemble(double theta, double z, int runs_per_size, std::uint64_t seed) {
-  Random rng(seed);
-  std::vector<SizeEnsemble> sizes;
-  for (double L : {16.0, 32.0, 64.0}) {
-    SizeEnsemble s{L, {}, {}};
-    for (int r = 0; r < runs_per_size; ++r) s.runs.push_back(synthetic_run(L, theta, z, rng));
-    sizes.push_back(s);
-  }
-  return sizes;
+  return test::synthetic_ensemble(theta, z, kEta, runs_per_size, seed);
 }
 
 CollapseSearch start_at(double z0) {
@@ -104,7 +77,7 @@ TEST(CollapseFixedProduct, QualityIsNeverBetterThanTheFreeFit) {
 TEST(CollapseFixedProduct, RefusesWhatItCannotDo) {
   Random rng(3);
   std::vector<SizeEnsemble> one_run_each;
-  for (double L : {16.0, 32.0}) one_run_each.push_back(SizeEnsemble{L, {synthetic_run(L, 1.2, 2.5, rng)}, {}});
+  for (double L : {16.0, 32.0}) one_run_each.push_back(SizeEnsemble{L, {test::synthetic_run(L, 1.2, 2.5, kEta, rng)}, {}});
   EXPECT_THROW(optimize_collapse_fixed_product(one_run_each, start_at(2.5), 3.0), InputError);  // no jackknife
   CollapseSearch no_errors = start_at(2.5);
   no_errors.bootstrap = 0;

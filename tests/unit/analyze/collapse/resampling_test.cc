@@ -13,43 +13,15 @@
 
 #include "analyze/collapse/ensemble.h"
 #include "analyze/collapse/optimize.h"
-#include "common/random.h"
+#include "tests/unit/analyze/collapse/synthetic_runs.h"
 
 namespace coolgas {
 namespace {
 
 constexpr double kTrueTheta = 1.2, kTrueZ = 2.5, kTrueEta = 1.83;
-constexpr double kOffset = 0.05, kTilt = 0.05, kWhite = 0.005;
-
-ScalingCurve synthetic_run(double L, Random& rng) {
-  const double a = kOffset * rng.normal(), b = kTilt * rng.normal();
-  ScalingCurve c;
-  c.source = "synthetic";
-  c.L = L;
-  c.ln_L = std::log(L);
-  const int per_decade = 10, decades = 6;  // t from 1 to 1e6
-  for (int k = 0; k <= per_decade * decades; ++k) {
-    const double t = std::pow(10.0, double(k) / per_decade), x = t / std::pow(L, kTrueZ);
-    const double u = 2.0 * k / (per_decade * decades) - 1;
-    const double ln_E = -kTrueZ * kTrueTheta * c.ln_L - kTrueTheta * std::log(x) + (kTrueTheta - kTrueEta) * std::log1p(x) + a + b * u +
-                        kWhite * rng.normal();
-    c.t.push_back(t);
-    c.E.push_back(std::exp(ln_E));
-    c.ln_t.push_back(std::log(t));
-    c.ln_E.push_back(ln_E);
-  }
-  return c;
-}
 
 std::vector<SizeEnsemble> synthetic_ensemble(int runs_per_size, std::uint64_t seed) {
-  Random rng(seed);
-  std::vector<SizeEnsemble> sizes;
-  for (double L : {16.0, 32.0, 64.0}) {
-    SizeEnsemble s{L, {}, {}};
-    for (int r = 0; r < runs_per_size; ++r) s.runs.push_back(synthetic_run(L, rng));
-    sizes.push_back(s);
-  }
-  return sizes;
+  return test::synthetic_ensemble(kTrueTheta, kTrueZ, kTrueEta, runs_per_size, seed);
 }
 
 CollapseFit fit(const std::vector<SizeEnsemble>& sizes) {
@@ -60,7 +32,7 @@ CollapseFit fit(const std::vector<SizeEnsemble>& sizes) {
 
 TEST(CollapseResampling, MeanOfRunsAveragesEAtTheirCommonTimes) {
   Random rng(1);
-  SizeEnsemble e{16, {synthetic_run(16, rng), synthetic_run(16, rng)}, {}};
+  SizeEnsemble e{16, {test::synthetic_run(16, kTrueTheta, kTrueZ, kTrueEta, rng), test::synthetic_run(16, kTrueTheta, kTrueZ, kTrueEta, rng)}, {}};
   e.runs[1].t.erase(e.runs[1].t.begin());  // the second run lacks the first time
   e.runs[1].E.erase(e.runs[1].E.begin());
   e.runs[1].ln_t.erase(e.runs[1].ln_t.begin());
