@@ -42,7 +42,7 @@ plot row("alpha_kt", " && $4 == " . af . " && $3 > 0") using 3:5:6 with yerrorli
 set title "(b) -ln {/Symbol F}(y) ∝ y^{/Symbol b}: {/Symbol b} against the fit window"
 unset logscale x
 set format x "%g"
-set key top left font ",10"
+set key top left font ",9"
 set xlabel "start of the fit window, y ≥ y_{from}"
 set ylabel "{/Symbol b}"
 set yrange [1.1:2.1]
@@ -56,10 +56,13 @@ plot for [i = 1 : words(bt)] row("beta", " && $3 == " . word(bt, i)) using 4:5:6
 set title sprintf("(c) kurtosis {/Symbol k} = <v^4>/<v^2>^2 - 5/3 (speeds); paper: > 0 at t = %s", late)
 set logscale x
 set format x "10^{%L}"
-set key top left font ",10"
+set key bottom left font ",10"
 set xlabel "t  [initial mean collision times 1/{/Symbol w}_0]"
 set ylabel "{/Symbol k}"
-set yrange [*:*]
+# Room below the data for the key (stats reads only points inside the current ranges).
+set xrange [*:*]; set yrange [*:*]
+stats sel('$1 ~ /^kappa/ && $1 != "kappa_1"') using 5 nooutput
+set yrange [STATS_min - 0.8 * (STATS_max - STATS_min) : STATS_max + 0.05 * (STATS_max - STATS_min)]
 set xrange [*:*]
 Ls = distinct("kappa_seeds", 2)
 # Each L's points a little apart in t, so that their error bars stay apart.
