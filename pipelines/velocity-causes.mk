@@ -3,8 +3,9 @@
 # snapshot run against time and against the start y_from of the tail fit,
 # kinetic theory's alpha for this r0, and kappa and beta of the size runs
 # (mean over seeds, per L), in tables/velocity_causes.tsv
-# (pipelines/velocity-causes.sh says what each row is) and the figure
-# velocity_causes.png. exponents.sh reads its verdicts from that table.
+# with tables/velocity_causes_beta.tsv and _kappa.tsv
+# (pipelines/velocity-causes.sh says what each holds) and the figure
+# velocity_causes.png. exponents.sh reads its verdicts from these tables.
 # Knobs (scale file; defaults from Fig. 5's times):
 #   VCAUSE_ALPHA_TIMES  dumps for alpha against t (the early tail forms, then
 #                       leaves as the gas clusters); 0 is the Maxwellian start
@@ -21,17 +22,22 @@ VCAUSE_SIZE_TIMES ?= $(lastword $(PHI_LATE_TIMES))
 VCAUSE_SIZE_RUNS := $(foreach L,$(SIZE_L),$(call size_runs,$(L)))
 VCAUSE_ARGS = "$(VCAUSE_ALPHA_TIMES)" "$(VCAUSE_BETA_TIMES)" "$(VCAUSE_FROMS)" $(VCAUSE_ALPHA_FROM) "$(VCAUSE_SIZE_TIMES)"
 
+VCAUSE_TABLES := $(TABLES)/velocity_causes.tsv $(TABLES)/velocity_causes_beta.tsv $(TABLES)/velocity_causes_kappa.tsv
+
 $(TABLES)/velocity_causes.tsv: $(SNAP_RUN) $(VCAUSE_SIZE_RUNS) $(PIPE)velocity-causes.sh \
     $(call knob,velocity_causes,$(VCAUSE_ARGS))
 	@mkdir -p $(@D)
-	sh $(PIPE)velocity-causes.sh $(BIN) $(SNAP_RUN) $(VCAUSE_ARGS) $(VCAUSE_SIZE_RUNS) > $@
+	sh $(PIPE)velocity-causes.sh $(TABLES)/velocity_causes $(BIN) $(SNAP_RUN) $(VCAUSE_ARGS) $(VCAUSE_SIZE_RUNS)
+# Written by the step above, after velocity_causes.tsv (so never older).
+$(TABLES)/velocity_causes_beta.tsv $(TABLES)/velocity_causes_kappa.tsv: $(TABLES)/velocity_causes.tsv
+	@test -f $@ || { echo "$@ missing: remove $< and rerun"; exit 1; }
 
-$(OUT)/velocity_causes.png: $(TABLES)/velocity_causes.tsv $(PLOTS)/velocity_causes.gp
-	for o in $@ $(@:.png=.pdf); do gnuplot -e "causes='$<'; late='$(lastword $(PHI_LATE_TIMES))'; out='$$o'" \
-	  $(PLOTS)/velocity_causes.gp || exit 1; done
+$(OUT)/velocity_causes.png: $(VCAUSE_TABLES) $(PLOTS)/velocity_causes.gp
+	for o in $@ $(@:.png=.pdf); do gnuplot -e "causes='$(TABLES)/velocity_causes'; late='$(lastword $(PHI_LATE_TIMES))'; \
+	  out='$$o'" $(PLOTS)/velocity_causes.gp || exit 1; done
 
-# The exponent table's velocity rows read the table; 'all' draws the figure
+# The exponent table's velocity rows read the tables; 'all' draws the figure
 # (extra prerequisites: the rules themselves are in common.mk).
-$(OUT)/exponents.tsv: $(TABLES)/velocity_causes.tsv
+$(OUT)/exponents.tsv: $(VCAUSE_TABLES)
 all figures: $(OUT)/velocity_causes.png
 RESULTS += $(OUT)/velocity_causes.png
