@@ -361,6 +361,8 @@ $(OUT)/fig5_velocity.png: $(TABLES)/phi_early.tsv $(TABLES)/phi_late.tsv $(TABLE
     $(TABLES)/tail_gas.tsv $(FIG5_BA) $(PLOTS)/fig5_velocity.gp
 	for o in $@ $(@:.png=.pdf); do gnuplot -e "early='$(TABLES)/phi_early.tsv'; late='$(TABLES)/phi_late.tsv'; series='$(TABLES)/velocity_series.tsv'; \
 	  tail_gas='$(TABLES)/tail_gas.tsv'; tail_ba='$(FIG5_BA)'; out='$$o'" $(PLOTS)/fig5_velocity.gp || exit 1; done
+# Why alpha, beta and kappa differ from the paper: against t and fit window (pipelines/velocity-causes.mk).
+include $(PIPE)velocity-causes.mk
 
 # ---- Smoluchowski equation (paper Eqs. 3-4) beside the simulated gas
 # Volume = N of the snapshot run (c_1(0) = 1), so its M_max is that of a system

@@ -81,6 +81,12 @@ NM_TIMES := 1000 2000 4000 8000
 NM_FIT_WINDOW := 1:100
 PHI_EARLY_TIMES := 5 10
 PHI_LATE_TIMES := 2000 4000 8000
+# Why the velocity rows differ (pipelines/velocity-causes.mk): alpha through
+# the homogeneous state and out of it (the snapshot run dumps five a decade),
+# kappa and beta of the size runs (seeds' means) at their decade dumps.
+VCAUSE_ALPHA_TIMES := 0 1 2.5 5 10 25 63 100 250 1000
+VCAUSE_BETA_TIMES := 0 10 100 1000 2000 4000 8000
+VCAUSE_SIZE_TIMES := 100 1000 10000 100000
 
 # Smoluchowski equation (paper Eq. 3-4), beside the simulations.
 SMOL_M := 131072

@@ -32,6 +32,12 @@ NM_TIMES := 500 1000
 NM_FIT_WINDOW := 1:30
 PHI_EARLY_TIMES := 5 10
 PHI_LATE_TIMES := 500 1000
+# pipelines/velocity-causes.mk: a few dumps of each kind (the tails of
+# N = 1627 particles have few bins: only windows from y = 1.5 have 3 or more,
+# so that is the alpha row's window here).
+VCAUSE_ALPHA_TIMES := 0 5 10 100
+VCAUSE_SIZE_TIMES := 100 1000
+VCAUSE_ALPHA_FROM := 1.5
 
 SMOL_M := 4096
 SMOL_T_END := 30
