@@ -410,6 +410,8 @@ $(OUT)/exponents.tsv: $(EXPONENT_INPUTS) $(BA_FITS) $(PIPE)tsv-value.sh $(PIPE)e
 
 # Fig. 1's collapse under other analysis choices, side by side (pipelines/robustness.mk).
 include $(PIPE)robustness.mk
+# What decides theta of Fig. 2's sets, theta_BA and the largest cluster's share (pipelines/theta-causes.mk).
+include $(PIPE)theta-causes.mk
 
 $(OUT)/exponents.md: $(OUT)/exponents.tsv $(OUT)/robustness.tsv $(PIPE)exponents-md.sh
 	sh $(PIPE)exponents-md.sh $< "$(SCALE)" $(OUT)/robustness.tsv > $@
