@@ -55,3 +55,6 @@ STRUCTURE_GAS := snap_s1
 STRUCTURE_BA := ba_phi0.208_s1
 LT_FIT_WINDOW := 10:1000
 COLLAPSE_FROM := 10
+
+# What decides theta_BA (pipelines/theta-causes.mk): the BA run and one more seed.
+CAUSES_BA_SEEDS := 1 2

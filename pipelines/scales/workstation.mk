@@ -133,6 +133,14 @@ BA_NM_TIMES := 300 1000 2000
 # 0.86 +- 0.29). The exponent table reads the last time: 100, the latest
 # with a tail of more than a few bins.
 BA_PHI_TIMES := 10 30 100
+# What decides theta_BA (pipelines/theta-causes.mk): the demo's box L = 48
+# to t = 200 with eight seeds (1 CPU-s each) beside this L = 100 with three
+# (13-16 CPU-s each): theta_BA over the demo's window in both boxes, and to
+# t = 2000.
+CAUSES_BA_BOXES := 48 100
+CAUSES_BA_SEEDS_L48 := 1 2 3 4 5 6 7 8
+CAUSES_BA_T_END_L48 := 200
+CAUSES_BA_SEEDS_L100 := 1 2 3
 
 # The growing length: Fig. 2's phi = 0.208 run (L = 100, five dumps a
 # decade). L_C ~ 1.7 t^0.34 (the demo's L = 68) reaches L/4 = 25 near
