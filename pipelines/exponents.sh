@@ -98,13 +98,15 @@ row "theta, power-law fit at L = $L_max (t = $(short "$(value "$fit" t_min)"):$(
 # sigma from 6/5 says why, from tables/theta_causes.tsv (pipelines/theta-causes.mk):
 # the local slope of E(t) in its window and theta over other windows.
 causes=$tables/theta_causes.tsv
-# The row of theta_causes.tsv with these values: model phi r0 delta L window.
+# The first row of theta_causes.tsv with these values: model phi r0 delta L
+# window [fewest runs] (the pipeline's own run comes first; a set's seeds, if
+# the scale runs more, after it).
 causes_row() {
   [ -f "$causes" ] || return 0
-  awk -F '\t' -v m="$1" -v phi="$2" -v r0="$3" -v d="$4" -v L="$5" -v w="$6" '
+  awk -F '\t' -v m="$1" -v phi="$2" -v r0="$3" -v d="$4" -v L="$5" -v w="$6" -v runs="${7:-1}" '
     function near(a, b) { return (a - b) * (a - b) <= (0.003 * b) * (0.003 * b) }
     FNR == 1 || /^#/ || NF == 0 { next }
-    $1 == m && near($2, phi) && near($3, r0) && near($4, d) && $5 == L && $7 == w { print; exit }' "$causes"
+    $1 == m && near($2, phi) && near($3, r0) && near($4, d) && $5 == L && $7 == w && $6 >= runs { print; exit }' "$causes"
 }
 # Field $2 (1-based) of row $1.
 fld() { echo "$1" | cut -f "$2"; }
@@ -121,6 +123,12 @@ fig2_verdict() {  # set L theta theta_err
   printf ': differs from 6/5, because E(t) has no power-law plateau in the window (its local slope falls to %s at t = %s and is %s at the end, tables/theta_causes.tsv), so theta depends on the window: %s +- %s from a start sqrt(10) later, %s +- %s over the last half decade (%s)' \
     "$(short "$(fld "$w0" 14)")" "$(short "$(fld "$w0" 15)")" "$(short "$(fld "$w0" 16)")" \
     "$(short "$t1")" "$(short "$e1")" "$(short "$t2")" "$(short "$e2")" "$trend"
+  # More seeds of the set: how far one run's theta is from another's.
+  ws=$(causes_row 0 "$phi" "$r0" "$d" "$2" 0 2)
+  [ -n "$ws" ] || return 0
+  printf '; its %s seeds scatter by %s over the same window (this fit'"'"'s error: %s), and their mean E(t) gives %s +- %s, %s' \
+    "$(fld "$ws" 6)" "$(short "$(fld "$ws" 13)")" "$(short "$4")" "$(short "$(fld "$ws" 11)")" "$(short "$(fld "$ws" 12)")" \
+    "$(awk "BEGIN { m = $(fld "$ws" 11) - 1.2; e = $(fld "$ws" 13) / sqrt($(fld "$ws" 6)); print (m * m <= 4 * e * e) ? \"within 2 standard errors of the seeds' mean from 6/5\" : \"more than 2 standard errors of the seeds' mean from 6/5\" }")"
 }
 for p in $sets; do
   fit=$tables/fit_param_$p.tsv

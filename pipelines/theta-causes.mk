@@ -19,6 +19,10 @@
 #   CAUSES_BA_SEEDS    their seeds (default BA_SEED); CAUSES_BA_SEEDS_L<L> per box
 #   CAUSES_BA_T_END_L<L>  a box's end time (default BA_T_END): aggregates must
 #                      stay narrower than about L/2
+#   CAUSES_PARAM_SETS  Fig. 2 sets (names as phi0.156_r0.1_d1e-4) run again with
+#   CAUSES_PARAM_SEEDS more seeds, in the set's box to its end time: how much
+#                      one run's theta differs from another's, which its fit
+#                      error (its own points only) does not say
 # The box BA_L with seed BA_SEED to BA_T_END is the pipeline's own BA run, not
 # simulated again.
 
@@ -30,19 +34,30 @@ causes_ba_seeds = $(or $(CAUSES_BA_SEEDS_L$(1)),$(CAUSES_BA_SEEDS))
 causes_ba_name = $(if $(and $(filter $(BA_L),$(1)),$(filter $(BA_SEED),$(2)),$(filter \
   $(BA_T_END),$(call causes_ba_t_end,$(1))),$(filter $(PHI),$(BA_PHIS))),ba_phi$(PHI)_s$(2),babox_L$(1)_phi$(PHI)_s$(2))
 # Energy only: one dump a decade.
-CAUSES_BA_OUTPUT ?= observables_per_decade = 20$(newline)dumps_per_decade = 1
+CAUSES_OUTPUT ?= observables_per_decade = 20$(newline)dumps_per_decade = 1
+
+CAUSES_PARAM_SETS ?=
+CAUSES_PARAM_SEEDS ?=
 
 ifeq ($(ARCHIVE),)
+CAUSES_PARAM_SETS := $(filter $(PARAM_SETS),$(CAUSES_PARAM_SETS))
+$(foreach p,$(CAUSES_PARAM_SETS),$(foreach s,$(filter-out $(PARAM_SEEDS),$(CAUSES_PARAM_SEEDS)),$(call \
+  keep,$(SCENES)/pseed_$(p)_s$(s).toml,$(call gas_scene,pseed_$(p)_s$(s),$(call param_l,$(p)),$(call \
+  field,phi,x_$(p)),$(call field,r,x_$(p)),$(call field,d,x_$(p)),$(call param_t_end,$(p)),$(s),$(CAUSES_OUTPUT)))))
+causes_seed_runs = $(call param_runs,$(1)) $(foreach s,$(filter-out $(PARAM_SEEDS),$(CAUSES_PARAM_SEEDS)),$(RUNS)/pseed_$(1)_s$(s).h5)
 ifeq ($(BA),1)
 $(foreach L,$(CAUSES_BA_BOXES),$(foreach s,$(call causes_ba_seeds,$(L)),$(if $(filter babox_%,$(call \
   causes_ba_name,$(L),$(s))),$(call keep,$(SCENES)/$(call causes_ba_name,$(L),$(s)).toml,$(call \
-  ba_scene,$(call causes_ba_name,$(L),$(s)),$(L),$(PHI),$(call causes_ba_t_end,$(L)),$(s),$(CAUSES_BA_OUTPUT))))))
+  ba_scene,$(call causes_ba_name,$(L),$(s)),$(L),$(PHI),$(call causes_ba_t_end,$(L)),$(s),$(CAUSES_OUTPUT))))))
 causes_ba_runs = $(foreach s,$(call causes_ba_seeds,$(1)),$(RUNS)/$(call causes_ba_name,$(1),$(s)).h5)
 else
 CAUSES_BA_BOXES :=
 endif
 else
-# Reanalysis: the boxes and seeds the archive holds.
+# Reanalysis: the sets, boxes and seeds the archive holds.
+CAUSES_PARAM_SETS := $(sort $(foreach f,$(wildcard $(RUNS)/pseed_*.h5),$(call param_name,$(call field,phi,$(f)),$(call \
+  field,r,$(f)),$(call field,d,$(f)))))
+causes_seed_runs = $(call param_runs,$(1)) $(sort $(wildcard $(RUNS)/pseed_$(1)_s*.h5))
 CAUSES_BA_BOXES := $(if $(filter 1,$(BA)),$(call numeric_sort,$(sort $(foreach f,$(wildcard \
   $(RUNS)/babox_L*_phi$(PHI)_s*.h5),$(call field,L,$(f))))))
 causes_ba_runs = $(sort $(wildcard $(RUNS)/babox_L$(1)_phi$(PHI)_s*.h5) $(if $(filter $(BA_L),$(1)),$(wildcard \
@@ -50,14 +65,19 @@ causes_ba_runs = $(sort $(wildcard $(RUNS)/babox_L$(1)_phi$(PHI)_s*.h5) $(if $(f
 endif
 causes_run_tables = $(patsubst $(RUNS)/%.h5,$(TABLES)/energy_run_%.tsv,$(1))
 
-# E(t) of a box's runs together (the mean and its standard error).
+# E(t) of a box's runs together (the mean and its standard error); of a Fig. 2 set's seeds.
 $(TABLES)/energy_babox_L%.tsv: $$(call causes_ba_runs,$$*)
+	@mkdir -p $(@D)
+	$(BIN)/coolgas-energy $^ > $@
+$(TABLES)/energy_pseeds_%.tsv: $$(call causes_seed_runs,$$*)
 	@mkdir -p $(@D)
 	$(BIN)/coolgas-energy $^ > $@
 
 # One line per measured table: "KIND WINDOW MEAN_TABLE RUN_TABLES" (theta-causes.sh).
 CAUSES_SPECS := $(foreach p,$(PARAM_SETS),param $(call param_window,$(p)) $(TABLES)/energy_param_$(p).tsv \
-    $(call causes_run_tables,$(call param_runs,$(p)))$(newline))$(foreach L,$(SIZE_L),size $(THETA_WINDOW) \
+    $(call causes_run_tables,$(call param_runs,$(p)))$(newline))$(foreach p,$(CAUSES_PARAM_SETS),param $(call \
+    param_window,$(p)) $(TABLES)/energy_pseeds_$(p).tsv $(call causes_run_tables,$(call \
+    causes_seed_runs,$(p)))$(newline))$(foreach L,$(SIZE_L),size $(THETA_WINDOW) \
     $(TABLES)/energy_size_L$(L).tsv $(call causes_run_tables,$(call size_runs,$(L)))$(newline))$(foreach \
     L,$(CAUSES_BA_BOXES),ba $(BA_THETA_WINDOW) $(TABLES)/energy_babox_L$(L).tsv $(call \
     causes_run_tables,$(call causes_ba_runs,$(L)))$(newline))

@@ -81,8 +81,9 @@ plot share using 4:5 with points pt 7 ps 1.5 lc rgb '#0072b2' title 't = 0', \
 unset arrow 1; unset label 2
 set logscale x
 set xlabel "box side L"
-set xrange [*:*]
-set title sprintf("(f) the share in each box at {/Symbol f} = %s (no trend with L: a spanning cluster)", phi0)
+# Fig. 1's boxes, and a margin either side
+set xrange [real(word(sizes, 1)) / 1.5 : real(word(sizes, words(sizes))) * 1.5]
+set title sprintf("(f) the share in each box at {/Symbol f} = %s: a cluster that spans the box has a share independent of L", phi0)
 plot share using (near($1, real(phi0)) ? $2 : NaN):5 with points pt 7 ps 1.5 lc rgb '#0072b2' title 't = 0', \
      share using (near($1, real(phi0)) ? $2 : NaN):7 with points pt 5 ps 1.5 lc rgb '#d55e00' title sprintf('t = %g', t_late), \
      0.75 with lines dt 3 lw 2 lc rgb 'black' title "paper's 0.75"

@@ -58,3 +58,5 @@ COLLAPSE_FROM := 10
 
 # What decides theta_BA (pipelines/theta-causes.mk): the BA run and one more seed.
 CAUSES_BA_SEEDS := 1 2
+CAUSES_PARAM_SETS := phi0.208_r0.5_d1e-4
+CAUSES_PARAM_SEEDS := 2
