@@ -64,6 +64,9 @@ causes_ba_runs = $(sort $(wildcard $(RUNS)/babox_L$(1)_phi$(PHI)_s*.h5) $(if $(f
   $(RUNS)/ba_phi$(PHI)_s*.h5)))
 endif
 causes_run_tables = $(patsubst $(RUNS)/%.h5,$(TABLES)/energy_run_%.tsv,$(1))
+# The runs this step adds to the pipeline's (for the plan, pipelines/cluster/estimate.mk).
+CAUSES_RUNS := $(filter $(RUNS)/pseed_% $(RUNS)/babox_%,$(foreach p,$(CAUSES_PARAM_SETS),$(call \
+  causes_seed_runs,$(p))) $(foreach L,$(CAUSES_BA_BOXES),$(call causes_ba_runs,$(L))))
 
 # E(t) of a box's runs together (the mean and its standard error); of a Fig. 2 set's seeds.
 $(TABLES)/energy_babox_L%.tsv: $$(call causes_ba_runs,$$*)

@@ -95,6 +95,11 @@ PARAM_FIT_WINDOW_phi0.052_r0.1_d1e-4 := 500:20000
 PARAM_FIT_WINDOW_phi0.208_r0.7_d1e-4 := 300:10000
 PARAM_FIT_WINDOW_phi0.208_r0.9_d1e-4 := 1000:20000
 PARAM_OUTPUT = observables_per_decade = 20$(newline)dumps_per_decade = 5
+# The three sets furthest from 6/5 run again with seeds 2 and 3 (about
+# 1000 CPU-s in all; energy only): how far one run's theta lies from
+# another's (pipelines/theta-causes.mk).
+CAUSES_PARAM_SETS := phi0.156_r0.1_d1e-4 phi0.208_r0.3_d1e-4 phi0.208_r0.7_d1e-4
+CAUSES_PARAM_SEEDS := 1 2 3
 
 # Figs. 3-5 at the paper's times, from Fig. 2's phi = 0.208 run (SNAP_TWIN):
 # L = 100, where t = 8000 is still at x = 0.08.
