@@ -159,11 +159,11 @@ share_verdict() {
     near($1, phi0) { if (!k++) { n = $4; a0 = b0 = $5; al = bl = $7; lmin = lmax = $2; tl = $6; smin = smax = $7 }
                      if ($5 < a0) a0 = $5; if ($5 > b0) b0 = $5; if ($7 < al) al = $7; if ($7 > bl) bl = $7
                      if ($2 < lmin) { lmin = $2; smin = $7 } if ($2 > lmax) { lmax = $2; smax = $7 }; next }
-    $4 < 0.3116 { below = below sprintf("%s%.2f at phi = %.3g (n = %.3f)", below == "" ? "" : ", ", $5, $1, $4) }
+    $4 < 0.3116 { below = below sprintf("%s%.2g at t = 0 and %.2f at t = %g at phi = %.3g (n = %.3f)", below == "" ? "" : ", ", $5, $7, $6, $1, $4) }
     END { if (!k) exit
           dmin = smin - 0.75; dmax = smax - 0.75
           printf ": differs from the paper'"'"'s 0.75, because the unit-cell definition spans the box from t = 0 at phi = %.3g (n = %.3f particles per cell, above the site-percolation threshold 0.3116): the largest cluster holds %s at t = 0 and %s at t = %g in every box L = %g-%g (%.2f at L = %g, %.2f at L = %g: %s)", phi0, n, span(a0, b0), span(al, bl), tl, lmin, lmax, smin, lmin, smax, lmax, (dmax * dmax < dmin * dmin - 0.0004) ? "nearer 0.75 in the larger box" : "no nearer 0.75 in the larger box"
-          if (below != "") printf "; below the threshold it holds %s at t = 0", below }' "$st"
+          if (below != "") printf "; below the threshold it holds %s", below }' "$st"
 }
 verdict=
 if awk "BEGIN { exit !($f0 > 0.5) }"; then
