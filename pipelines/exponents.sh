@@ -110,6 +110,9 @@ causes_row() {
 }
 # Field $2 (1-based) of row $1.
 fld() { echo "$1" | cut -f "$2"; }
+dec3() { awk "BEGIN { printf \"%.3f\", $1 }"; }
+# A time: whole numbers from 100 on, else 3 digits.
+tfmt() { awk "BEGIN { t = $1; if (t >= 100) printf \"%.0f\", t; else printf \"%.3g\", t }"; }
 far_from() {  # measured error paper: more than 3 sigma apart
   awk "BEGIN { e = sqrt(($2) ^ 2 + ($4) ^ 2); exit !(e > 0 && (($1) - ($3)) ^ 2 > 9 * e * e) }"
 }
@@ -119,16 +122,28 @@ fig2_verdict() {  # set L theta theta_err
   [ -n "$w0" ] && [ -n "$w1" ] && [ -n "$w2" ] || return 0
   far_from "$3" "$4" 1.2 0 || return 0
   t1=$(fld "$w1" 11) e1=$(fld "$w1" 12) t2=$(fld "$w2" 11) e2=$(fld "$w2" 12)
-  trend=$(awk "BEGIN { a = ($t2) - 1.2; b = ($3) - 1.2; if (a * a < b * b) print \"nearer 6/5: a larger box, whose window ends later, would tell whether it stays there\"; else print \"no nearer 6/5\" }")
-  printf ': differs from 6/5, because E(t) has no power-law plateau in the window (its local slope falls to %s at t = %s and is %s at the end, tables/theta_causes.tsv), so theta depends on the window: %s +- %s from a start sqrt(10) later, %s +- %s over the last half decade (%s)' \
-    "$(short "$(fld "$w0" 14)")" "$(short "$(fld "$w0" 15)")" "$(short "$(fld "$w0" 16)")" \
-    "$(short "$t1")" "$(short "$e1")" "$(short "$t2")" "$(short "$e2")" "$trend"
+  t0=$3 e0=$4
+  # A plateau would give the same theta over every window: the windows
+  # differ (by more than 3 combined errors) or they do not.
+  if awk "BEGIN { d1 = $t1 - $t0; d2 = $t2 - $t0; s1 = $e1 * $e1 + $e0 * $e0; s2 = $e2 * $e2 + $e0 * $e0
+                  exit !(d1 * d1 > 9 * s1 || d2 * d2 > 9 * s2) }"; then
+    trend=$(awk "BEGIN { a = $t2 - 1.2; b = $t0 - 1.2; if (a * a < b * b) print \"the last half decade is nearer 6/5: a larger box, whose window ends later, would tell whether the slope stays there\"; else print \"the last half decade is no nearer 6/5\" }")
+    printf ': differs from 6/5, because E(t) has no power-law plateau in the window (its local slope falls to %s at t = %s and is %s at the end, tables/theta_causes.tsv), so theta depends on the window: %s +- %s from a start sqrt(10) later, %s +- %s over the last half decade (%s)' \
+      "$(dec3 "$(fld "$w0" 14)")" "$(tfmt "$(fld "$w0" 15)")" "$(dec3 "$(fld "$w0" 16)")" \
+      "$(dec3 "$t1")" "$(dec3 "$e1")" "$(dec3 "$t2")" "$(dec3 "$e2")" "$trend"
+  else
+    printf ': differs from 6/5 over every window alike (%s +- %s from a start sqrt(10) later, %s +- %s over the last half decade, tables/theta_causes.tsv): not a choice of window' \
+      "$(dec3 "$t1")" "$(dec3 "$e1")" "$(dec3 "$t2")" "$(dec3 "$e2")"
+  fi
   # More seeds of the set: how far one run's theta is from another's.
   ws=$(causes_row 0 "$phi" "$r0" "$d" "$2" 0 2)
   [ -n "$ws" ] || return 0
-  printf '; its %s seeds scatter by %s over the same window (this fit'"'"'s error: %s), and their mean E(t) gives %s +- %s, %s' \
-    "$(fld "$ws" 6)" "$(short "$(fld "$ws" 13)")" "$(short "$4")" "$(short "$(fld "$ws" 11)")" "$(short "$(fld "$ws" 12)")" \
-    "$(awk "BEGIN { m = $(fld "$ws" 11) - 1.2; e = $(fld "$ws" 13) / sqrt($(fld "$ws" 6)); print (m * m <= 4 * e * e) ? \"within 2 standard errors of the seeds' mean from 6/5\" : \"more than 2 standard errors of the seeds' mean from 6/5\" }")"
+  n=$(fld "$ws" 6) sd=$(fld "$ws" 13) m=$(fld "$ws" 11)
+  se=$(awk "BEGIN { print $sd / sqrt($n) }")
+  printf '; its %s seeds scatter by %s over the same window, so one run'"'"'s theta is uncertain by that, not by its fit error %s; their mean E(t) gives %s (standard error of the seeds %s), %s' \
+    "$n" "$(dec3 "$sd")" "$(dec3 "$4")" "$(dec3 "$m")" "$(dec3 "$se")" \
+    "$(awk "BEGIN { d = $m - 1.2; print (d * d <= 4 * $se * $se) ? \"within 2 standard errors of 6/5\" : \"more than 2 standard errors from 6/5\" }")"
+}")"
 }
 for p in $sets; do
   fit=$tables/fit_param_$p.tsv
@@ -159,10 +174,10 @@ share_verdict() {
     near($1, phi0) { if (!k++) { n = $4; a0 = b0 = $5; al = bl = $7; lmin = lmax = $2; tl = $6; smin = smax = $7 }
                      if ($5 < a0) a0 = $5; if ($5 > b0) b0 = $5; if ($7 < al) al = $7; if ($7 > bl) bl = $7
                      if ($2 < lmin) { lmin = $2; smin = $7 } if ($2 > lmax) { lmax = $2; smax = $7 }; next }
-    $4 < 0.3116 { below = below sprintf("%s%.2g at t = 0 and %.2f at t = %g at phi = %.3g (n = %.3f)", below == "" ? "" : ", ", $5, $7, $6, $1, $4) }
+    $4 < 0.3116 { below = below sprintf("%s%.2g at t = 0 and %.2f at t = %.0f at phi = %.3g (n = %.3f)", below == "" ? "" : ", ", $5, $7, $6, $1, $4) }
     END { if (!k) exit
           dmin = smin - 0.75; dmax = smax - 0.75
-          printf ": differs from the paper'"'"'s 0.75, because the unit-cell definition spans the box from t = 0 at phi = %.3g (n = %.3f particles per cell, above the site-percolation threshold 0.3116): the largest cluster holds %s at t = 0 and %s at t = %g in every box L = %g-%g (%.2f at L = %g, %.2f at L = %g: %s)", phi0, n, span(a0, b0), span(al, bl), tl, lmin, lmax, smin, lmin, smax, lmax, (dmax * dmax < dmin * dmin - 0.0004) ? "nearer 0.75 in the larger box" : "no nearer 0.75 in the larger box"
+          printf ": differs from the paper'"'"'s 0.75, because the unit-cell definition spans the box from t = 0 at phi = %.3g (n = %.3f particles per cell, above the site-percolation threshold 0.3116): the largest cluster holds %s at t = 0 and %s at t = %.0f in every box L = %g-%g (%.2f at L = %g, %.2f at L = %g: %s)", phi0, n, span(a0, b0), span(al, bl), tl, lmin, lmax, smin, lmin, smax, lmax, (dmax * dmax < dmin * dmin - 0.0004) ? "nearer 0.75 in the larger box" : "no nearer 0.75 in the larger box"
           if (below != "") printf "; below the threshold it holds %s", below }' "$st"
 }
 verdict=
@@ -277,7 +292,7 @@ ba_verdict() {  # fit theta theta_err paper paper_err
   L=$(value "$(echo "$1" | sed 's,fit_energy_ba_,energy_ba_,')" L '#')
   awk -F '\t' -v L="$L" -v p="$4" -v pe="$5" '
     FNR == 1 || /^#/ || NF == 0 || $1 != 1 { next }
-    $7 == 0 { same = same sprintf("%s%.3f at L = %g (%d runs%s)", same == "" ? "" : ", ", $11, $5, $6, $6 > 1 ? sprintf(", single runs scatter by %.3f", $13) : "")
+    $7 == 0 { same = same sprintf("%s%.3f at L = %g (%d run%s)", same == "" ? "" : ", ", $11, $5, $6, $6 > 1 ? sprintf("s, single runs scatter by %.3f", $13) : "")
               if ($5 == L) { lo = $8; hi = $9 }
               if (nb++ == 0 || $11 < mn) mn = $11; if (nb == 1 || $11 > mx) mx = $11; if ($12 > me) me = $12 }
     $7 == 4 && $5 == L { own_end = $9 }
@@ -285,7 +300,7 @@ ba_verdict() {  # fit theta theta_err paper paper_err
     END { if (same == "") exit
           d = th - p; e2 = te * te + pe * pe
           trend = (nb < 2) ? "" : (mx - mn <= 3 * me) ? ": no trend with L" : ": it changes with L"
-          printf ": differs from the paper, because theta_BA depends on where the window ends, and it ends at t = %.3g%s: over t = %.3g:%.3g the mean E(t) of each box gives %s%s; to t = %.3g (L = %g) theta_BA = %.3f +- %.3f, %s the paper'"'"'s (tables/theta_causes.tsv)",
+          printf ": differs from the paper, because theta_BA depends on where the window ends, and it ends at t = %.3g%s: over t = %g:%g the mean E(t) of each box gives %s%s; to t = %g (L = %g) theta_BA = %.3f +- %.3f, %s the paper'"'"'s (tables/theta_causes.tsv)",
             hi, (own_end != "" && own_end <= 1.01 * hi) ? ", where this box'"'"'s run ends (its aggregates must stay narrower than about L/2)" : "", lo, hi, same, trend, tend, tl, th, te, (d * d <= 4 * e2) ? "within 2 sigma of" : "still not" }' "$causes"
 }
 for fit in $ba_fits; do

@@ -102,6 +102,7 @@ share)
   printf '# tool: pipelines/theta-causes.sh share\n'
   printf '# site_percolation_threshold: 0.3116 (simple cubic lattice, site)\n'
   printf '# n: particles per unit cell, N/floor(L)^3 (an upper bound of the occupied cells'"'"' fraction)\n'
+  printf '# late_time: %s\n' "$late"
   for t in "$@"; do printf '# input: %s\n' "$t"; done
   for t in "$@"; do
     awk -F '\t' -v phi="$(prov phi "$t")" -v L="$(prov L "$t")" -v N="$(prov N "$t")" -v late="$late" '

@@ -64,7 +64,7 @@ if (words(boxes) > 0) {
 }
 
 # (e), (f): the share table (columns: 1 phi 2 L 3 N 4 n 5 share_0 6 t_late 7 share_late)
-t_late = real(system("awk -F '\\t' 'FNR > 1 && !/^#/ && NF { print $6; exit }' " . q(share)))
+late = meta(share, "late_time")
 unset logscale x
 set format x "%g"
 set yrange [0:1]
@@ -76,15 +76,13 @@ set arrow 1 from 0.3116, graph 0 to 0.3116, graph 1 nohead dt 2 lw 2 lc rgb 'bla
 set label 2 "site percolation\nthreshold 0.3116" at 0.3116, graph 0.2 right offset -0.5, 0
 set title "(e) the share at t = 0 and late, against the cells' occupancy"
 plot share using 4:5 with points pt 7 ps 1.5 lc rgb '#0072b2' title 't = 0', \
-     share using 4:7 with points pt 5 ps 1.5 lc rgb '#d55e00' title sprintf('t = %g', t_late), \
+     share using 4:7 with points pt 5 ps 1.5 lc rgb '#d55e00' title 'late (the dump nearest t = ' . late . ')', \
      0.75 with lines dt 3 lw 2 lc rgb 'black' title "paper's 0.75"
 unset arrow 1; unset label 2
-set logscale x
 set xlabel "box side L"
-# Fig. 1's boxes, and a margin either side
-set xrange [real(word(sizes, 1)) / 1.5 : real(word(sizes, words(sizes))) * 1.5]
-set title sprintf("(f) the share in each box at {/Symbol f} = %s: a cluster that spans the box has a share independent of L", phi0)
+set xrange [0 : real(word(sizes, words(sizes))) * 1.15]
+set title sprintf("(f) the share in each box at {/Symbol f} = %s", phi0)
 plot share using (near($1, real(phi0)) ? $2 : NaN):5 with points pt 7 ps 1.5 lc rgb '#0072b2' title 't = 0', \
-     share using (near($1, real(phi0)) ? $2 : NaN):7 with points pt 5 ps 1.5 lc rgb '#d55e00' title sprintf('t = %g', t_late), \
+     share using (near($1, real(phi0)) ? $2 : NaN):7 with points pt 5 ps 1.5 lc rgb '#d55e00' title 'late (the dump nearest t = ' . late . ')', \
      0.75 with lines dt 3 lw 2 lc rgb 'black' title "paper's 0.75"
 unset multiplot
