@@ -80,6 +80,7 @@ plot share using 4:5 with points pt 7 ps 1.5 lc rgb '#0072b2' title 't = 0', \
      0.75 with lines dt 3 lw 2 lc rgb 'black' title "paper's 0.75"
 unset arrow 1; unset label 2
 set xlabel "box side L"
+set key bottom right
 set xrange [0 : real(word(sizes, words(sizes))) * 1.15]
 set title sprintf("(f) the share in each box at {/Symbol f} = %s", phi0)
 plot share using (near($1, real(phi0)) ? $2 : NaN):5 with points pt 7 ps 1.5 lc rgb '#0072b2' title 't = 0', \
