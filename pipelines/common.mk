@@ -422,6 +422,8 @@ $(OUT)/exponents.tsv: $(EXPONENT_INPUTS) $(BA_FITS) $(BA_NM_FIT) $(PIPE)tsv-valu
 
 # Fig. 1's collapse under other analysis choices, side by side (pipelines/robustness.mk).
 include $(PIPE)robustness.mk
+# What decides theta of Fig. 2's sets, theta_BA and the largest cluster's share (pipelines/theta-causes.mk).
+include $(PIPE)theta-causes.mk
 
 $(OUT)/exponents.md: $(OUT)/exponents.tsv $(OUT)/robustness.tsv $(PIPE)exponents-md.sh $(PIPE)verdicts.sh
 	sh $(PIPE)exponents-md.sh $< "$(SCALE)" $(OUT)/robustness.tsv > $@

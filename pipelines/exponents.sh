@@ -98,12 +98,67 @@ fit=$tables/fit_size_Lmax.tsv
 row "theta, power-law fit at L = $L_max (t = $(short "$(value "$fit" t_min)"):$(short "$(value "$fit" t_max)"))" 1 \
   "$(value "$fit" theta)" "$(value "$fit" theta_err)" 1.2 0 "$(scaling_regime "$tables/energy_size_L$L_max.tsv" "$fit" "$L_max")"
 
-# Fig. 2: each parameter set's fit.
+# Fig. 2: each parameter set's fit. A set in its regime yet more than 3
+# sigma from 6/5 says why, from tables/theta_causes.tsv (pipelines/theta-causes.mk):
+# the local slope of E(t) in its window and theta over other windows.
+causes=$tables/theta_causes.tsv
+# The first row of theta_causes.tsv with these values: model phi r0 delta L
+# window [fewest runs] (the pipeline's own run comes first; a set's seeds, if
+# the scale runs more, after it).
+causes_row() {
+  [ -f "$causes" ] || return 0
+  awk -F '\t' -v m="$1" -v phi="$2" -v r0="$3" -v d="$4" -v L="$5" -v w="$6" -v runs="${7:-1}" '
+    function near(a, b) { return (a - b) * (a - b) <= (0.003 * b) * (0.003 * b) }
+    FNR == 1 || /^#/ || NF == 0 { next }
+    $1 == m && near($2, phi) && near($3, r0) && near($4, d) && $5 == L && $7 == w && $6 >= runs { print; exit }' "$causes"
+}
+# Field $2 (1-based) of row $1.
+fld() { echo "$1" | cut -f "$2"; }
+dec3() { awk "BEGIN { printf \"%.3f\", $1 }"; }
+# A time: whole numbers from 100 on, else 3 digits.
+tfmt() { awk "BEGIN { t = $1; if (t >= 100) printf \"%.0f\", t; else printf \"%.3g\", t }"; }
+far_from() {  # measured error paper: more than 3 sigma apart
+  awk "BEGIN { e = sqrt(($2) ^ 2 + ($4) ^ 2); exit !(e > 0 && (($1) - ($3)) ^ 2 > 9 * e * e) }"
+}
+fig2_verdict() {  # set L theta theta_err
+  phi=$(echo "$1" | sed 's/^phi//; s/_.*//') r0=$(echo "$1" | sed 's/.*_r//; s/_.*//') d=$(echo "$1" | sed 's/.*_d//')
+  w0=$(causes_row 0 "$phi" "$r0" "$d" "$2" 0) w1=$(causes_row 0 "$phi" "$r0" "$d" "$2" 1) w2=$(causes_row 0 "$phi" "$r0" "$d" "$2" 2)
+  [ -n "$w0" ] && [ -n "$w1" ] && [ -n "$w2" ] || return 0
+  far_from "$3" "$4" 1.2 0 || return 0
+  t1=$(fld "$w1" 11) e1=$(fld "$w1" 12) t2=$(fld "$w2" 11) e2=$(fld "$w2" 12)
+  t0=$3 e0=$4
+  # A plateau would give the same theta over every window: the windows
+  # differ (by more than 3 combined errors) or they do not.
+  if awk "BEGIN { d1 = $t1 - $t0; d2 = $t2 - $t0; s1 = $e1 * $e1 + $e0 * $e0; s2 = $e2 * $e2 + $e0 * $e0
+                  exit !(d1 * d1 > 9 * s1 || d2 * d2 > 9 * s2) }"; then
+    trend=$(awk "BEGIN { a = $t2 - 1.2; b = $t0 - 1.2; if (a * a < b * b) print \"the last half decade is nearer 6/5: a larger box, whose window ends later, would tell whether the slope stays there\"; else print \"the last half decade is no nearer 6/5\" }")
+    printf ': differs from 6/5, because E(t) has no power-law plateau in the window (its local slope falls to %s at t = %s and is %s at the end, tables/theta_causes.tsv), so theta depends on the window: %s +- %s from a start sqrt(10) later, %s +- %s over the last half decade (%s)' \
+      "$(dec3 "$(fld "$w0" 14)")" "$(tfmt "$(fld "$w0" 15)")" "$(dec3 "$(fld "$w0" 16)")" \
+      "$(dec3 "$t1")" "$(dec3 "$e1")" "$(dec3 "$t2")" "$(dec3 "$e2")" "$trend"
+  else
+    printf ': differs from 6/5 over every window alike (%s +- %s from a start sqrt(10) later, %s +- %s over the last half decade, tables/theta_causes.tsv): not a choice of window' \
+      "$(dec3 "$t1")" "$(dec3 "$e1")" "$(dec3 "$t2")" "$(dec3 "$e2")"
+  fi
+  # More seeds of the set: how far one run's theta is from another's.
+  ws=$(causes_row 0 "$phi" "$r0" "$d" "$2" 0 2)
+  [ -n "$ws" ] || return 0
+  n=$(fld "$ws" 6) sd=$(fld "$ws" 13) m=$(fld "$ws" 11)
+  # The mean's error: the seeds' standard error, or its fit error if larger.
+  se=$(awk "BEGIN { e = $sd / sqrt($n); f = $(fld "$ws" 12); print (f > e) ? f : e }")
+  what=$(awk "BEGIN { if ($sd > $4) print \"so one run's theta is uncertain by that, not by its fit error\"; else print \"within one run's fit error\" }")
+  printf '; its %s seeds scatter by %s over the same window (%s %s); their mean E(t) gives %s +- %s, %s' \
+    "$n" "$(dec3 "$sd")" "$what" "$(dec3 "$4")" "$(dec3 "$m")" "$(dec3 "$se")" \
+    "$(awk "BEGIN { d = $m - 1.2; print (d * d <= 4 * $se * $se) ? \"within 2 errors of 6/5\" : \"more than 2 errors from 6/5\" }")"
+}
 for p in $sets; do
   fit=$tables/fit_param_$p.tsv
   name=$(echo "$p" | sed 's/_/, /g; s/^phi/phi = /; s/, r/, r0 = /; s/, d/, delta = /')
-  row "theta at $name (t = $(short "$(value "$fit" t_min)"):$(short "$(value "$fit" t_max)"))" 2 \
-    "$(value "$fit" theta)" "$(value "$fit" theta_err)" 1.2 0 "$(scaling_regime "$tables/energy_param_$p.tsv" "$fit" "$(value "$tables/energy_param_$p.tsv" L '#')")"
+  L=$(value "$tables/energy_param_$p.tsv" L '#')
+  reg=$(scaling_regime "$tables/energy_param_$p.tsv" "$fit" "$L")
+  verdict=
+  [ "$reg" = yes ] && verdict=$(fig2_verdict "$p" "$L" "$(value "$fit" theta)" "$(value "$fit" theta_err)")
+  row "theta at $name (t = $(short "$(value "$fit" t_min)"):$(short "$(value "$fit" t_max)"))$verdict" 2 \
+    "$(value "$fit" theta)" "$(value "$fit" theta_err)" 1.2 0 "$reg"
 done
 
 # Figs. 3-5: the snapshot run at the late time.
@@ -111,10 +166,32 @@ late_regime=$(before_crossover "$late" "$snap_L" "the late time")
 row "tau, N(m) ~ m^-tau below the largest cluster" 3 "$(value "$tables/fit_nm_gas.tsv" theta)" \
   "$(value "$tables/fit_nm_gas.tsv" theta_err)" 2.7 0 "$late_regime"
 f0=$(at_time "$tables/mmax_$snap.tsv" largest_fraction 0)
+# Where the definition percolates at t = 0, the verdict says so with the
+# share at t = 0 and late in every box of the same gas and at the other
+# densities (tables/largest_share.tsv, pipelines/theta-causes.mk).
+share_verdict() {
+  st=$tables/largest_share.tsv
+  [ -f "$st" ] || return 0
+  awk -F '\t' -v phi0="$(value "$tables/mmax_$snap.tsv" phi '#')" '
+    function near(a, b) { return (a - b) * (a - b) <= (0.003 * b) * (0.003 * b) }
+    function span(lo, hi) { return (sprintf("%.2f", lo) == sprintf("%.2f", hi)) ? sprintf("%.2f", lo) : sprintf("%.2f-%.2f", lo, hi) }
+    FNR == 1 || /^#/ || NF == 0 { next }
+    near($1, phi0) { if (!k++) { n = $4; a0 = b0 = $5; al = bl = $7; lmin = lmax = $2; tl = th = $6; smin = smax = $7 }
+                     if ($6 < tl) tl = $6; if ($6 > th) th = $6
+                     if ($5 < a0) a0 = $5; if ($5 > b0) b0 = $5; if ($7 < al) al = $7; if ($7 > bl) bl = $7
+                     if ($2 < lmin) { lmin = $2; smin = $7 } if ($2 > lmax) { lmax = $2; smax = $7 }; next }
+    $4 < 0.3116 { below = below sprintf("%s%.2g at t = 0 and %.2f at t = %.0f at phi = %.3g (n = %.3f)", below == "" ? "" : ", ", $5, $7, $6, $1, $4) }
+    END { if (!k) exit
+          dmin = smin - 0.75; dmax = smax - 0.75
+          printf ": differs from the paper'"'"'s 0.75, because the unit-cell definition spans the box from t = 0 at phi = %.3g (n = %.3f particles per cell, above the site-percolation threshold 0.3116): the largest cluster holds %s at t = 0 and %s at t = %s in every box L = %g-%g (%.2f at L = %g, %.2f at L = %g: %s)", phi0, n, span(a0, b0), span(al, bl), (tl == th) ? sprintf("%.0f", tl) : sprintf("%.0f-%.0f", tl, th), lmin, lmax, smin, lmin, smax, lmax, (dmax * dmax < dmin * dmin - 0.0004) ? "nearer 0.75 in the larger box" : "no nearer 0.75 in the larger box"
+          if (below != "") printf "; below the threshold it holds %s", below }' "$st"
+}
+verdict=
 if awk "BEGIN { exit !($f0 > 0.5) }"; then
   reg=$(percolates "$f0")
+  verdict=$(share_verdict)
 else reg=$late_regime; fi
-row "largest cluster's share of the particles" 3 "$(at_time "$tables/mmax_$snap.tsv" largest_fraction "$late")" - 0.75 - "$reg"
+row "largest cluster's share of the particles$verdict" 3 "$(at_time "$tables/mmax_$snap.tsv" largest_fraction "$late")" - 0.75 - "$reg"
 vs=$tables/velocity_series.tsv
 # The velocity rows' verdicts come from pipelines/velocity-causes.sh (the same
 # quantities against t and the tail fit's window, kinetic theory's alpha):
@@ -294,9 +371,30 @@ if [ -f "$tables/fit_nm_ba.tsv" ]; then
 fi
 
 # Ballistic aggregation: the paper gives theta_BA = 1.283 +- 0.005 at phi = 0.005 and 1.206 +- 0.005 at 0.208.
+# One more than 3 sigma from the paper says why, from the aggregation runs
+# of several boxes and seeds in tables/theta_causes.tsv (pipelines/theta-causes.mk).
+ba_verdict() {  # fit theta theta_err paper paper_err
+  [ -f "$causes" ] || return 0
+  far_from "$2" "$3" "$4" "$5" || return 0
+  L=$(value "$(echo "$1" | sed 's,fit_energy_ba_,energy_ba_,')" L '#')
+  awk -F '\t' -v L="$L" -v p="$4" -v pe="$5" '
+    FNR == 1 || /^#/ || NF == 0 || $1 != 1 { next }
+    $7 == 0 { same = same sprintf("%s%.3f at L = %g (%d run%s)", same == "" ? "" : ", ", $11, $5, $6, $6 > 1 ? sprintf("s, single runs scatter by %.3f", $13) : "")
+              if ($5 == L) { lo = $8; hi = $9 }
+              if (nb++ == 0 || $11 < mn) mn = $11; if (nb == 1 || $11 > mx) mx = $11; if ($12 > me) me = $12 }
+    $7 == 4 && $5 == L { own_end = $9 }
+    $7 == 4 && $9 > tend { tend = $9; th = $11; te = $12; tl = $5; tlo = $8 }
+    END { if (same == "") exit
+          d = th - p; e2 = te * te + pe * pe
+          trend = (nb < 2) ? "" : (mx - mn <= 3 * me) ? ": no trend with L" : ": it changes with L"
+          printf ": differs from the paper, because theta_BA depends on where the window ends, and it ends at t = %.3g%s: over t = %g:%g the mean E(t) of each box gives %s%s; to t = %g (L = %g) theta_BA = %.3f +- %.3f, %s the paper'"'"'s (tables/theta_causes.tsv)",
+            hi, (own_end != "" && own_end <= 1.01 * hi) ? ", where this box'"'"'s run ends (its aggregates must stay narrower than about L/2)" : "", lo, hi, same, trend, tend, tl, th, te, (d * d <= 4 * e2) ? "within 2 sigma of" : "still not" }' "$causes"
+}
 for fit in $ba_fits; do
   phi=$(basename "$fit" .tsv | sed 's/^fit_energy_ba_phi//; s/_s[0-9]*$//')
   case $phi in 0.208) paper=1.206 pe=0.005 ;; 0.005) paper=1.283 pe=0.005 ;; *) paper=- pe=- ;; esac
-  row "theta_BA at phi = $phi (t = $(short "$(value "$fit" t_min)"):$(short "$(value "$fit" t_max)"))" BA \
+  verdict=
+  [ "$paper" = - ] || verdict=$(ba_verdict "$fit" "$(value "$fit" theta)" "$(value "$fit" theta_err)" "$paper" "$pe")
+  row "theta_BA at phi = $phi (t = $(short "$(value "$fit" t_min)"):$(short "$(value "$fit" t_max)"))$verdict" BA \
     "$(value "$fit" theta)" "$(value "$fit" theta_err)" "$paper" "$pe" yes
 done

@@ -12,7 +12,7 @@
 # slices, all of them but any killed by SIGKILL), so the plan stands beside what it cost.
 # (sorted: the snapshot run may be a Fig. 2 run too, counted once)
 ESTIMATE_RUNS := $(sort $(SNAP_RUN) $(foreach L,$(SIZE_L),$(call size_runs,$(L))) \
-                 $(foreach p,$(PARAM_SETS),$(call param_runs,$(p))) $(BA_RUNS))
+                 $(foreach p,$(PARAM_SETS),$(call param_runs,$(p))) $(BA_RUNS) $(CAUSES_RUNS))
 scene_value = awk -F' *= *' -v k=$(1) '$$1 == k { gsub(/[]["[:space:]]/, "", $$2); print $$2 }' $(2)
 .PHONY: estimate
 estimate:

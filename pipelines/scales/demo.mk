@@ -118,3 +118,12 @@ STRUCTURE_GAS := param_phi0.208_r0.1_d1e-4_s1
 STRUCTURE_BA := ba_phi0.208_s1
 LT_FIT_WINDOW := 20:400
 COLLAPSE_FROM := 20
+
+# What decides theta_BA (pipelines/theta-causes.mk): the aggregation run of
+# this box with seven more seeds (1 CPU-s each), and one at L = 100 to
+# t = 2000 (13 CPU-s), whose aggregates stay narrower than L/2 four times
+# longer: theta_BA over the same window in both boxes, and to t = 2000.
+CAUSES_BA_BOXES := 48 100
+CAUSES_BA_SEEDS_L48 := 1 2 3 4 5 6 7 8
+CAUSES_BA_SEEDS_L100 := 1
+CAUSES_BA_T_END_L100 := 2000

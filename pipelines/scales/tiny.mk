@@ -61,3 +61,8 @@ STRUCTURE_GAS := snap_s1
 STRUCTURE_BA := ba_phi0.208_s1
 LT_FIT_WINDOW := 10:1000
 COLLAPSE_FROM := 10
+
+# What decides theta_BA (pipelines/theta-causes.mk): the BA run and one more seed.
+CAUSES_BA_SEEDS := 1 2
+CAUSES_PARAM_SETS := phi0.208_r0.5_d1e-4
+CAUSES_PARAM_SEEDS := 2

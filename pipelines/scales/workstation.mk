@@ -95,6 +95,11 @@ PARAM_FIT_WINDOW_phi0.052_r0.1_d1e-4 := 500:20000
 PARAM_FIT_WINDOW_phi0.208_r0.7_d1e-4 := 300:10000
 PARAM_FIT_WINDOW_phi0.208_r0.9_d1e-4 := 1000:20000
 PARAM_OUTPUT = observables_per_decade = 20$(newline)dumps_per_decade = 5
+# The three sets furthest from 6/5 run again with seeds 2 and 3 (about
+# 1000 CPU-s in all; energy only): how far one run's theta lies from
+# another's (pipelines/theta-causes.mk).
+CAUSES_PARAM_SETS := phi0.156_r0.1_d1e-4 phi0.208_r0.3_d1e-4 phi0.208_r0.7_d1e-4
+CAUSES_PARAM_SEEDS := 1 2 3
 
 # Figs. 3-5 at the paper's times, from Fig. 2's phi = 0.208 run (SNAP_TWIN):
 # L = 100, where t = 8000 is still at x = 0.08.
@@ -144,6 +149,14 @@ BA_NM_TIMES := 300 1000 2000
 # 0.86 +- 0.29). The exponent table reads the last time: 100, the latest
 # with a tail of more than a few bins.
 BA_PHI_TIMES := 10 30 100
+# What decides theta_BA (pipelines/theta-causes.mk): the demo's box L = 48
+# to t = 200 with eight seeds (1 CPU-s each) beside this L = 100 with three
+# (13-16 CPU-s each): theta_BA over the demo's window in both boxes, and to
+# t = 2000.
+CAUSES_BA_BOXES := 48 100
+CAUSES_BA_SEEDS_L48 := 1 2 3 4 5 6 7 8
+CAUSES_BA_T_END_L48 := 200
+CAUSES_BA_SEEDS_L100 := 1 2 3
 
 # The growing length: Fig. 2's phi = 0.208 run (L = 100, five dumps a
 # decade). L_C ~ 1.7 t^0.34 (the demo's L = 68) reaches L/4 = 25 near
