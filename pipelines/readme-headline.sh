@@ -23,7 +23,12 @@ awk -F ' [|] ' '
   $0 == "<!-- exponents:begin -->" { scale = "demo" }
   $0 == "<!-- exponents-workstation:begin -->" { scale = "workstation" }
   /^<!-- exponents.*:end -->$/ { scale = "" }
-  scale != "" && /^SCALE = / { match($0, /runs by coolgas [^ ]+ \([0-9a-f]+\)/); s = substr($0, RSTART, RLENGTH); sub(/.*\(/, "", s); commit[scale] = substr(s, 1, 7) }
+  scale != "" && /^SCALE = / {
+    # the commits of the runs: one, or several separated by ";" (runs made by several builds)
+    s = $0; sub(/.*runs by /, "", s); sub(/, analysed by.*/, "", s); nv = split(s, runs_by, ";"); c = ""
+    for (i = 1; i <= nv; i++) if (match(runs_by[i], /\([0-9a-f]+/)) c = c (c == "" ? "" : ", ") substr(runs_by[i], RSTART + 1, 7)
+    commit[scale] = c
+  }
   scale != "" && /^\| / {
     q = substr($1, 3)
     for (i = 1; i <= n; i++) if (index(q, key[i]) == 1 && !((scale, i) in cell)) {
