@@ -67,8 +67,11 @@ class TrajectorySafety : public ::testing::Test {
 // and --resume runs the rest (it has work to do: none of these kills comes
 // after the last dump).
 TEST_F(TrajectorySafety, SigkillAtAnyMomentLeavesEveryEarlierDumpValidAndResumable) {
-  int files = 0;
-  for (const double fraction : {0.2, 0.35, 0.5, 0.65, 0.8}) {
+  int files = 0, tried = 0;
+  // The last four only when the machine's load moved the first five's kills
+  // off the run (a run slower or faster than the fixture's timed one).
+  for (const double fraction : {0.2, 0.35, 0.5, 0.65, 0.8, 0.1, 0.42, 0.58, 0.9}) {
+    if (tried++ >= 5 && files >= 3) break;
     const std::string delay = std::to_string(fraction * wall);
     const std::string out = dir + "/killed_" + std::to_string(fraction) + ".h5";
     const auto k = run_command("(" + bin("coolgas-simulate") + " " + scene + " -q -o " + out + " & p=$!; sleep " +
