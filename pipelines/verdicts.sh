@@ -108,7 +108,7 @@ awk -F '\t' '
       ev = sprintf("steepest d ln M_max/d ln t: gas up to %.2f, BA up to %.2f (mean field 6/5); log10(t_jump/t_inhom): %s", gmax, bmax, jumps == "" ? "-" : jumps)
       if (gmax > 2 * 1.2 && bmax < 1.5) {
         v = "supported: the gas'"'"'s M_max rises more than twice as steeply as mean field'"'"'s, BA'"'"'s no steeper than 1.5"
-        if (later) v = v sprintf("; the jump coincides with t_inhom in %d of %d gases and comes later in the others", same, same + later)
+        if (later) v = v sprintf("; the jump comes later than t_inhom (by more than half a dump spacing) in %d of %d gases", later, same + later)
         claim(c, ev, v)
       } else claim(c, ev, "not supported: no gas rises more than twice as steeply as 6/5, or BA rises faster than 1.5")
     }
