@@ -32,6 +32,7 @@
 #include "simulate/start/file_start.h"
 #include "simulate/start/initial_state.h"
 #include "simulate/run/resume_point.h"
+#include "simulate/run/scene_file.h"
 #include "simulate/run/time_grid.h"
 
 namespace coolgas {
@@ -59,23 +60,6 @@ double checkpoint_interval() {
   return v;
 }
 
-// The scene's text. A directory opens like a file on Linux and reads as
-// nothing, an empty scene, so it is refused by name; at most one byte more
-// than a scene may hold is read (parse_scene refuses that), so a device such
-// as /dev/zero cannot fill the memory.
-std::string read_scene_file(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw InputError("scene '" + shown(path) + "' is a directory; give a scene file (TOML)");
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw InputError("cannot read scene '" + shown(path) + "': " + std::strerror(errno));
-  std::string text(kMaxSceneBytes + 1, '\0');
-  f.read(text.data(), std::streamsize(text.size()));
-  if (f.bad()) throw InputError("cannot read scene '" + shown(path) + "': " + std::strerror(errno));
-  text.resize(std::size_t(f.gcount()));
-  return text;
-}
-
 ObservableRow row_of(const Observables& o) {
   ObservableRow row{o.time, o.collisions, o.below_delta, o.kinetic_energy, {o.momentum.x, o.momentum.y, o.momentum.z}};
   if (o.aggregates) {
@@ -95,26 +79,6 @@ FrameView view_of(const EngineFrame& f) {
     v.diameter = f.diameter.data();
   }
   return v;
-}
-
-// The /parameters of a run of this scene (and what its ETA is made from).
-RunParameters parameters_of(const Scene& s) {
-  RunParameters p;
-  p.scene_toml = s.to_toml();
-  p.seed = s.seed;
-  p.N = s.N;
-  p.L = s.L;
-  p.phi = s.phi;
-  p.T0 = initial_temperature(s);
-  p.model = s.model_name();
-  // Only the parameters the model has (common/trajectory/collision_models.h).
-  const auto if_used = [&](const char* name, double v) {
-    return model_uses(p.model, name) ? std::optional<double>(v) : std::nullopt;
-  };
-  p.r0 = if_used("r0", s.r0);
-  p.delta = if_used("delta", s.delta);
-  p.viscoelastic_b = if_used("viscoelastic_b", s.viscoelastic_b);
-  return p;
 }
 
 // Drives the engine from stop to stop, writing as it goes.

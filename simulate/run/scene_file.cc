@@ -1,0 +1,51 @@
+#include "simulate/run/scene_file.h"
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+
+#include "common/error.h"
+#include "common/trajectory/collision_models.h"
+#include "simulate/start/initial_state.h"
+
+namespace coolgas {
+
+// The scene's text. A directory opens like a file on Linux and reads as
+// nothing, an empty scene, so it is refused by name; at most one byte more
+// than a scene may hold is read (parse_scene refuses that), so a device such
+// as /dev/zero cannot fill the memory.
+std::string read_scene_file(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError("scene '" + shown(path) + "' is a directory; give a scene file (TOML)");
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw InputError("cannot read scene '" + shown(path) + "': " + std::strerror(errno));
+  std::string text(kMaxSceneBytes + 1, '\0');
+  f.read(text.data(), std::streamsize(text.size()));
+  if (f.bad()) throw InputError("cannot read scene '" + shown(path) + "': " + std::strerror(errno));
+  text.resize(std::size_t(f.gcount()));
+  return text;
+}
+
+RunParameters parameters_of(const Scene& s) {
+  RunParameters p;
+  p.scene_toml = s.to_toml();
+  p.seed = s.seed;
+  p.N = s.N;
+  p.L = s.L;
+  p.phi = s.phi;
+  p.T0 = initial_temperature(s);
+  p.model = s.model_name();
+  // Only the parameters the model has (common/trajectory/collision_models.h).
+  const auto if_used = [&](const char* name, double v) {
+    return model_uses(p.model, name) ? std::optional<double>(v) : std::nullopt;
+  };
+  p.r0 = if_used("r0", s.r0);
+  p.delta = if_used("delta", s.delta);
+  p.viscoelastic_b = if_used("viscoelastic_b", s.viscoelastic_b);
+  return p;
+}
+
+}  // namespace coolgas
