@@ -1,31 +1,27 @@
 # Included by the pipelines that plan their runs (pipelines/paper/Makefile,
 # pipelines/workstation/Makefile), after ../common.mk.
 # make estimate (in pipelines/paper or pipelines/workstation): the whole scale planned, one line
-# per run (L N mem_GB hours dumps disk_GB peak_GB plan_cpu_h, by pipelines/cluster/estimate.sh,
-# whose comment states every measured rate and the extrapolation rule), then
-# the totals: core-hours, the largest run's memory, disk, the longest run.
+# per run (L N mem_GB hours dumps disk_GB peak_GB plan_cpu_h, by coolgas-simulate
+# --estimate: a pilot run of each scene fed to the progress line's cost
+# model, simulate/run/run_plan.h), then the totals: core-hours, the largest
+# run's memory, disk, the longest run.
 # It reads the scenes this pipeline would run (make writes them into
-# $(OUT)/scenes when it reads common.mk; nothing is simulated). plan_cpu_h is
-# the run's expected CPU hours (estimate.sh's cpu_h, without the margin);
+# $(OUT)/scenes when it reads common.mk; only the pilots are simulated, a
+# fraction of a second each). plan_cpu_h is
+# the run's expected CPU hours (--estimate's cpu_h, without the margin);
 # measured_cpu_h beside it the CPU time of the run in OUT when it is complete
 # (NAME.cpu_s of pipelines/timed-run.sh, '-' before; of a run made in
 # slices, all of them but any killed by SIGKILL), so the plan stands beside what it cost.
 # (sorted: the snapshot run may be a Fig. 2 run too, counted once)
 ESTIMATE_RUNS := $(sort $(SNAP_RUN) $(foreach L,$(SIZE_L),$(call size_runs,$(L))) \
                  $(foreach p,$(PARAM_SETS),$(call param_runs,$(p))) $(BA_RUNS) $(CAUSES_RUNS))
-scene_value = awk -F' *= *' -v k=$(1) '$$1 == k { gsub(/[]["[:space:]]/, "", $$2); print $$2 }' $(2)
 .PHONY: estimate
 estimate:
 	@printf 'run\tL\tN\tmem_GB\thours\tdumps\tdisk_GB\tpeak_GB\tplan_cpu_h\tmeasured_cpu_h\n'
 	@for run in $(notdir $(basename $(ESTIMATE_RUNS))); do \
-	  s=$(SCENES)/$$run.toml; \
-	  r0=$$($(call scene_value,r0,$$s)); \
-	  [ "$$($(call scene_value,model,$$s))" = aggregation ] && r0=aggregation; \
 	  printf '%s\t' $$run; \
-	  sh $(PIPE)cluster/estimate.sh "$$($(call scene_value,L,$$s))" "$$($(call scene_value,t_end,$$s))" \
-	    "$$($(call scene_value,phi,$$s))" "$$r0" "$$($(call scene_value,delta,$$s))" \
-	    "$$($(call scene_value,dumps_per_decade,$$s))" "$$($(call scene_value,dump_times,$$s))" \
-	    | tr -d '\n' || exit 1; \
+	  plan=$$($(BIN)/coolgas-simulate --estimate $(SCENES)/$$run.toml) || exit 1; \
+	  printf '%s' "$$plan" | tail -n 1 | cut -f1-8 | tr -d '\n'; \
 	  measured=-; [ -f $(RUNS)/$$run.h5 ] && [ -f $(RUNS)/$$run.cpu_s ] && measured=$$(cat $(RUNS)/$$run.cpu_s); \
 	  printf '\t%s\n' "$$measured"; \
 	done | awk -F'\t' -v OFS='\t' '{ m = ($$10 == "-" ? "-" : sprintf("%.3f", $$10 / 3600)); print $$1, $$2, $$3, $$4, $$5, $$6, $$7, $$8, sprintf("%.3f", $$9), m } \

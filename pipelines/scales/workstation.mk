@@ -1,6 +1,6 @@
 # SCALE = workstation: the closest one 2-core, 24 GB machine gets to the
-# paper in an afternoon. Planned by the measured rates of
-# pipelines/cluster/estimate.sh, which state each run's cost:
+# paper in an afternoon. Planned by coolgas-simulate --estimate (a pilot of
+# each scene and the measured rates, simulate/run/run_plan.h):
 #   make -C pipelines/workstation estimate OUT=...
 # The plan of 2026-12-05 (docs/studies.md, "The workstation scale,
 # planned"): 4.1 CPU hours (Fig. 1: 3.5), so about 2-2.5 hours of wall time
@@ -29,13 +29,8 @@ DELTA := 1e-4
 # slope of E 1.8-2.0 at x = 5-26, 1.5 at x = 47, 0.4 at x = 450). E ~ L^-3
 # f(x) reaches 1e-8 at x ~ 25 for L = 34 and at smaller x in larger boxes,
 # so eta is fitted over x = 3-20 and the small boxes end near x = 30.
-# Costs (CPU hours a run, estimate.sh, whose rates were measured on this
-# machine on 2026-12-05 with niced runs of these scenes: L = 68 to t = 1e4
-# in 52.9 CPU-s and L = 136 to t = 1e3 in 192.0, which the model gives as
-# 53 and 195; its extrapolation of the collision count past t = 3162 planned
-# 865 CPU-s for the scale before's L = 100 runs to 1e5, which took 672 and
-# 696): L = 34 to 2e5 0.0025, 48 to 4e5 0.0069, 68 to 5e5 0.035, 96 to 3e5
-# 0.21, 136 to 2e5 0.88.
+# What each run costs, planned and (once run) measured:
+#   make -C pipelines/workstation estimate OUT=...
 SIZE_L := 34 48 68 96 136
 SIZE_SEEDS := 1 2 3 4 5 6 7 8
 SIZE_SEEDS_L48 := 1 2 3 4 5 6

@@ -1,10 +1,14 @@
 // coolgas-simulate: event-driven simulation of a freely cooling granular gas.
 #include <CLI/CLI.hpp>
+#include <iostream>
 #include <sstream>
 
 #include "common/error.h"
 #include "common/tool_main.h"
+#include "common/interrupt.h"
+#include "simulate/run/run_plan.h"
 #include "simulate/run/scene.h"
+#include "simulate/run/scene_file.h"
 #include "simulate/run/simulation.h"
 
 namespace {
@@ -24,6 +28,17 @@ std::string scene_help() {
   return s.str();
 }
 
+// --estimate: the plan of the scene's run (simulate/run/run_plan.h).
+int print_estimate(const coolgas::SimulationRequest& req) {
+  if (req.scene_path.empty() || !req.resume.empty())
+    throw coolgas::InputError("--estimate plans a new run: give a scene file, not --resume (see --help)");
+  const coolgas::Scene scene = coolgas::parse_scene(coolgas::read_scene_file(req.scene_path), req.scene_path, req.overrides);
+  coolgas::watch_interrupts();
+  const coolgas::RunPlan plan = coolgas::plan_run(scene, coolgas::interrupt_flag());
+  std::cout << coolgas::plan_header() << "\n" << coolgas::plan_line(plan) << "\n";
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -37,9 +52,15 @@ int main(int argc, char** argv) {
     app.add_option("--resume", req.resume, "continue FILE from its last dump (appends to FILE)");
     app.add_flag("--force", req.force, "overwrite an existing output file");
     app.add_flag("-q,--quiet", req.quiet, "no progress line on stderr");
+    bool estimate = false;
+    app.add_flag("--estimate", estimate,
+                 "print the run's plan and simulate nothing: particles, memory and time to request (GB, hours: 1.5 "
+                 "times the expected), dumps, disk (GB), peak memory (GB), CPU hours and collisions expected, from a "
+                 "pilot run of 10^4 particles to t = 100 (a few seconds)");
     app.footer(scene_help());
     if (coolgas::parse_command_line(app, argc, argv)) return 0;
     if (output->count() > 0 && req.output.empty()) throw coolgas::InputError("-o needs a file name, got ''");
+    if (estimate) return print_estimate(req);
     if (req.scene_path.empty() == req.resume.empty())
       throw coolgas::InputError("give either a scene file or --resume FILE (see --help)");
     return coolgas::run_simulation(req);

@@ -36,9 +36,11 @@
 // of order T0 as momentum is conserved). Its frames shrink with n, and so
 // does the cost of a dump (OutputCost).
 //
-// Measured by replaying finished runs (tests/bench/eta_replay.cc) and live
-// with tests/bench/eta_check.py (tests/bench/history.md, "ETA").
-// tests/unit/simulate/run/run_eta_test.cc checks the rule on closed forms.
+// The plan of a run before it starts (run_plan.h) is this rule fed with a
+// pilot run. Measured by replaying finished runs (tests/bench/eta_replay.cc)
+// and live with tests/bench/eta_check.py (the figures: tests/bench/README.md).
+// tests/unit/simulate/run/run_eta_test.cc checks the rule on closed forms,
+// run_eta_replay_test.cc its accuracy on finished runs (tests/data/eta).
 #pragma once
 #include <cmath>
 #include <vector>

@@ -87,41 +87,20 @@ TEST(RunEta, ASlowGrowthBeforeTheKneeIsRaisedToTheClusteringRegimes) {
   EXPECT_GT(beyond.expected_collisions(1e4), now);
 }
 
-// The floor, linear in phi, r0 and log10 delta (run_eta.cc): 0.6 for the
-// paper's gas; + 0.1 for delta ten times smaller; - 0.08 per 0.1 of phi less
-// (phi = 0.052: 0.6 - 0.8 * 0.156); - 0.2 per unit of r0 more; held within
-// [0.3, 0.9], also without a cut-off (delta = 0: an infinite log).
-TEST(RunEta, TheClusteringFloorFollowsTheGas) {
-  EXPECT_NEAR(clustering_floor(0.208, 0.1, 1e-4), 0.6, 1e-12);
-  EXPECT_NEAR(clustering_floor(0.208, 0.1, 1e-5), 0.7, 1e-12);
-  EXPECT_NEAR(clustering_floor(0.052, 0.1, 1e-4), 0.4752, 1e-12);
-  EXPECT_NEAR(clustering_floor(0.208, 0.9, 1e-4), 0.44, 1e-12);
-  EXPECT_EQ(clustering_floor(0.208, 0.1, 1e-9), 0.9);
-  EXPECT_EQ(clustering_floor(0.208, 0.1, 0), 0.9);
-  EXPECT_EQ(clustering_floor(0.01, 0.99, 1e-2), 0.3);
-}
-
-// The crossings' floor: 0.4 = 1 - theta/2 (theta = 6/5) for the paper's
-// phi = 0.208, 0.08 less per 0.1 of phi less (phi = 0.052: 0.4 - 0.8 * 0.156),
-// held within [0.2, 0.5].
-TEST(RunEta, TheCrossingFloorFollowsTheDensity) {
-  EXPECT_NEAR(crossing_floor(0.208), 0.4, 1e-12);
-  EXPECT_NEAR(crossing_floor(0.052), 0.2752, 1e-12);
-  EXPECT_EQ(crossing_floor(0.5), 0.5);
-  EXPECT_EQ(crossing_floor(NAN), 0.4);
-}
-
 // A run's own rule: C = 1000 t^0.2 before the knee is carried on at the
-// gas's floor (0.6 for the paper's gas, 0.5 for a viscoelastic one); an
-// elastic gas is extrapolated at its own exponent whatever its box (no knee);
-// aggregation counts its aggregates (AggregationFollowsTheMeanFieldLaw).
+// gas's floor (the inelastic gas's own, clustering_floor(); the generic
+// cooling gas's for a viscoelastic one); an elastic gas is extrapolated at
+// its own exponent whatever its box (no knee); aggregation counts its
+// aggregates (AggregationFollowsTheMeanFieldLaw). How well the floors
+// serve real runs: run_eta_replay_test.cc.
 TEST(RunEta, EachModelGetsItsOwnRule) {
   const double now = 1000 * std::pow(100.0, 0.2), tol = 1e-9 * now * 100;
   EXPECT_NEAR(power_law_run(run_eta_for(gas("inelastic", 1e6, 0.208, 0.1, 1e-4)), 0.2).expected_collisions(1e4),
-              now * std::pow(100.0, 0.6), tol);
+              now * std::pow(100.0, clustering_floor(0.208, 0.1, 1e-4)), tol);
   RunParameters visco = gas("viscoelastic", 1e6, 0.208, 1, 0);
   visco.r0 = visco.delta = std::nullopt;
-  EXPECT_NEAR(power_law_run(run_eta_for(visco), 0.2).expected_collisions(1e4), now * std::pow(100.0, 0.5), tol);
+  EXPECT_NEAR(power_law_run(run_eta_for(visco), 0.2).expected_collisions(1e4),
+              power_law_run(eta_of_cooling_gas(visco), 0.2).expected_collisions(1e4), tol);
   RunParameters elastic = gas("elastic", 2, 0.208, 1, 0);
   EXPECT_NEAR(power_law_run(run_eta_for(elastic), 1).expected_collisions(1e4), 1e7, 1e-9 * 1e7);
 }

@@ -1,0 +1,64 @@
+// The plan of a run (simulate/run/run_plan.h): a pilot of the scene fed to
+// the run's own ETA rule.
+#include "simulate/run/run_plan.h"
+
+#include <gtest/gtest.h>
+
+#include "common/error.h"
+#include "simulate/run/engine_factory.h"
+#include "simulate/run/time_grid.h"
+#include "simulate/start/initial_state.h"
+#include "tests/support/scenes.h"
+
+namespace coolgas {
+namespace {
+
+// An elastic gas collides at the Enskog rate, one collision per particle
+// per time unit (two particles a collision), for ever: a pilot of 1e4 of
+// 4e4 particles to t = 100, extrapolated at its own exponent, plans
+// N t_end / 2 collisions to t_end = 1000 (within the 2 % of the collision
+// rate test, tests/physics/collision_rate_test.cc).
+TEST(RunPlan, AnElasticGasCollidesAtTheEnskogRate) {
+  Scene s = test::elastic_scene(40000, 0.208, 3);
+  s.t_end = 1000;
+  const RunPlan plan = plan_run(s, nullptr);
+  EXPECT_NEAR(plan.collisions / (double(s.N) * s.t_end / 2), 1.0, 0.02);
+  EXPECT_EQ(plan.N, s.N);
+  EXPECT_EQ(plan.L, s.L);
+}
+
+// A run no larger than the pilot and no longer than its time is its own
+// pilot: the plan's collisions are the run's, exactly (same seed, same
+// events); its dumps are the time grid's and t = 0; its memory the engine's
+// bytes per particle.
+TEST(RunPlan, ASmallShortRunIsItsOwnPilot) {
+  Scene s = test::inelastic_scene(4000, 0.208, 0.1, 1e-4, 5);
+  s.t_end = 50;
+  const RunPlan plan = plan_run(s, nullptr);
+  auto engine = make_engine(s, initial_state(s), 0.0);
+  engine->run_until(s.t_end, std::int64_t(1) << 40, nullptr);
+  EXPECT_EQ(plan.collisions, double(engine->counters().collisions));
+  int dumps = 1;
+  for (const StopTime& stop : stop_times(s)) dumps += stop.dump;
+  EXPECT_EQ(plan.dumps, dumps);
+  EXPECT_EQ(plan.peak_bytes, double(s.N) * kBytesPerParticle);
+}
+
+// Ballistic aggregation merges at most N - 1 times.
+TEST(RunPlan, AggregationMergesAtMostNMinusOneTimes) {
+  Scene s = test::elastic_scene(20000, 0.208, 2);
+  s.model = CollisionModel::kAggregation;
+  s.t_end = 1e4;
+  const RunPlan plan = plan_run(s, nullptr);
+  EXPECT_LE(plan.collisions, double(s.N - 1));
+  EXPECT_GT(plan.collisions, 0.9 * double(s.N));  // mean field: N (1 + t/tau)^-6/5 left, tau of order 1
+}
+
+TEST(RunPlan, AStartFromAFileIsRefused) {
+  Scene s = test::elastic_scene(1000, 0.2);
+  s.init = InitialPositions::kFile;
+  EXPECT_THROW(plan_run(s, nullptr), InputError);
+}
+
+}  // namespace
+}  // namespace coolgas
