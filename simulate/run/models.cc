@@ -13,15 +13,17 @@ ElasticRule elastic_rule(const Scene&) { return {}; }
 ConstantRestitutionRule inelastic_rule(const Scene& s) { return {s.r0, s.delta}; }
 ViscoelasticRule viscoelastic_rule(const Scene& s) { return {s.viscoelastic_b, s.delta}; }
 
-// The engine of a collision rule (simulate/engine/collision_rules.h): the
-// hot loop is compiled for exactly that rule.
+// The engine of a collision rule (simulate/engine/collision_rules.h) in the
+// scene's dimension: the hot loop is compiled for exactly that rule and D.
 template <class Rule, Rule (*rule_of)(const Scene&)>
 std::unique_ptr<EngineBase> make_rule_engine(const Scene& s, Particles p, double now, const EngineCounters& c,
                                              const AggregateState*) {
+  if (s.dimension == 2) return std::make_unique<Engine<Rule, 2>>(std::move(p), rule_of(s), now, c);
   return std::make_unique<Engine<Rule>>(std::move(p), rule_of(s), now, c);
 }
 template <class Rule, Rule (*rule_of)(const Scene&)>
 std::unique_ptr<EngineBase> restore_rule_engine(const Scene& s, const StateReader& state) {
+  if (s.dimension == 2) return std::make_unique<Engine<Rule, 2>>(rule_of(s), state);
   return std::make_unique<Engine<Rule>>(rule_of(s), state);
 }
 

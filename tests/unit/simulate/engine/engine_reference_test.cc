@@ -1,6 +1,6 @@
 // Every engine against a slow, plainly correct reference, in one typed test
-// body: the three rules of Engine<Rule> (cells, calendar, lazy positions)
-// against the all-pairs reference engine, and the aggregation engine (chains,
+// body: the three rules of Engine<Rule, D> in 3D and 2D (cells, calendar,
+// lazy positions) against the all-pairs reference engine, and the aggregation engine (chains,
 // a grid that is rebuilt as aggregates grow) against the all-pairs
 // aggregation reference. Chaos amplifies round-off differences, so only the
 // first few events per particle are compared.
@@ -19,9 +19,9 @@ namespace {
 
 // A case: a start, the fast engine on it, the reference's sequence, and how
 // many events to compare.
-template <class Rule>
+template <class Rule, int D = 3>
 struct RuleCase {
-  using EngineType = Engine<Rule>;
+  using EngineType = Engine<Rule, D>;
   static std::unique_ptr<EngineType> engine(const Particles& p, const Rule& rule) {
     return std::make_unique<EngineType>(p, rule, 0.0);
   }
@@ -60,6 +60,36 @@ struct Viscoelastic : RuleCase<ViscoelasticRule> {
   static ViscoelasticRule rule() { return {0.3, 0.0}; }
   static constexpr int kEvents = 300;
 };
+// The same rules for disks (D = 2): one layer of cells, 9 around each. The
+// reference needs no second version: it works on 3-vectors whose z stays 0.
+struct Elastic2D : RuleCase<ElasticRule, 2> {
+  static Scene scene() { return test::disk_scene(150, 0.2, 13); }
+  static ElasticRule rule() { return {}; }
+  static constexpr int kEvents = 300;
+};
+struct DenseElastic2D : RuleCase<ElasticRule, 2> {
+  static Scene scene() { return test::disk_scene(250, 0.45, 14); }
+  static ElasticRule rule() { return {}; }
+  static constexpr int kEvents = 400;
+};
+// phi = 0.01: cells one mean spacing wide (cell_width, engine.cc: 3.5 wide
+// in a square of side 126), free flights (mean 39) below L/2.
+struct DiluteElastic2D : RuleCase<ElasticRule, 2> {
+  static Scene scene() { return test::disk_scene(2000, 0.01, 15); }
+  static ElasticRule rule() { return {}; }
+  static constexpr int kEvents = 600;
+};
+struct Inelastic2D : RuleCase<ConstantRestitutionRule, 2> {
+  static Scene scene() { return test::inelastic_disk_scene(150, 0.2, 0.5, 1e-3, 16); }
+  static ConstantRestitutionRule rule() { return {0.5, 1e-3}; }
+  static constexpr int kEvents = 300;
+};
+struct Viscoelastic2D : RuleCase<ViscoelasticRule, 2> {
+  static Scene scene() { return test::disk_scene(150, 0.2, 17); }
+  static ViscoelasticRule rule() { return {0.3, 0.0}; }
+  static constexpr int kEvents = 300;
+};
+
 // 400 unit spheres at phi = 0.05 until 360 merges: aggregates outgrow the
 // cells (the large-aggregate index is used), become four times fewer than
 // cells (the grid is rebuilt) and merges chain.
@@ -83,7 +113,8 @@ struct Aggregation {
 
 template <class Case>
 class EngineVsReference : public ::testing::Test {};
-using Cases = ::testing::Types<Elastic, DenseElastic, DiluteElastic, Inelastic, Viscoelastic, Aggregation>;
+using Cases = ::testing::Types<Elastic, DenseElastic, DiluteElastic, Inelastic, Viscoelastic, Aggregation, Elastic2D,
+                               DenseElastic2D, DiluteElastic2D, Inelastic2D, Viscoelastic2D>;
 TYPED_TEST_SUITE(EngineVsReference, Cases);
 
 TYPED_TEST(EngineVsReference, SameEventSequence) {
