@@ -559,9 +559,6 @@ void check_dimension(const Scene& s) {
   if (s.dimension == 1)
     throw InputError("system.dimension = 1 (hard rods on a ring) is not supported yet; use 2 (disks) or 3 (spheres)");
   if (s.dimension == 3) return;
-  if (s.model == CollisionModel::kAggregation)
-    throw InputError("collision.model = \"aggregation\" is not supported yet in system.dimension = 2; use "
-                     "\"elastic\", \"inelastic\" or \"viscoelastic\", or dimension 3");
   if (s.init == InitialPositions::kFcc)
     throw InputError("system.init = \"fcc\" is a 3D lattice; in system.dimension = 2 use \"random\" (phi <= 0.45)");
   if (s.init == InitialPositions::kFile)

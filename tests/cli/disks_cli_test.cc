@@ -6,11 +6,13 @@
 // for now).
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "common/hdf5_file.h"
 #include "tests/support/run_command.h"
+#include "tests/support/same_trajectory.h"
 #include "tests/support/simulate_cli.h"
 
 namespace coolgas {
@@ -18,50 +20,18 @@ namespace {
 
 using test::bin;
 using test::run_command;
-using test::simulate;
 
-const char* kDisks = R"([system]
-dimension = 2
-N = 6000
-phi = 0.3
-seed = 5
-equilibrate = 1
-[collision]
-model = "inelastic"
-r0 = 0.5
-delta = 1e-3
-[run]
-t_end = 300
-[output]
-dumps_per_decade = 10
-)";
-
-// Every dump and observable, as raw bytes.
-std::vector<char> bytes_of(const std::string& file, const std::string& path) {
-  h5::Handle f = h5::open_file(file, h5::Mode::kReadOnly);
-  h5::Handle d = h5::open_dataset(f.id(), path);
-  const hid_t type = H5Dget_type(d.id());
-  hsize_t n = H5Tget_size(type);
-  for (hsize_t x : h5::shape(d.id())) n *= x;
-  std::vector<char> bytes(n);
-  if (n > 0) H5Dread(d.id(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, bytes.data());
-  H5Tclose(type);
-  return bytes;
-}
-
-void expect_same_run(const std::string& a, const std::string& b) {
-  for (const char* ds : {"particles/all/position/value", "particles/all/velocity/value", "particles/all/image/value",
-                         "observables/kinetic_energy/value", "observables/collisions/value",
-                         "observables/total_momentum/value", "restart/time"})
-    EXPECT_TRUE(bytes_of(a, ds) == bytes_of(b, ds)) << ds << " of " << b;
+// The resume tests' cooling gas as disks, to t = 300.
+std::string disks(const std::string& args) {
+  return test::simulate(args + " --set system.dimension=2 --set run.t_end=300");
 }
 
 class DisksCli : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     dir_ = new std::string(test::scratch_dir("disks_cli"));
-    scene_ = new std::string(test::write_file(*dir_, "disks.toml", kDisks));
-    const auto r = run_command(simulate(*scene_ + " -o " + whole()));
+    scene_ = new std::string(test::write_file(*dir_, "gas.toml", test::kCoolingGasScene));
+    const auto r = run_command(disks(*scene_ + " -o " + whole()));
     ASSERT_EQ(r.exit_code, 0) << r.err;
   }
   static void TearDownTestSuite() {
@@ -92,43 +62,46 @@ TEST_F(DisksCli, TheFileIsA2DH5mdFileTheValidatorAccepts) {
 
 TEST_F(DisksCli, AnExtendedRunIsBitForBitTheWholeOne) {
   const std::string out = *dir_ + "/part.h5";
-  ASSERT_EQ(run_command(simulate(*scene_ + " -o " + out + " --set run.t_end=100")).exit_code, 0);  // on the dump grid
-  const auto r = run_command(simulate("--resume " + out + " --set run.t_end=300"));
+  const std::string part = test::simulate(*scene_ + " -o " + out + " --set system.dimension=2 --set run.t_end=100");
+  ASSERT_EQ(run_command(part).exit_code, 0);  // t = 100 is on the dump grid
+  const auto r = run_command(test::simulate("--resume " + out + " --set run.t_end=300"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  expect_same_run(whole(), out);
+  test::expect_same_trajectory(whole(), out);
 }
 
 // Killed mid-run (checkpoints every 0.1 s), resumed from its checkpoint.
 TEST_F(DisksCli, AKilledRunResumesBitForBit) {
   const std::string out = *dir_ + "/killed.h5";
-  const auto killed = run_command("COOLGAS_CHECKPOINT_INTERVAL=0.1 " + simulate(*scene_ + " -o " + out) +
+  const auto killed = run_command("COOLGAS_CHECKPOINT_INTERVAL=0.1 " + disks(*scene_ + " -o " + out) +
                                   " & pid=$!; n=0; while [ ! -f " + out +
                                   ".checkpoint ] && [ $n -lt 600 ]; do sleep 0.05; n=$((n+1)); done; sleep 0.3; "
                                   "kill -KILL $pid; wait $pid");
   ASSERT_TRUE(killed.exit_code == 128 + 9 || killed.exit_code == 0) << killed.err;
   if (killed.exit_code != 0) {
-    const auto r = run_command(simulate("--resume " + out));
+    const auto r = run_command(test::simulate("--resume " + out));
     ASSERT_EQ(r.exit_code, 0) << r.err;
   }
-  expect_same_run(whole(), out);
+  test::expect_same_trajectory(whole(), out);
 }
 
 TEST_F(DisksCli, ToolsThatReadFramesRefuseA2DFileWithOneLine) {
-  for (const char* tool : {"coolgas-clusters", "coolgas-velocity", "coolgas-structure", "coolgas-shape"}) {
-    const auto r = run_command(bin(tool) + " " + whole());
-    test::expect_one_error_line(r, "2D trajectory");
-  }
+  for (const std::string tool : {"coolgas-clusters", "coolgas-velocity", "coolgas-structure", "coolgas-shape",
+                                  "coolgas-convert --last"})
+    test::expect_one_error_line(run_command(bin(tool) + " " + whole()), "2D trajectory");
+  const std::string png = *dir_ + "/snap.png";
+  test::expect_one_error_line(run_command(bin("coolgas-snapshot") + " " + whole() + " --time 0 -o " + png),
+                              "2D trajectory");
+  EXPECT_FALSE(std::filesystem::exists(png));
 }
 
 TEST(DisksCliScene, BadDimensionsAreOneLineEach) {
   const std::string dir = test::scratch_dir("disks_bad_scene");
-  const std::string scene = test::write_file(dir, "disks.toml", kDisks), out = dir + "/out.h5";
-  const std::string base = scene + " -o " + out + " ";
-  test::expect_simulate_refused(base + "--set system.dimension=4", "system.dimension = 4 is out of range", out);
-  test::expect_simulate_refused(base + "--set system.dimension=1", "not supported yet", out);
-  test::expect_simulate_refused(base + "--set system.dimension=2.5", "system.dimension must be an integer", out);
-  test::expect_simulate_refused(base + "--set collision.model=aggregation --set collision.r0=1 --set collision.delta=0",
-                                "aggregation\" is not supported yet in system.dimension = 2", out);
+  const std::string scene = test::write_file(dir, "gas.toml", test::kCoolingGasScene), out = dir + "/out.h5";
+  const std::string base = scene + " -o " + out + " --set system.dimension=2 ";
+  const std::string plain = scene + " -o " + out + " ";
+  test::expect_simulate_refused(plain + "--set system.dimension=4", "system.dimension = 4 is out of range", out);
+  test::expect_simulate_refused(plain + "--set system.dimension=1", "not supported yet", out);
+  test::expect_simulate_refused(plain + "--set system.dimension=2.5", "system.dimension must be an integer", out);
   test::expect_simulate_refused(base + "--set system.init=fcc", "3D lattice", out);
   test::expect_simulate_refused(base + "--set system.phi=0.5", "reaches phi <= 0.45", out);
 }

@@ -1,9 +1,7 @@
 // Hard disks (system.dimension = 2) against kinetic theory and conservation
-// laws (tests/physics/README.md):
-//   - the time unit: at t -> 0 the collision frequency per particle is the 2D
-//     Enskog value omega = 2 n sigma g(sigma) sqrt(pi T / m) with Henderson's
-//     contact value g = (1 - 7 phi/16) / (1 - phi)^2 (Mol. Phys. 30, 971
-//     (1975)), which T0 makes 1;
+// laws (tests/physics/README.md; their time unit, Enskog's omega with
+// Henderson's contact value, is checked with the spheres' in
+// collision_rate_test.cc):
 //   - Haff's law in 2D: dT/dt = -(1 - r^2) omega T / d with d = 2, so
 //     T(t) = T0 / (1 + t/t0)^2 with t0 = 4 / (1 - r^2) in units of 1/omega0;
 //   - the temperature is per component, T = m <v_x^2>: the energy per disk is
@@ -15,43 +13,17 @@
 
 #include "simulate/run/engine_factory.h"
 #include "simulate/start/initial_state.h"
+#include "tests/support/kinetic_theory.h"
 #include "tests/support/min_distance.h"
 #include "tests/support/scenes.h"
 
 namespace coolgas {
 namespace {
 
-double initial_disk_rate(double phi) {
-  const Scene s = test::disk_scene(40000, phi, 41);
-  auto e = make_engine(s, initial_state(s), 0.0);
-  e->run_until(1.0, std::int64_t(1) << 40, nullptr);
-  return 2.0 * double(e->counters().collisions) / double(s.N) / 1.0;
-}
-
-// Within 2 %, as in 3D (collision_rate_test.cc).
-TEST(DiskCollisionRate, IsOneAtPhi005) { EXPECT_NEAR(initial_disk_rate(0.05), 1.0, 0.02); }
-TEST(DiskCollisionRate, IsOneAtPhi02) { EXPECT_NEAR(initial_disk_rate(0.2), 1.0, 0.02); }
-TEST(DiskCollisionRate, IsOneAtPhi035) { EXPECT_NEAR(initial_disk_rate(0.35), 1.0, 0.02); }
-
+// As in 3D (haff_law_test.cc), with 2D's t0 = 4 / (1 - r^2).
 TEST(DiskHaffLaw, TemperatureAndCollisionRateFollowTheHomogeneousCooling) {
   const double r = 0.98;
-  const Scene s = test::inelastic_disk_scene(4000, 0.05, r, 0.0, 42);
-  const double t0 = 4.0 / (1.0 - r * r);  // about 101; 3D's 6/(1 - r^2) would be 152
-  auto e = make_engine(s, initial_state(s), 0.0);
-  const double e0 = e->observables().kinetic_energy;
-  double t_prev = 0;
-  std::int64_t c_prev = 0;
-  for (double t : {0.5 * t0, t0, 2.0 * t0}) {
-    e->run_until(t, std::int64_t(1) << 40, nullptr);
-    const double haff = 1.0 / ((1 + t / t0) * (1 + t / t0));
-    EXPECT_NEAR(e->observables().kinetic_energy / e0 / haff, 1.0, 0.02) << "t = " << t;
-    // Homogeneous: the rate follows omega ∝ sqrt(T) = 1 / (1 + t/t0).
-    const double expected = t0 * std::log((1 + t / t0) / (1 + t_prev / t0)) / (t - t_prev);
-    const double measured = 2.0 * double(e->counters().collisions - c_prev) / double(s.N) / (t - t_prev);
-    EXPECT_NEAR(measured / expected, 1.0, 0.03) << "t = " << t;
-    t_prev = t;
-    c_prev = e->counters().collisions;
-  }
+  test::expect_haff_cooling(test::inelastic_disk_scene(4000, 0.05, r, 0.0, 42), 4.0 / (1.0 - r * r));  // t0 about 101
 }
 
 // <v_x^2> and <v_y^2> over the disks (unit masses).

@@ -19,7 +19,7 @@
 namespace coolgas {
 namespace {
 
-// A case: a model in a dimension (aggregation is 3D only for now).
+// A case: a model in a dimension.
 struct ModelIn {
   CollisionModel model;
   int dimension;
@@ -102,13 +102,11 @@ TEST(EngineContractRebuilds, ScheduledRebuildsDoNotDependOnSlicing) {
 }
 
 // Every model of the simulator's table (simulate/run/models.h), so a new
-// model is held to the contract from its first row; in 3D, and in 2D those
-// the scene allows there.
+// model is held to the contract from its first row, in 3D and in 2D.
 std::vector<ModelIn> every_model() {
   std::vector<ModelIn> models;
-  for (const ModelRow& r : model_rows()) models.push_back({r.model, 3});
-  for (const ModelRow& r : model_rows())
-    if (r.model != CollisionModel::kAggregation) models.push_back({r.model, 2});
+  for (const int dimension : {3, 2})
+    for (const ModelRow& r : model_rows()) models.push_back({r.model, dimension});
   return models;
 }
 std::string case_name(const ::testing::TestParamInfo<ModelIn>& info) {
