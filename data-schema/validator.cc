@@ -21,6 +21,13 @@ std::string path_of(std::string_view base, std::string_view name) {
 
 std::string attr_text(const AttributeRef& a) { return path_of(a.group, a.name); }
 
+// "x, x" (n times x), as an array attribute is shown.
+std::string repeated(const std::string& x, int n) {
+  std::string s;
+  for (int i = 0; i < n; ++i) s.append(i ? ", " : "").append(x);
+  return s;
+}
+
 // An element whose step, time and value were found right and agree in rows.
 struct GoodElement {
   std::string path;
@@ -40,6 +47,7 @@ class Checker {
     read_model();
     read_completion();
     for (const GroupSpec& g : profile_.groups) check_group(g);
+    d_ = layout::dimension_of(file_) == 2 ? 2 : 3;  // the attribute check reports any other value
     for (const AttributeSpec& a : profile_.attributes) check_attribute(a);
     read_box_parameters();
     for (const ElementSpec& e : profile_.elements) guarded(e.path, [&] { check_element(e); });
@@ -147,17 +155,23 @@ class Checker {
                 "missing " + name + " (" + std::string(type_name(a.type)) + ", " + std::string(a.meaning) + ")");
       return;
     }
-    const std::vector<hsize_t> want_dims = a.length ? std::vector<hsize_t>{*a.length} : std::vector<hsize_t>{};
+    const std::vector<hsize_t> want_dims = a.per_dimension ? std::vector<hsize_t>{hsize_t(d_)}
+                                           : a.length      ? std::vector<hsize_t>{*a.length}
+                                                           : std::vector<hsize_t>{};
+    std::string equals(a.equals);
+    if (a.per_dimension) equals = "[" + repeated(equals, d_) + "]";
     if (found.type != type_name(a.type) && !(a.type == DataType::kInteger && found.type.starts_with("int")))
       problem(a.group,
               name + " has type " + found.type + " but the profile requires " + std::string(type_name(a.type)));
     else if (found.dims != want_dims)
       problem(a.group,
               name + " has shape " + shape_text(found.dims) + " but the profile requires " + shape_text(want_dims));
-    else if (!a.equals.empty() && found.text != a.equals)
-      problem(a.group, name + " is " + found.text + " but the profile requires " + std::string(a.equals));
+    else if (!equals.empty() && found.text != equals)
+      problem(a.group, name + " is " + found.text + " but the profile requires " + equals);
     else if (a.at_least && found.first_integer < *a.at_least)
       problem(a.group, name + " is " + found.text + " but must be at least " + std::to_string(*a.at_least));
+    else if (a.at_most && found.first_integer > *a.at_most)
+      problem(a.group, name + " is " + found.text + " but must be at most " + std::to_string(*a.at_most));
     else
       good_attributes_.insert(path_of(a.group, a.name));
   }
@@ -188,7 +202,9 @@ class Checker {
     }
     const std::vector<hsize_t> dims = h5::shape(ds.id());
     if (!shape_fits(dims, row)) {
-      std::string what = "shape " + shape_text(dims) + " but the profile requires " + shape_rule(rows, row);
+      std::string what = "shape " + shape_text(dims) + " but the profile requires " + shape_rule(rows, row, d_);
+      if (d_ != 3 && std::any_of(row.begin(), row.end(), [](const Extent& e) { return e.dimension; }))
+        what += " (d = " + std::to_string(d_) + " from " + std::string(layout::kBox) + "/dimension)";
       if (N_ && std::any_of(row.begin(), row.end(), [](const Extent& e) { return e.particles; }))
         what += " with N = " + std::to_string(*N_) + " from " + attr_text(profile_.particle_count);
       problem(path, what);
@@ -202,7 +218,8 @@ class Checker {
     if (dims.size() != row.size() + 1) return false;
     for (std::size_t k = 0; k < row.size(); ++k) {
       const Extent& e = row[k];
-      if (e.particles ? (N_ && dims[k + 1] != static_cast<hsize_t>(*N_)) : dims[k + 1] != e.size) return false;
+      const hsize_t want = e.dimension ? hsize_t(d_) : e.size;
+      if (e.particles ? (N_ && dims[k + 1] != static_cast<hsize_t>(*N_)) : dims[k + 1] != want) return false;
     }
     return true;
   }
@@ -257,7 +274,7 @@ class Checker {
   // with NaN or a wrong shape is reported already, and not read again).
   void check_overlaps() {
     if (!report_.problems.empty() || !L_ || !good(layout::kPosition)) return;
-    const Trajectory trajectory(path_, kPosition | kDiameter);
+    const Trajectory trajectory(path_, kPosition | kDiameter | kAnyDimension);
     Frame frame;
     for (std::size_t dump = 0; dump < trajectory.dump_times().size(); ++dump) {
       trajectory.read(dump, frame);
@@ -322,6 +339,7 @@ class Checker {
   const ValidateOptions& options_;
   Report report_;
   int file_version_ = 0;
+  int d_ = 3;  // box/dimension
   std::set<std::string> good_attributes_;
   std::optional<std::int64_t> N_;
   std::optional<double> L_;

@@ -126,13 +126,14 @@ Finding check_box_matrix(hid_t dataset, double L, std::string_view L_source, con
   const auto dims = h5::shape(dataset);
   Offences bad;
   for_each_block(dataset, scan, [&](hsize_t first, std::span<const double> v) {
+    const hsize_t d = dims.back();  // 3, or 2 for a 2D box
     for (std::size_t i = 0; i < v.size(); ++i) {
-      const hsize_t k = (first + i) % 9;
-      const double want = k % 4 == 0 ? L : 0.0;  // the diagonal of a row-major 3x3 is 0, 4, 8
+      const hsize_t k = (first + i) % (d * d);
+      const double want = k % (d + 1) == 0 ? L : 0.0;  // the diagonal of a row-major 3x3 is 0, 4, 8 (2x2: 0, 3)
       if (v[i] != want)
         bad.add([&] {
-          return at(dims, first + i, v[i]) + " but the box is diag(L, L, L) with L = " + number_text(L) + " from " +
-                 std::string(L_source);
+          return at(dims, first + i, v[i]) + " but the box is " + (d == 2 ? "diag(L, L)" : "diag(L, L, L)") +
+                 " with L = " + number_text(L) + " from " + std::string(L_source);
         });
     }
   });

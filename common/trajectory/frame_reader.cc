@@ -10,6 +10,7 @@
 #include "common/trajectory/compact_slots.h"
 #include "common/trajectory/layout.h"
 #include "common/trajectory/run_parameters.h"
+#include "common/trajectory/widen_rows.h"
 
 namespace coolgas {
 
@@ -48,12 +49,17 @@ Trajectory::Trajectory(const std::string& path, unsigned fields) : path_(path), 
   if (fields == 0) throw std::logic_error("Trajectory opened for no element");
   file_ = h5::open_file(path, h5::Mode::kReadOnly);
   aggregates_ = layout::layout_of(file_.id()) == layout::Layout::kAggregation;
+  dimension_ = layout::dimension_of(file_.id());
+  if (dimension_ != 3 && (!(fields & Field::kAnyDimension) || dimension_ != 2))
+    throw InputError(path + ": a " + std::to_string(dimension_) +
+                     "D trajectory (box/dimension = " + std::to_string(dimension_) +
+                     "); this tool reads 3D trajectories only for now");
   if (aggregates_) fields_ |= Field::kId | Field::kMass;
   else fields_ &= ~unsigned(Field::kDiameter);  // gas files have unit spheres and no diameter element
   std::size_t frames = SIZE_MAX;
   for (const auto& e : kElements) {
     if (!(fields_ & e.field)) continue;
-    check_element(std::string(e.path), e.per_particle);
+    check_element(std::string(e.path), e.per_particle == 3 ? hsize_t(dimension_) : e.per_particle);
     h5::Handle value = h5::open_dataset(file_.id(), value_of(e));
     h5::Handle time = h5::open_dataset(file_.id(), layout::time_of(e.path));
     frames = std::min<std::size_t>({frames, h5::shape(value.id())[0], h5::shape(time.id())[0]});
@@ -87,7 +93,7 @@ void Trajectory::check_element(const std::string& element, hsize_t per_particle)
   const bool fits = per_particle == 1 ? dims.size() == 2 : (dims.size() == 3 && dims[2] == per_particle);
   if (!fits)
     throw InputError(path_ + ": " + element + "/value has the wrong shape (expected frames x particles" +
-                     (per_particle == 1 ? ")" : " x 3)"));
+                     (per_particle == 1 ? ")" : " x " + std::to_string(per_particle) + ")"));
   const auto n = static_cast<std::int64_t>(dims[1]);
   if (n < 1) throw InputError(path_ + ": " + element + "/value holds no particles");
   // Checked before a frame's buffers are sized by it (a damaged file may declare any shape).
@@ -135,11 +141,14 @@ double Trajectory::box_side(std::size_t dump) const {
   if (h5::exists(file_.id(), edges_value)) {
     h5::Handle edges = h5::open_dataset(file_.id(), edges_value);
     const auto dims = h5::shape(edges.id());
-    if (dims.size() == 3 && dims[1] == 3 && dims[2] == 3 && dump < dims[0]) {
+    const auto d = hsize_t(dimension_);
+    if (dims.size() == 3 && dims[1] == d && dims[2] == d && dump < dims[0]) {
       const auto m = h5::read_row<double>(edges.id(), dump);
-      if (m[0] != m[4] || m[0] != m[8])
-        throw InputError(path_ + ": dump " + std::to_string(dump) + ": the box is not cubic (edges " +
-                         format_number(m[0]) + ", " + format_number(m[4]) + ", " + format_number(m[8]) + ")");
+      const double last = m[d * d - 1];  // the diagonal: 0, 4, 8 (2D: 0, 3)
+      if (m[0] != last || (d == 3 && m[0] != m[4]))
+        throw InputError(path_ + ": dump " + std::to_string(dump) + ": the box is not " +
+                         (d == 3 ? "cubic" : "square") + " (edges " + format_number(m[0]) + ", " +
+                         format_number(m[d + 1]) + (d == 3 ? ", " + format_number(m[8]) : "") + ")");
       return m[0];
     }
   }
@@ -159,7 +168,8 @@ void Trajectory::read(std::size_t dump, Frame& frame) const {
   frame.time = times_[dump];
   frame.step = steps_[dump];
   frame.L = box_side(dump);
-  const auto size = static_cast<std::size_t>(3 * n_);
+  const auto size = static_cast<std::size_t>(dimension_ * n_), n = static_cast<std::size_t>(n_);
+  const auto d = static_cast<std::size_t>(dimension_);
   const std::string where = path_ + ": dump " + std::to_string(dump) + " (t = " + format_number(frame.time) + "): ";
   for (const auto& e : kElements) {
     if (!(fields_ & e.field)) continue;
@@ -168,16 +178,19 @@ void Trajectory::read(std::size_t dump, Frame& frame) const {
       case Field::kPosition:
         frame.position.resize(size);
         h5::read_rows(value.id(), h5::Type::kFloat64, dump, 1, frame.position.data());
+        widen_to_three(frame.position, n, d);
         check_finite(frame.position, where + std::string(e.path));
         break;
       case Field::kVelocity:
         frame.velocity.resize(size);
         h5::read_rows(value.id(), h5::Type::kFloat64, dump, 1, frame.velocity.data());
+        widen_to_three(frame.velocity, n, d);
         check_finite(frame.velocity, where + std::string(e.path));
         break;
       case Field::kImage:
         frame.image.resize(size);
         h5::read_rows(value.id(), h5::Type::kInt32, dump, 1, frame.image.data());
+        widen_to_three(frame.image, n, d);
         break;
       case Field::kId:
         frame.id.resize(std::size_t(n_));
@@ -192,6 +205,8 @@ void Trajectory::read(std::size_t dump, Frame& frame) const {
         frame.diameter.resize(std::size_t(n_));
         h5::read_rows(value.id(), h5::Type::kFloat64, dump, 1, frame.diameter.data());
         check_finite(frame.diameter, where + std::string(e.path), 1);
+        break;
+      case Field::kAnyDimension:  // not an element (it is never in kElements)
         break;
     }
   }

@@ -26,10 +26,21 @@
 
 namespace coolgas {
 
-// Per-particle elements, combinable as a bit set.
-enum Field : unsigned { kPosition = 1u, kVelocity = 2u, kImage = 4u, kId = 8u, kMass = 16u, kDiameter = 32u };
+// Per-particle elements, combinable as a bit set. kAnyDimension is no
+// element: it lets a reader that handles disks open a 2D file, whose frames
+// then hold z = 0 (the analysis tools do not ask for it and refuse 2D files).
+enum Field : unsigned {
+  kPosition = 1u,
+  kVelocity = 2u,
+  kImage = 4u,
+  kId = 8u,
+  kMass = 16u,
+  kDiameter = 32u,
+  kAnyDimension = 64u
+};
 
-// One dump. Arrays hold 3 numbers per particle, in particle-id order.
+// One dump. Arrays hold 3 numbers per particle, in particle-id order (for a
+// 2D file opened with kAnyDimension, the third is 0).
 struct Frame {
   std::size_t dump = 0;  // index in the file
   double time = 0;
@@ -56,6 +67,7 @@ class Trajectory {
   const std::string& path() const { return path_; }
   std::int64_t particles() const { return n_; }  // N (slots, for aggregation files)
   bool aggregates() const { return aggregates_; }  // an aggregation file: frames hold the aggregates present
+  int dimension() const { return dimension_; }     // 3, or 2 (opened with kAnyDimension)
   const std::vector<double>& dump_times() const { return times_; }
   // Index of the dump whose time is nearest t (the earlier one on a tie).
   std::size_t nearest_dump(double t) const;
@@ -84,6 +96,7 @@ class Trajectory {
   std::string path_;
   unsigned fields_;
   bool aggregates_ = false;
+  int dimension_ = 3;
   h5::Handle file_;
   std::int64_t n_ = 0;
   std::vector<double> times_;

@@ -78,19 +78,20 @@ Profile make_profile() {
       {.group = kCreator, .name = "name", .type = kVlenString, .meaning = "creating program"},
       {.group = kCreator, .name = "version", .type = kVlenString, .meaning = "its version"},
       // The page says int32; coolgas 0.1 writes int64 and MDAnalysis reads either.
-      {.group = kBox, .name = "dimension", .type = kInteger, .equals = "3", .meaning = "dimension"},
+      // d = 3 for spheres, 2 for disks (system.dimension); it sets the d extents below.
+      {.group = kBox, .name = "dimension", .type = kInteger, .at_least = 2, .at_most = 3, .meaning = "dimension d"},
       {.group = kBox,
        .name = "boundary",
        .type = kVlenString,
-       .length = 3,
-       .equals = "[periodic, periodic, periodic]",
+       .equals = "periodic",
+       .per_dimension = true,
        .meaning = "boundary conditions"},
   };
   p.elements = {
-      {.path = kBoxEdges, .row = {kThree, kThree}, .rule = kBoxMatrix, .meaning = "diag(L, L, L)"},
-      {.path = kPosition, .row = {kParticles, kThree}, .rule = kInsideBox, .meaning = "centres"},
-      {.path = kImage, .type = kInt32, .row = {kParticles, kThree}, .meaning = "image counts"},
-      {.path = kVelocity, .row = {kParticles, kThree}, .rule = kFinite, .meaning = "velocities"},
+      {.path = kBoxEdges, .row = {kDimension, kDimension}, .rule = kBoxMatrix, .meaning = "diag(L, L, L)"},
+      {.path = kPosition, .row = {kParticles, kDimension}, .rule = kInsideBox, .meaning = "centres"},
+      {.path = kImage, .type = kInt32, .row = {kParticles, kDimension}, .meaning = "image counts"},
+      {.path = kVelocity, .row = {kParticles, kDimension}, .rule = kFinite, .meaning = "velocities"},
       {.path = kKineticEnergy, .rows = kObservableRows, .rule = kFinite, .meaning = "E per particle"},
       {.path = kCollisions, .type = kInt64, .rows = kObservableRows, .meaning = "collisions so far"},
       {.path = kCollisionsPerParticle,
@@ -102,7 +103,7 @@ Profile make_profile() {
        .rows = kObservableRows,
        .meaning = "collisions below delta so far"},
       {.path = kTotalMomentum,
-       .row = {kThree},
+       .row = {kDimension},
        .rows = kObservableRows,
        .rule = kFinite,
        .meaning = "total momentum"},
@@ -147,12 +148,12 @@ const Profile& h5md_profile() {
   return profile;
 }
 
-std::string shape_rule(RowCount rows, const std::vector<Extent>& row) {
+std::string shape_rule(RowCount rows, const std::vector<Extent>& row, std::optional<int> d) {
   std::string s = "(";
   s.append(row_count_symbol(rows));
   for (const Extent& e : row) {
     s.append(", ");
-    s.append(e.particles ? "N" : std::to_string(e.size));
+    s.append(e.particles ? "N" : !e.dimension ? std::to_string(e.size) : d ? std::to_string(*d) : "d");
   }
   s.append(row.empty() ? ",)" : ")");
   return s;

@@ -28,13 +28,15 @@ std::string_view type_name(DataType t);
 // element of the layout the model writes.
 enum class Presence { kRequired, kOptional, kPerModel };
 
-// One dimension of a dataset's shape: a fixed size or N (/parameters/N).
+// One dimension of a dataset's shape: a fixed size, N (/parameters/N) or d
+// (the box's `dimension`: 3, or 2 for disks).
 struct Extent {
   hsize_t size = 0;
   bool particles = false;  // true: the extent is N
+  bool dimension = false;  // true: the extent is d
 };
 inline constexpr Extent kParticles{.particles = true};
-inline constexpr Extent kThree{.size = 3};
+inline constexpr Extent kDimension{.dimension = true};
 
 // Which row count a series' first dimension shares: F (dumps) or K (observable rows).
 enum class RowCount { kFrames, kObservableRows };
@@ -45,7 +47,7 @@ enum class ValueRule {
   kAny,        // no constraint (e.g. integer image counts)
   kFinite,     // no NaN or infinity
   kInsideBox,  // finite and within [0, L), L from /parameters/L
-  kBoxMatrix,  // each row is diag(L, L, L)
+  kBoxMatrix,  // each row is diag(L, L, L) (2D: diag(L, L))
 };
 
 struct GroupSpec {
@@ -63,6 +65,8 @@ struct AttributeSpec {
   std::optional<hsize_t> length;
   std::string_view equals;               // the value as the validator prints it, e.g. "[1, 1]"; empty: any
   std::optional<std::int64_t> at_least;  // lower bound for integers
+  std::optional<std::int64_t> at_most;   // upper bound for integers
+  bool per_dimension = false;            // an array of d elements, each `equals` (shown as "[x, x]")
   std::string_view meaning;
   Presence presence = Presence::kRequired;
   int since = 1;
@@ -118,7 +122,7 @@ struct Profile {
 // The profile this build of coolgas writes and checks.
 const Profile& h5md_profile();
 
-// "(F, N, 3)" for an element's value.
-std::string shape_rule(RowCount rows, const std::vector<Extent>& row);
+// "(F, N, d)" for an element's value; "(F, N, 3)" given the file's d = 3.
+std::string shape_rule(RowCount rows, const std::vector<Extent>& row, std::optional<int> d = std::nullopt);
 
 }  // namespace coolgas::schema

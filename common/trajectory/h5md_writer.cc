@@ -42,9 +42,9 @@ h5::Storage storage_of(const schema::ElementSpec& e, const DumpStorage& s) {
   return {.chunk_inner = static_cast<hsize_t>(s.particles_per_chunk), .deflate_level = s.deflate_level};
 }
 
-void create_element(hid_t file, const schema::ElementSpec& e, hsize_t n, const DumpStorage& storage) {
+void create_element(hid_t file, const schema::ElementSpec& e, hsize_t n, int dimension, const DumpStorage& storage) {
   std::vector<hsize_t> inner;
-  for (const schema::Extent& x : e.row) inner.push_back(x.particles ? n : x.size);
+  for (const schema::Extent& x : e.row) inner.push_back(x.particles ? n : x.dimension ? hsize_t(dimension) : x.size);
   const hsize_t chunk = e.rows == schema::RowCount::kFrames ? kFrameChunk : kObservableChunk;
   h5::Handle g = h5::create_group(file, std::string(e.path));
   h5::create_series(g.id(), "step", h5::Type::kInt64, {}, chunk);
@@ -52,7 +52,7 @@ void create_element(hid_t file, const schema::ElementSpec& e, hsize_t n, const D
   h5::create_series(g.id(), "value", h5_type(e.type), inner, chunk, e.fill, storage_of(e, storage));
 }
 
-void write_metadata(hid_t file) {
+void write_metadata(hid_t file, int dimension) {
   h5::Handle h5md = h5::open_group(file, std::string(kH5md));
   h5::write_attr(h5md.id(), "version", std::vector<std::int32_t>{1, 1});
   h5::Handle author = h5::open_group(file, std::string(kAuthor));
@@ -62,8 +62,8 @@ void write_metadata(hid_t file) {
   h5::write_attr(creator.id(), "name", std::string("coolgas-simulate"));
   h5::write_attr(creator.id(), "version", program_version());
   h5::Handle box = h5::open_group(file, std::string(kBox));
-  h5::write_attr(box.id(), "dimension", std::int64_t{3});
-  h5::write_attr(box.id(), "boundary", std::vector<std::string>{"periodic", "periodic", "periodic"});
+  h5::write_attr(box.id(), "dimension", std::int64_t{dimension});
+  h5::write_attr(box.id(), "boundary", std::vector<std::string>(std::size_t(dimension), "periodic"));
 }
 
 // The largest chunk of the per-particle series, in bytes, uncompressed (a
@@ -107,7 +107,8 @@ void H5mdWriter::writing(F&& body) {
 }
 
 H5mdWriter H5mdWriter::create(const std::string& path, const RunParameters& params, bool overwrite,
-                              const DumpStorage& storage) {
+                              const DumpStorage& storage, int dimension) {
+  if (dimension != 2 && dimension != 3) throw std::logic_error("a trajectory has dimension 2 or 3");
   if (storage.particles_per_chunk < 1 || storage.deflate_level < 0 || storage.deflate_level > 9)
     throw std::logic_error("dump storage: particles_per_chunk >= 1 and deflate_level 0-9 required");
   if (!overwrite && std::filesystem::exists(path))
@@ -121,6 +122,7 @@ H5mdWriter H5mdWriter::create(const std::string& path, const RunParameters& para
   w.lock_ = WriterLock::take(path);
   w.n_ = params.N;
   w.box_ = params.L;
+  w.dimension_ = dimension;
   w.layout_ = model->layout;
   RunParameters p = params;
   p.schema_version = model->schema_version;
@@ -135,11 +137,11 @@ void H5mdWriter::create_objects(const RunParameters& params, const DumpStorage& 
   const hid_t f = file_.id();
   const schema::Profile& profile = schema::h5md_profile();
   for (const schema::GroupSpec& g : profile.groups) h5::create_group(f, std::string(g.path));
-  write_metadata(f);
+  write_metadata(f, dimension_);
   h5::Handle par = h5::open_group(f, std::string(kParameters));
   write_parameters(par.id(), params);
   for (const schema::ElementSpec& e : profile.elements)
-    if (in_layout(e, layout_)) create_element(f, e, static_cast<hsize_t>(n_), storage);
+    if (in_layout(e, layout_)) create_element(f, e, static_cast<hsize_t>(n_), dimension_, storage);
   for (const schema::DatasetSpec& d : profile.datasets)
     h5::create_series(f, std::string(d.path), h5_type(d.type), {}, kObservableChunk);
   flush_file();
@@ -169,6 +171,7 @@ H5mdWriter H5mdWriter::reopen(const std::string& path, const std::string* new_sc
   const RunParameters p = read_file_parameters(f, path);
   w.n_ = p.N;
   w.box_ = p.L;
+  w.dimension_ = dimension_of(f);
   w.layout_ = layout_of(f);
   w.writing([&] {
     // A writer killed while it wrote a frame leaves chunks past the recorded
@@ -286,10 +289,10 @@ void H5mdWriter::write_pending() {
 }
 
 void H5mdWriter::write_frame(const FrameView& fr) {
-  const double edges[9] = {box_, 0, 0, 0, box_, 0, 0, 0, box_};
-  append(kBoxEdges, fr.collisions, fr.time, h5::Type::kFloat64, edges);
+  const double cube[9] = {box_, 0, 0, 0, box_, 0, 0, 0, box_}, square[4] = {box_, 0, 0, box_};
+  append(kBoxEdges, fr.collisions, fr.time, h5::Type::kFloat64, dimension_ == 3 ? cube : square);
   append(kPosition, fr.collisions, fr.time, h5::Type::kFloat64, fr.position, fr.position_stride);
-  append(kImage, fr.collisions, fr.time, h5::Type::kInt32, fr.image);
+  append(kImage, fr.collisions, fr.time, h5::Type::kInt32, fr.image, dimension_ == 3 ? 0 : 3);
   append(kVelocity, fr.collisions, fr.time, h5::Type::kFloat64, fr.velocity, fr.velocity_stride);
   if (layout_ != Layout::kAggregation) return;
   if (!fr.id || !fr.mass || !fr.diameter) throw std::logic_error("aggregation frame without id, mass or diameter");

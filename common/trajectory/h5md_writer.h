@@ -41,15 +41,16 @@ struct ObservableRow {
   std::int64_t collisions = 0;
   std::int64_t below_delta = 0;
   double kinetic_energy = 0;  // per particle (aggregation: per initial particle)
-  std::array<double, 3> momentum{};
+  std::array<double, 3> momentum{};  // the first d components are written
   // aggregation only
   std::int64_t aggregates = 0;
   double mean_mass = 0, largest_mass = 0;
 };
 
 // One dump: N particles in particle-id order. Particle i's position is
-// position[i * position_stride + 0..2] (likewise velocity), so the records of
-// an engine can be written where they are, without a copy.
+// position[i * position_stride + 0..d-1] (likewise velocity; its image
+// image[3 i + 0..d-1]), so the records of an engine can be written where
+// they are, without a copy; a 2D file takes the first two components.
 struct FrameView {
   double time = 0;
   std::int64_t collisions = 0;
@@ -82,10 +83,11 @@ struct DumpStorage {
 
 class H5mdWriter {
  public:
-  // Creates a new file (fails if it exists unless overwrite). The schema and
-  // program versions of `params` are set here.
+  // Creates a new file (fails if it exists unless overwrite) for a run in
+  // `dimension` 3 or 2 (the box's `dimension`, and d components per vector).
+  // The schema and program versions of `params` are set here.
   static H5mdWriter create(const std::string& path, const RunParameters& params, bool overwrite,
-                           const DumpStorage& storage = {});
+                           const DumpStorage& storage = {}, int dimension = 3);
   // Opens an existing file to append after its last complete frame; rows
   // written after that frame (an interrupted burst) are dropped. InputError
   // if another process is writing it (writer_lock.h) or it is no coolgas
@@ -137,6 +139,7 @@ class H5mdWriter {
   h5::Handle file_;
   std::int64_t n_ = 0;
   double box_ = 0;
+  int dimension_ = 3;
   layout::Layout layout_ = layout::Layout::kGas;
   bool appending_ = false;  // SWMR writing started (or, for an old-format file, first row written)
   std::vector<ObservableRow> pending_;

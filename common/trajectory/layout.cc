@@ -25,6 +25,14 @@ std::optional<double> last_dump_time(hid_t file) {
   return h5::read_row<double>(t.id(), n - 1).at(0);
 }
 
+int dimension_of(hid_t file) {
+  const std::string box(kBox);
+  if (!h5::exists(file, box)) return 3;
+  h5::Handle g = h5::open_group(file, box);
+  if (!h5::has_attr(g.id(), "dimension") || h5::attr_class(g.id(), "dimension") != H5T_INTEGER) return 3;
+  return int(h5::read_attr_int(g.id(), "dimension"));
+}
+
 Layout layout_of(hid_t file) { return h5::exists(file, value_of(kId)) ? Layout::kAggregation : Layout::kGas; }
 
 bool is_coolgas(hid_t file) {

@@ -73,6 +73,11 @@ std::optional<double> last_dump_time(hid_t file);
 // an H5MD file of another program (h5md_frame.h reads those).
 bool is_coolgas(hid_t file);
 
+// The file's dimension: the H5MD box's `dimension` attribute (3 for spheres,
+// 2 for disks); 3 when it is absent or not an integer (the validator reports
+// such a file).
+int dimension_of(hid_t file);
+
 enum class Layout { kGas, kAggregation };
 
 // The one place that tells the layouts apart: a file is of the aggregation

@@ -4,6 +4,7 @@
 #include "common/hdf5_file.h"
 #include "common/memory.h"
 #include "common/trajectory/layout.h"
+#include "common/trajectory/widen_rows.h"
 
 namespace coolgas {
 namespace {
@@ -85,10 +86,16 @@ ResumeFrame read_resume_frame(const std::string& path) {
   r.collisions = in.counter(kRestartCollisions, last);
   r.below_delta = in.counter(kRestartBelowDelta, last);
   r.particles = static_cast<std::size_t>(r.params.N);
-  const auto n = static_cast<hsize_t>(r.particles);
-  r.position = in.row<double>(kPosition, last, {n, 3});
-  r.velocity = in.row<double>(kVelocity, last, {n, 3});
-  r.image = in.row<std::int32_t>(kImage, last, {n, 3});
+  r.dimension = dimension_of(f.id());
+  if (r.dimension != 2 && r.dimension != 3)
+    in.fail("box/dimension = " + std::to_string(r.dimension) + "; a run is in dimension 2 or 3");
+  const auto n = static_cast<hsize_t>(r.particles), d = static_cast<hsize_t>(r.dimension);
+  r.position = in.row<double>(kPosition, last, {n, d});
+  r.velocity = in.row<double>(kVelocity, last, {n, d});
+  r.image = in.row<std::int32_t>(kImage, last, {n, d});
+  widen_to_three(r.position, r.particles, d);
+  widen_to_three(r.velocity, r.particles, d);
+  widen_to_three(r.image, r.particles, d);
   if (r.aggregates) {
     r.id = in.row<std::int32_t>(kId, last, {n});
     r.mass = in.row<double>(kMass, last, {n});

@@ -16,6 +16,7 @@ struct ResumeFrame {
   double time = 0;
   std::int64_t collisions = 0, below_delta = 0;  // /restart counters at the dump
   std::size_t particles = 0;                     // N (slots, for aggregation files)
+  int dimension = 3;                             // box/dimension: 3, or 2 (disks, z = 0 below)
   std::vector<double> position, velocity;        // 3 per particle, in id order
   std::vector<std::int32_t> image;
   // aggregation layout only (empty otherwise): slot ids (-1 when absent), masses, diameters

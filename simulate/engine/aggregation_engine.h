@@ -1,7 +1,10 @@
 // Ballistic aggregation (the paper's BA): spheres move ballistically and two
 // aggregates that touch become one, at their centre of mass, with the summed
 // mass and volume (diameter (d1³ + d2³)^{1/3}) and the momentum-conserving
-// velocity. The new aggregate may overlap others: those merge too, at the
+// velocity. In 2D (disks in a periodic square, z and v_z exactly 0 as in
+// Engine<Rule, 2>) areas add: diameter (d1² + d2²)^{1/2}. The dimension is a
+// member, not a template parameter: this engine's cost is its searches over
+// aggregates of many sizes, not a hot loop a branch would slow. The new aggregate may overlap others: those merge too, at the
 // same instant, until no pair overlaps (chain aggregation), across periodic
 // images. Masses are in particle masses, diameters in particle diameters.
 //
@@ -61,7 +64,7 @@ struct AggregateState {
 struct AggregationScalars {
   double L, now, dmax, grid_request;  // grid_request: the widest aggregate a fine cell lists
   std::int64_t alive;
-  std::int32_t too_large, has_grid, block, unused = 0;
+  std::int32_t too_large, has_grid, block, planar = 0;  // planar: 1 for disks (2D); 0 in every 3D checkpoint
   EngineCounters counters;
 };
 
@@ -72,8 +75,10 @@ class AggregationEngine final : public EngineBase {
   // costs a search per aggregate, once per this factor of aggregates lost.
   static constexpr double kCellsPerAggregateLimit = 4.0;
 
-  // Aggregates as they are at time `now` (positions valid at now).
-  AggregationEngine(Particles particles, AggregateState aggregates, double now, const EngineCounters& counters = {});
+  // Aggregates as they are at time `now` (positions valid at now), in
+  // `dimension` 3 (spheres) or 2 (disks, z = 0).
+  AggregationEngine(Particles particles, AggregateState aggregates, double now, const EngineCounters& counters = {},
+                    int dimension = 3);
   // The engine whose exact state save() wrote.
   explicit AggregationEngine(const StateReader& state);
   // Not copyable: the calendar breaks ties by this engine's own id array.
@@ -100,6 +105,7 @@ class AggregationEngine final : public EngineBase {
   std::int64_t calendar_years() const { return calendar_.years(); }
 
   std::size_t aggregates() const { return alive_; }
+  int dimension() const { return dim_; }
   double largest_diameter() const { return dmax_; }
   double cell_width() const { return grid_ ? grid_->width() : 0.0; }
   std::size_t large_aggregates() const { return large_.size(); }
@@ -138,6 +144,7 @@ class AggregationEngine final : public EngineBase {
   Vec3 separation(int a, int b) const;  // r_b - r_a at now_, minimum image
 
   double L_;
+  int dim_ = 3;  // 3, or 2: one layer of cells, areas add in a merge
   std::vector<Motion> m_;
   std::vector<Image> image_;
   std::vector<double> mass_, diam_;

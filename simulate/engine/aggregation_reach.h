@@ -34,16 +34,17 @@ inline AxisStep axis_step(int c, int o, int n, double L) {
 }
 
 // Calls f(cell coordinates, wrapped; shift) for every offset in
-// [-reach, reach]³ around c of a grid of n³ cells in a box of side L
-// (z slowest, x fastest).
+// [-reach, reach]² x [-reach_z, reach_z] around c of a grid of n³ cells in a
+// box of side L (z slowest, x fastest); reach_z = 0 on the one layer of a 2D
+// grid.
 template <class F>
-void for_each_cell_within(int n, double L, const CellCoord& c, int reach, F&& f) {
+void for_each_cell_within(int n, double L, const CellCoord& c, int reach, int reach_z, F&& f) {
   std::vector<AxisStep> x(std::size_t(2 * reach + 1)), y(x.size());
   for (int o = -reach; o <= reach; ++o) {
     x[std::size_t(o + reach)] = axis_step(c.x, o, n, L);
     y[std::size_t(o + reach)] = axis_step(c.y, o, n, L);
   }
-  for (int oz = -reach; oz <= reach; ++oz) {
+  for (int oz = -reach_z; oz <= reach_z; ++oz) {
     const AxisStep z = axis_step(c.z, oz, n, L);
     for (const AxisStep& sy : y)
       for (const AxisStep& sx : x) f(CellCoord{sx.cell, sy.cell, z.cell}, Vec3{sx.shift, sy.shift, z.shift});

@@ -1,14 +1,15 @@
 // The cell grid: the periodic box cut into ncell³ cubic cells at least one
-// diameter wide, each holding a doubly linked list of the particles whose
-// centres it contains. Two spheres can only touch if their cells are
-// neighbours (the 27 cells around, periodic), so collision searches look only
-// there. A particle's cell is logical: it changes only at a cell-crossing
+// diameter wide (ncell² square ones for disks in 2D: one layer, z = 0), each
+// holding a doubly linked list of the particles whose centres it contains.
+// Two spheres can only touch if their cells are neighbours (the 27 cells
+// around, periodic; 9 in 2D), so collision searches look only there. A particle's cell is logical: it changes only at a cell-crossing
 // event, never by reading the position, so round-off cannot lose a particle.
 // The forward links of the lists may live inside the caller's particle
 // records (bind_next_links), so that walking a cell touches one cache line
 // per particle. The list heads are stored in blocks of 4 x 2 x 2 cells, one
 // cache line each (slot()): the 27 cells around one then span 6 lines on
-// average instead of 9 rows of 3, and the 9 beyond a face 3.3 instead of 5.3.
+// average instead of 9 rows of 3, and the 9 beyond a face 3.3 instead of 5.3
+// (in 2D, blocks of 4 x 4 cells).
 // Cells keep their plain index (z n + y) n + x everywhere else, checkpoints
 // included.
 #pragma once
@@ -27,13 +28,15 @@ struct CellCoord {
 
 class CellGrid {
  public:
-  // Cells of side >= min_width (the largest diameter) in a box of side L, for n particles.
-  CellGrid(double L, double min_width, std::size_t n);
+  // Cells of side >= min_width (the largest diameter) in a box of side L, for
+  // n particles, in `dimension` 3 (a cube) or 2 (a square: one layer of cells).
+  CellGrid(double L, double min_width, std::size_t n, int dimension = 3);
   CellGrid() = default;  // no cells: a placeholder to assign to, or to free a grid
 
   int cells_per_side() const { return n_; }
+  int layers() const { return layers_; }  // cells along z: n in 3D, 1 in 2D
   double width() const { return w_; }
-  std::int64_t cell_count() const { return std::int64_t(n_) * n_ * n_; }
+  std::int64_t cell_count() const { return std::int64_t(n_) * n_ * layers_; }
 
   int index(const CellCoord& c) const { return (c.z * n_ + c.y) * n_ + c.x; }
   // Integer division by n done in floating point (a multiplication, not an
@@ -81,10 +84,11 @@ class CellGrid {
   // The cells a grid of side L with cells >= min_width wide has (0 if the box
   // is too small): what a checkpoint's heads must number, known before the
   // grid is allocated.
-  static std::int64_t cells_for(double L, double min_width);
+  static std::int64_t cells_for(double L, double min_width, int dimension = 3);
 
  private:
   int n_ = 0;
+  int layers_ = 0;
   double w_ = 0;
   double inv_n_ = 0;  // 1 / n_
   std::vector<std::int32_t> head_;  // first particle of each cell, -1 if empty, at slot(cell)
@@ -138,16 +142,19 @@ void for_each_neighbour_cell(int n, double L, const CellCoord& c, F&& f) {
   for_each_neighbour_cell(n, L, c, kLo, kHi, f);
 }
 
-// The same walk, specialised for the engine's partner search: writes the
+// The same walk, specialised for the engine's partner search in dimension D
+// (in 2D the offsets along z are 0 and the one layer never wraps): writes the
 // cells' head slots (CellGrid::slot) to `slots` and returns how many. An
 // interior cell (~90 % of them) needs no shifts, and `shifts` is left
 // untouched (wraps = false); otherwise shifts[k] holds the shift of the k-th
 // cell (wraps = true).
-inline int neighbour_slots(const CellGrid& grid, double L, const CellCoord& c, const int* lo, const int* hi,
-                           int* slots, double (*shifts)[3], bool& wraps) {
+template <int D>
+int neighbour_slots(const CellGrid& grid, double L, const CellCoord& c, const int* lo, const int* hi, int* slots,
+                    double (*shifts)[3], bool& wraps) {
   const int n = grid.cells_per_side();
   int k = 0;
-  wraps = !(c.x > 0 && c.y > 0 && c.z > 0 && c.x < n - 1 && c.y < n - 1 && c.z < n - 1);
+  if constexpr (D == 3) wraps = !(c.x > 0 && c.y > 0 && c.z > 0 && c.x < n - 1 && c.y < n - 1 && c.z < n - 1);
+  else wraps = !(c.x > 0 && c.y > 0 && c.x < n - 1 && c.y < n - 1);
   if (!wraps) {
     for (int oz = lo[2]; oz <= hi[2]; ++oz)
       for (int oy = lo[1]; oy <= hi[1]; ++oy)

@@ -13,8 +13,12 @@
 namespace coolgas {
 
 namespace {
-// Offsets -1..1 along each axis: all 27 cells around.
-constexpr int kAroundLo[3] = {-1, -1, -1}, kAroundHi[3] = {1, 1, 1};
+// Offsets -1..1 along each axis of D: all 27 cells around (9 in 2D, whose
+// one layer has z offset 0).
+template <int D>
+constexpr int kAroundLo[3] = {-1, -1, D == 3 ? -1 : 0};
+template <int D>
+constexpr int kAroundHi[3] = {1, 1, D == 3 ? 1 : 0};
 // Inelastic collapse shows as one particle colliding again and again while
 // simulated time stops advancing: rule.collapse_limit() collisions in a row,
 // each less than kStallGap (relative to 1 + t) after the particle's previous
@@ -42,13 +46,16 @@ constexpr std::int64_t kCollisionsPerParticlePerRebuild = 200;
 // on average, as in the aggregation engine), which was the fastest width
 // tried (tests/bench/history.md, "Constants chosen by measurement"). Denser
 // gases keep one-diameter cells, and with them their runs bit for bit.
+// In 2D the same rule, with the box's area: disks below phi = 0.049.
 constexpr double kDiluteCellsPerParticle = 16;
 
+template <int D>
 double cell_width(double L, std::size_t n) {
-  const double volume = L * L * L, particles = double(std::max<std::size_t>(n, 1));
+  const double volume = D == 3 ? L * L * L : L * L, particles = double(std::max<std::size_t>(n, 1));
   if (volume <= kDiluteCellsPerParticle * particles) return 1.0;
   const double most = L / 3.0 / (1.0 + 1e-6);  // three cells per side, with CellGrid's margin
-  return std::max(1.0, std::min(std::cbrt(volume / particles), most));
+  const double spacing = D == 3 ? std::cbrt(volume / particles) : std::sqrt(volume / particles);
+  return std::max(1.0, std::min(spacing, most));
 }
 
 std::int64_t collisions_between_rebuilds(std::size_t n) {
@@ -59,11 +66,11 @@ std::int64_t collisions_between_rebuilds(std::size_t n) {
 }
 }  // namespace
 
-template <class Rule>
-Engine<Rule>::Engine(Particles particles, const Rule& rule, double now, const EngineCounters& counters)
+template <class Rule, int D>
+Engine<Rule, D>::Engine(Particles particles, const Rule& rule, double now, const EngineCounters& counters)
     : L_(particles.L),
       rule_(rule),
-      grid_(particles.L, cell_width(particles.L, particles.size()), particles.size()),
+      grid_(particles.L, cell_width<D>(particles.L, particles.size()), particles.size(), D),
       now_(now),
       c_(counters) {
   const std::size_t n = particles.size();
@@ -82,8 +89,8 @@ Engine<Rule>::Engine(Particles particles, const Rule& rule, double now, const En
   watch_ = {c_.events, now_};
 }
 
-template <class Rule>
-Engine<Rule>::Engine(const Rule& rule, const StateReader& in) : rule_(rule) {
+template <class Rule, int D>
+Engine<Rule, D>::Engine(const Rule& rule, const StateReader& in) : rule_(rule) {
   const auto s = in.get_value<EngineScalars>("engine/scalars");
   L_ = s.L;
   now_ = s.now;
@@ -100,8 +107,8 @@ Engine<Rule>::Engine(const Rule& rule, const StateReader& in) : rule_(rule) {
       stall_.size() != (Rule::kDissipative ? n : 0))
     in.fail("the engine's arrays differ in length");
   check_records(in);
-  check_grid_size(in, "engine/grid/heads", CellGrid::cells_for(L_, cell_width(L_, n)));
-  grid_ = CellGrid(L_, cell_width(L_, n), n);
+  check_grid_size(in, "engine/grid/heads", CellGrid::cells_for(L_, cell_width<D>(L_, n), D));
+  grid_ = CellGrid(L_, cell_width<D>(L_, n), n, D);
   grid_.bind_next_links(&m_[0].next, sizeof(Motion) / sizeof(std::int32_t));
   grid_.load(in, "engine/grid/");
   for (std::size_t i = 0; i < n; ++i) {
@@ -124,8 +131,8 @@ Engine<Rule>::Engine(const Rule& rule, const StateReader& in) : rule_(rule) {
 // The per-particle arrays of a checkpoint: finite records, ids a
 // permutation, kept events well formed (the lists and the calendar check
 // themselves as they load).
-template <class Rule>
-void Engine<Rule>::check_records(const StateReader& in) const {
+template <class Rule, int D>
+void Engine<Rule, D>::check_records(const StateReader& in) const {
   const std::size_t n = m_.size();
   std::vector<bool> seen(n, false);
   for (std::size_t i = 0; i < n; ++i) {
@@ -140,8 +147,8 @@ void Engine<Rule>::check_records(const StateReader& in) const {
   }
 }
 
-template <class Rule>
-void Engine<Rule>::save(StateWriter& out) const {
+template <class Rule, int D>
+void Engine<Rule, D>::save(StateWriter& out) const {
   out.put_value("engine/scalars", EngineScalars{L_, now_, next_rebuild_, c_});
   out.put("engine/motion", m_);
   out.put("engine/image", image_);
@@ -154,15 +161,15 @@ void Engine<Rule>::save(StateWriter& out) const {
 }
 
 // slot_of_id()[id] = the internal index of particle id.
-template <class Rule>
-std::vector<std::int32_t> Engine<Rule>::slot_of_id() const {
+template <class Rule, int D>
+std::vector<std::int32_t> Engine<Rule, D>::slot_of_id() const {
   std::vector<std::int32_t> slot(m_.size());
   for (std::size_t i = 0; i < m_.size(); ++i) slot[static_cast<std::size_t>(id_[i])] = std::int32_t(i);
   return slot;
 }
 
-template <class Rule>
-Observables Engine<Rule>::observables() const {
+template <class Rule, int D>
+Observables Engine<Rule, D>::observables() const {
   CompensatedSum energy, p[3];
   for (const std::int32_t i : slot_of_id()) {
     const Vec3& v = m_[std::size_t(i)].v;
@@ -175,8 +182,8 @@ Observables Engine<Rule>::observables() const {
   return o;
 }
 
-template <class Rule>
-EngineFrame Engine<Rule>::frame() const {
+template <class Rule, int D>
+EngineFrame Engine<Rule, D>::frame() const {
   EngineFrame f(now_, c_);
   const std::size_t n = m_.size();
   f.position.resize(n);
@@ -192,8 +199,8 @@ EngineFrame Engine<Rule>::frame() const {
   return f;
 }
 
-template <class Rule>
-void Engine<Rule>::advance(int i) {
+template <class Rule, int D>
+void Engine<Rule, D>::advance(int i) {
   Motion& m = m_[i];
   m.r = position_at(m, now_);
   m.t = now_;
@@ -201,8 +208,8 @@ void Engine<Rule>::advance(int i) {
 
 // Every particle to now_, wrapped, counts reset, in id order: the state a
 // rebuild starts from.
-template <class Rule>
-void Engine<Rule>::move_all_to_now() {
+template <class Rule, int D>
+void Engine<Rule, D>::move_all_to_now() {
   for (std::size_t i = 0; i < m_.size(); ++i) {
     advance(int(i));
     wrap_into_box(m_[i].r, image_[i], L_);
@@ -211,8 +218,8 @@ void Engine<Rule>::move_all_to_now() {
   order_by_id();
 }
 
-template <class Rule>
-std::vector<Vec3> Engine<Rule>::release_positions() {
+template <class Rule, int D>
+std::vector<Vec3> Engine<Rule, D>::release_positions() {
   move_all_to_now();
   calendar_ = EventCalendar();
   grid_ = CellGrid();
@@ -230,8 +237,8 @@ std::vector<Vec3> Engine<Rule>::release_positions() {
 // so the order depends on the positions alone). Key and index share one
 // 64-bit word, so the sort holds 8 bytes per particle, not 16: the curve
 // runs through blocks of cells when the grid has more than 2^10 per side.
-template <class Rule>
-void Engine<Rule>::order_by_space() {
+template <class Rule, int D>
+void Engine<Rule, D>::order_by_space() {
   int coarse = 0;
   while ((grid_.cells_per_side() - 1) >> coarse >= 1 << 10) ++coarse;
   std::vector<std::uint64_t> keys(m_.size());
@@ -250,8 +257,8 @@ void Engine<Rule>::order_by_space() {
   apply_permutation(id_, order);
 }
 
-template <class Rule>
-void Engine<Rule>::order_by_id() {
+template <class Rule, int D>
+void Engine<Rule, D>::order_by_id() {
   std::vector<std::int32_t> order(m_.size());  // order[id] = where particle id is now
   for (std::size_t i = 0; i < m_.size(); ++i) order[static_cast<std::size_t>(id_[i])] = std::int32_t(i);
   apply_permutation(m_, order);
@@ -260,8 +267,8 @@ void Engine<Rule>::order_by_id() {
 }
 
 // Everything but the particles, rebuilt from the particles (at now_).
-template <class Rule>
-void Engine<Rule>::rebuild() {
+template <class Rule, int D>
+void Engine<Rule, D>::rebuild() {
   order_by_space();
   grid_.clear();
   for (std::size_t i = 0; i < m_.size(); ++i) grid_.insert(int(i), grid_.cell_of(m_[i].r.x, m_[i].r.y, m_[i].r.z));
@@ -274,15 +281,15 @@ void Engine<Rule>::rebuild() {
 // The periodic shift that brings a particle of cell `to` next to one in cell
 // `from` (the cells are neighbours, so each coordinate differs by -1, 0 or 1
 // modulo the grid).
-template <class Rule>
-Vec3 Engine<Rule>::image_shift(int from, int to) const {
+template <class Rule, int D>
+Vec3 Engine<Rule, D>::image_shift(int from, int to) const {
   const CellCoord a = grid_.coord(from), b = grid_.coord(to);
   auto shift = [&](int ca, int cb) { return cb - ca > 1 ? -L_ : (ca - cb > 1 ? L_ : 0.0); };
   return {shift(a.x, b.x), shift(a.y, b.y), shift(a.z, b.z)};
 }
 
-template <class Rule>
-void Engine<Rule>::scan_list(const Vec3& ri, const Vec3& vi, int first, const double* s, double& best,
+template <class Rule, int D>
+void Engine<Rule, D>::scan_list(const Vec3& ri, const Vec3& vi, int first, const double* s, double& best,
                              int& code) const {
   double b = best;  // locals, not the references, so they can stay in registers
   int c = code;
@@ -306,10 +313,10 @@ void Engine<Rule>::scan_list(const Vec3& ri, const Vec3& vi, int first, const do
 // together and the first particle of each prefetched, so that the misses
 // overlap instead of following one another (the search is bound by memory
 // latency). Two searches started one after the other overlap too.
-template <class Rule>
-void Engine<Rule>::start_search(int home, const int* lo, const int* hi, Search& s) const {
+template <class Rule, int D>
+void Engine<Rule, D>::start_search(int home, const int* lo, const int* hi, Search& s) const {
   int slots[27];
-  const int count = neighbour_slots(grid_, L_, grid_.coord(home), lo, hi, slots, s.shifts, s.wraps);
+  const int count = neighbour_slots<D>(grid_, L_, grid_.coord(home), lo, hi, slots, s.shifts, s.wraps);
   s.n = 0;
   for (int k = 0; k < count; ++k) {
     s.heads[s.n] = grid_.first_in_slot(slots[k]);
@@ -322,8 +329,8 @@ void Engine<Rule>::start_search(int home, const int* lo, const int* hi, Search& 
 // The second half: the earliest contact (at now_, at ri with vi) with the
 // particles of the search's cells, if earlier than best (relative to now_);
 // updates best and partner.
-template <class Rule>
-void Engine<Rule>::finish_search(const Vec3& ri, const Vec3& vi, const Search& s, double& best, int& partner) const {
+template <class Rule, int D>
+void Engine<Rule, D>::finish_search(const Vec3& ri, const Vec3& vi, const Search& s, double& best, int& partner) const {
   static constexpr double kNoShift[3] = {0, 0, 0};
   for (int k = 0; k < s.n; ++k) scan_list(ri, vi, s.heads[k], s.wraps ? s.shifts[s.which[k]] : kNoShift, best, partner);
 }
@@ -331,8 +338,8 @@ void Engine<Rule>::finish_search(const Vec3& ri, const Vec3& vi, const Search& s
 // The event of particle i (at now_ at ri with vi) given its earliest
 // collision: that collision, or its first cell crossing if that comes first
 // (ties go to the crossing); the collision is then kept in later_.
-template <class Rule>
-Event Engine<Rule>::earliest(int i, const Vec3& ri, const Vec3& vi, const Event& collision) {
+template <class Rule, int D>
+Event Engine<Rule, D>::earliest(int i, const Vec3& ri, const Vec3& vi, const Event& collision) {
   const CellExit exit = first_cell_exit(grid_, grid_.cell(i), ri, vi);
   if (collision.time < now_ + exit.time) return collision;
   later_[i] = collision;
@@ -341,16 +348,16 @@ Event Engine<Rule>::earliest(int i, const Vec3& ri, const Vec3& vi, const Event&
 
 // Particle i is at now_; finds its earliest event: the first face of its cell
 // it will cross, or an earlier contact with a particle in the 27 cells around.
-template <class Rule>
-Event Engine<Rule>::find_event(int i) {
+template <class Rule, int D>
+Event Engine<Rule, D>::find_event(int i) {
   Search s;
-  start_search(grid_.cell(i), kAroundLo, kAroundHi, s);
+  start_search(grid_.cell(i), kAroundLo<D>, kAroundHi<D>, s);
   return finish_event(i, s);
 }
 
 // find_event() once the search of the 27 cells around i has been started.
-template <class Rule>
-Event Engine<Rule>::finish_event(int i, const Search& s) {
+template <class Rule, int D>
+Event Engine<Rule, D>::finish_event(int i, const Search& s) {
   const Vec3 ri = m_[i].r, vi = m_[i].v;
   double best = kNever;
   int partner = -1;
@@ -363,17 +370,17 @@ Event Engine<Rule>::finish_event(int i, const Search& s) {
 // unchanged; returns its next event. Its kept collision is still the
 // earliest with the particles that were its neighbours if that partner has
 // not collided since (any other that has collided has searched again itself,
-// and found i if due); only the layer of 9 cells beyond the new cell has to
+// and found i if due); only the layer of 9 cells (3 in 2D) beyond the new cell has to
 // be searched. That search is started first, so its loads are in flight
 // while the grid is updated and the partner checked.
-template <class Rule>
-Event Engine<Rule>::cross(int i, int face) {
+template <class Rule, int D>
+Event Engine<Rule, D>::cross(int i, int face) {
   const Event kept = later_[i];
   if (kept.is_collision()) __builtin_prefetch(&m_[kept.partner()]);
   advance(i);
   const int to = cell_across_face(grid_, grid_.cell(i), face, L_, m_[i].r, image_[i]);
   const int d = face / 2, side = face % 2 == 1 ? 1 : -1;
-  int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
+  int lo[3] = {-1, -1, kAroundLo<D>[2]}, hi[3] = {1, 1, kAroundHi<D>[2]};
   lo[d] = hi[d] = side;
   Search s;
   start_search(to, lo, hi, s);
@@ -387,8 +394,8 @@ Event Engine<Rule>::cross(int i, int face) {
   return earliest(i, ri, vi, Event::collision(now_ + best, partner, m_[partner].count));
 }
 
-template <class Rule>
-void Engine<Rule>::note_collision_gap(int i, double gap, int partner) {
+template <class Rule, int D>
+void Engine<Rule, D>::note_collision_gap(int i, double gap, int partner) {
   if constexpr (Rule::kDissipative) {  // elastic spheres cannot collapse
     if (gap > kStallGap * (1.0 + now_)) {
       stall_[i] = 0;
@@ -407,8 +414,8 @@ void Engine<Rule>::note_collision_gap(int i, double gap, int partner) {
 // inelastic collapse. The window starts where the last one ended, at an
 // event count, whatever the slicing of run_until, and is saved with the
 // engine: a resumed run stops where the whole one does.
-template <class Rule>
-void Engine<Rule>::watch_time() {
+template <class Rule, int D>
+void Engine<Rule, D>::watch_time() {
   if constexpr (Rule::kDissipative) {
     const std::int64_t events = c_.events - watch_.events;
     if (events < kTimeWatchEvents) return;
@@ -422,8 +429,8 @@ void Engine<Rule>::watch_time() {
   }
 }
 
-template <class Rule>
-void Engine<Rule>::collide(int i, int j) {
+template <class Rule, int D>
+void Engine<Rule, D>::collide(int i, int j) {
   note_collision_gap(i, now_ - m_[i].t, j);
   note_collision_gap(j, now_ - m_[j].t, i);
   advance(i);
@@ -449,8 +456,8 @@ void Engine<Rule>::collide(int i, int j) {
   if (log_) log_->push_back({std::min(id_[i], id_[j]), std::max(id_[i], id_[j]), now_});
 }
 
-template <class Rule>
-RunStatus Engine<Rule>::run_until(double t_stop, std::int64_t max_events, const volatile std::sig_atomic_t* interrupt) {
+template <class Rule, int D>
+RunStatus Engine<Rule, D>::run_until(double t_stop, std::int64_t max_events, const volatile std::sig_atomic_t* interrupt) {
   const std::int64_t last_event = c_.events + max_events;
   while (true) {
     if (RunStatus paused; pause_due(c_.events, last_event, interrupt, paused, [this] { watch_time(); }))
@@ -493,8 +500,8 @@ RunStatus Engine<Rule>::run_until(double t_stop, std::int64_t max_events, const 
       // event's bucket head while the other event is found.
       calendar_.prefetch_unlink(code);
       Search si, sj;
-      start_search(grid_.cell(i), kAroundLo, kAroundHi, si);
-      start_search(grid_.cell(code), kAroundLo, kAroundHi, sj);
+      start_search(grid_.cell(i), kAroundLo<D>, kAroundHi<D>, si);
+      start_search(grid_.cell(code), kAroundLo<D>, kAroundHi<D>, sj);
       collide(i, code);
       const Event ei = finish_event(i, si);
       calendar_.prefetch_insert(ei.time);
@@ -519,5 +526,8 @@ RunStatus Engine<Rule>::run_until(double t_stop, std::int64_t max_events, const 
 template class Engine<ElasticRule>;
 template class Engine<ConstantRestitutionRule>;
 template class Engine<ViscoelasticRule>;
+template class Engine<ElasticRule, 2>;
+template class Engine<ConstantRestitutionRule, 2>;
+template class Engine<ViscoelasticRule, 2>;
 
 }  // namespace coolgas

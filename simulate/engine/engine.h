@@ -24,7 +24,14 @@
 //     neighbours in space are neighbours in memory. Measured in
 //     tests/bench/engine_bench.cc.
 //   - the collision rule is a template parameter (collision_rules.h), so the
-//     hot loop of an elastic scene contains no inelastic code.
+//     hot loop of an elastic scene contains no inelastic code;
+//   - so is the dimension D: 3 (spheres in a periodic cube) or 2 (disks in a
+//     periodic square). A 2D particle keeps the same record, with z and v_z
+//     exactly 0 forever (every z term of a prediction or a collision is then
+//     an exact 0); the grid is one layer of cells and a search walks the 9
+//     cells around instead of 27. The record is one cache line either way, so
+//     dropping z would save no memory traffic, and the 3D engine's code is
+//     the same as before D existed.
 //
 // The runner sees the engine through EngineBase (engine_base.h);
 // make_engine() picks the instantiation once, at start-up.
@@ -71,12 +78,15 @@ struct TimeWatch {
   double time;
 };
 
-template <class Rule>
+template <class Rule, int D = 3>
 class Engine final : public EngineBase {
+  static_assert(D == 2 || D == 3, "the engine simulates disks (D = 2) or spheres (D = 3)");
+
  public:
   // Particles are taken as they are at time `now` (positions valid at now).
   Engine(Particles particles, const Rule& rule, double now, const EngineCounters& counters = {});
-  // The engine whose exact state save() wrote (the rule itself is not saved).
+  // The engine whose exact state save() wrote (the rule itself is not saved;
+  // nor is D: a state of the other dimension is refused, its grid mismatching).
   Engine(const Rule& rule, const StateReader& state);
 
   RunStatus run_until(double t_stop, std::int64_t max_events, const volatile std::sig_atomic_t* interrupt) override;

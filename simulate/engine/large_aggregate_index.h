@@ -27,9 +27,15 @@ namespace coolgas {
 class LargeAggregateIndex {
  public:
   LargeAggregateIndex() = default;
-  // For a fine grid of n_fine³ cells (a multiple of block per side) and n aggregate slots.
-  LargeAggregateIndex(int n_fine, int block, std::size_t n)
-      : block_(block), n_(n_fine / block), inv_fine_(1.0 / n_fine), fine_(n, -1), class_(n, -1) {}
+  // For a fine grid of n_fine³ cells (a multiple of block per side; in 2D
+  // n_fine² cells, one layer) and n aggregate slots.
+  LargeAggregateIndex(int n_fine, int block, std::size_t n, int dimension = 3)
+      : block_(block),
+        n_(n_fine / block),
+        layers_(dimension == 3 ? n_ : 1),
+        inv_fine_(1.0 / n_fine),
+        fine_(n, -1),
+        class_(n, -1) {}
 
   // The forward links live at base[i * stride] (one per slot, unused by the fine grid for these).
   void bind_links(std::int32_t* base, std::size_t stride) {
@@ -49,7 +55,7 @@ class LargeAggregateIndex {
     class_[std::size_t(i)] = size_class;
     if (size_class >= classes()) levels_.resize(std::size_t(size_class) + 1);
     auto& level = levels_[std::size_t(size_class)];
-    if (level.empty()) level.assign(std::size_t(n_) * std::size_t(n_) * std::size_t(n_), -1);
+    if (level.empty()) level.assign(std::size_t(n_) * std::size_t(n_) * std::size_t(layers_), -1);
     std::int32_t* at = &level[coarse_of(fine)];  // the link that will point to i
     while (*at >= 0 && *at < i) at = &link(*at);
     link(i) = *at;
@@ -86,6 +92,7 @@ class LargeAggregateIndex {
       lo[d] = floor_div(cc[d] - reach, block_);
       count[d] = std::min(floor_div(cc[d] + reach, block_) - lo[d] + 1, n_);
     }
+    if (layers_ == 1) lo[2] = 0, count[2] = 1;  // 2D: the one layer
     for (int z = 0; z < count[2]; ++z) {
       const std::size_t cz = std::size_t(wrap(lo[2] + z));
       for (int y = 0; y < count[1]; ++y) {
@@ -120,7 +127,7 @@ class LargeAggregateIndex {
     return (std::size_t(c.z) * std::size_t(n_) + std::size_t(c.y)) * std::size_t(n_) + std::size_t(c.x);
   }
 
-  int block_ = 1, n_ = 1;
+  int block_ = 1, n_ = 1, layers_ = 1;  // layers_: coarse cells along z (n_, or 1 in 2D)
   double inv_fine_ = 1;
   std::size_t count_ = 0;
   std::vector<std::int32_t> fine_, class_;  // each slot's fine cell and class, -1 if not listed

@@ -13,25 +13,32 @@ ElasticRule elastic_rule(const Scene&) { return {}; }
 ConstantRestitutionRule inelastic_rule(const Scene& s) { return {s.r0, s.delta}; }
 ViscoelasticRule viscoelastic_rule(const Scene& s) { return {s.viscoelastic_b, s.delta}; }
 
-// The engine of a collision rule (simulate/engine/collision_rules.h): the
-// hot loop is compiled for exactly that rule.
+// The engine of a collision rule (simulate/engine/collision_rules.h) in the
+// scene's dimension: the hot loop is compiled for exactly that rule and D.
 template <class Rule, Rule (*rule_of)(const Scene&)>
 std::unique_ptr<EngineBase> make_rule_engine(const Scene& s, Particles p, double now, const EngineCounters& c,
                                              const AggregateState*) {
+  if (s.dimension == 2) return std::make_unique<Engine<Rule, 2>>(std::move(p), rule_of(s), now, c);
   return std::make_unique<Engine<Rule>>(std::move(p), rule_of(s), now, c);
 }
 template <class Rule, Rule (*rule_of)(const Scene&)>
 std::unique_ptr<EngineBase> restore_rule_engine(const Scene& s, const StateReader& state) {
+  if (s.dimension == 2) return std::make_unique<Engine<Rule, 2>>(rule_of(s), state);
   return std::make_unique<Engine<Rule>>(rule_of(s), state);
 }
 
-std::unique_ptr<EngineBase> make_aggregation(const Scene&, Particles p, double now, const EngineCounters& c,
+std::unique_ptr<EngineBase> make_aggregation(const Scene& s, Particles p, double now, const EngineCounters& c,
                                              const AggregateState* aggregates) {
   AggregateState a = aggregates ? *aggregates : AggregateState::unit_spheres(p.size());
-  return std::make_unique<AggregationEngine>(std::move(p), std::move(a), now, c);
+  return std::make_unique<AggregationEngine>(std::move(p), std::move(a), now, c, s.dimension);
 }
-std::unique_ptr<EngineBase> restore_aggregation(const Scene&, const StateReader& state) {
-  return std::make_unique<AggregationEngine>(state);
+// The checkpoint says its dimension; a scene of the other one is refused.
+std::unique_ptr<EngineBase> restore_aggregation(const Scene& s, const StateReader& state) {
+  auto e = std::make_unique<AggregationEngine>(state);
+  if (e->dimension() != s.dimension)
+    state.fail("a " + std::to_string(e->dimension()) + "D aggregation state for a " + std::to_string(s.dimension) +
+               "D scene");
+  return e;
 }
 
 template <class Rule, Rule (*rule_of)(const Scene&)>

@@ -16,6 +16,7 @@
 #include "common/memory.h"
 #include "common/tsv.h"
 #include "simulate/engine/cell_grid.h"
+#include "simulate/run/box_geometry.h"
 
 namespace coolgas {
 
@@ -56,6 +57,14 @@ const SceneKey& key_row(const char* name);
 // Order matters: to_toml() writes the tables and keys in this order.
 const std::vector<SceneKey>& scene_keys() {
   static const std::vector<SceneKey> keys = {
+      // Written to TOML only when not 3, so that a 3D scene's text (and with
+      // it a 3D run's file) is what it was before the key existed.
+      {.key = "system.dimension", .type = KeyType::kInteger, .need = KeyNeed::kOptional,
+       .help = "2 (hard disks in a periodic square; phi is then the area fraction) or 3 (spheres in a periodic "
+               "cube); absent: 3",
+       .lo = 1, .hi = 3,
+       .set = [](Scene& s, const SceneValue& v) { s.dimension = int(std::get<std::int64_t>(v)); },
+       .toml = [](const Scene& s) { return s.dimension == 3 ? std::string() : std::to_string(s.dimension); }},
       {.key = "system.N", .type = KeyType::kInteger, .need = KeyNeed::kSize,
        .help = "number of particles; give two of N, L, phi", .lo = 2,
        .set = [](Scene& s, const SceneValue& v) { s.N = std::get<std::int64_t>(v); },
@@ -65,7 +74,8 @@ const std::vector<SceneKey>& scene_keys() {
        .set = [](Scene& s, const SceneValue& v) { s.L = std::get<double>(v); },
        .toml = [](const Scene& s) { return toml_float(s.L); }},
       {.key = "system.phi", .type = KeyType::kFloat, .need = KeyNeed::kSize,
-       .help = "volume fraction N*pi/(6 L^3); at most 0.36 for init = \"random\", 0.7404 for \"fcc\"",
+       .help = "volume fraction N*pi/(6 L^3) (2D: area fraction N*pi/(4 L^2)); at most 0.36 for init = \"random\" "
+               "(2D: 0.45), 0.7404 for \"fcc\"",
        .lo = 0, .hi = kMaxFccPhi, .lo_open = true,
        .set = [](Scene& s, const SceneValue& v) { s.phi = std::get<double>(v); },
        .toml = [](const Scene& s) { return toml_float(s.phi); }},
@@ -446,7 +456,7 @@ void check_scene_size(const Scene& s) {
 }
 
 void check_scene_cost(const Scene& s, double memory_bytes) {
-  const double n = double(s.N), cells = std::pow(std::floor(s.L), 3);
+  const double n = double(s.N), cells = std::pow(std::floor(s.L), s.dimension);
   const double bytes = n * kBytesPerParticle + cells * kBytesPerCell;
   if (n >= kMaxParticles)
     throw InputError("system.N = " + format_number(n) + " would need about " + bytes_text(n * kBytesPerParticle) +
@@ -527,24 +537,41 @@ void set_size(Scene& s, const KeyValues& kv, const std::set<std::string>& overri
   auto has = [&](const char* k) { return std::find(keys.begin(), keys.end(), k) != keys.end(); };
   const bool hasN = has("system.N"), hasL = has("system.L"), hasPhi = has("system.phi");
   if (!hasN) {
-    const double n = s.phi * 6.0 * s.L * s.L * s.L / M_PI;
+    const double n = particles_at(s.phi, s.L, s.dimension);
     if (!(n < kMaxParticles))
       throw InputError("system.phi = " + format_number(s.phi) + " in a box of side L = " + format_number(s.L) +
                        " means N = " + format_number(n) + " particles; the limit is N < 2^31 (32-bit ids)");
     s.N = std::llround(n);
   }
   if (s.N < 2) out_of_range("system.N", double(s.N), "need at least 2 particles");
-  if (!hasL) s.L = std::cbrt(double(s.N) * M_PI / (6.0 * s.phi));
-  const double phi_of = double(s.N) * M_PI / (6.0 * s.L * s.L * s.L);
+  if (!hasL) s.L = box_side_for(double(s.N), s.phi, s.dimension);
+  const double phi_of = covered_fraction(double(s.N), s.L, s.dimension);
   if (hasN && hasL && hasPhi && std::fabs(phi_of - s.phi) > 1e-9 * s.phi)
-    throw InputError("system.N, system.L and system.phi disagree: N pi/(6 L^3) = " + format_number(phi_of) +
+    throw InputError("system.N, system.L and system.phi disagree: " +
+                     std::string(s.dimension == 3 ? "N pi/(6 L^3)" : "N pi/(4 L^2)") + " = " + format_number(phi_of) +
                      " but phi = " + format_number(s.phi) + "; give only two of them");
   s.phi = phi_of;
   s.size_note = size_note(given, s, keys, kv, overridden);
 }
 
+// What 2D does not offer yet, each refused with its own line.
+void check_dimension(const Scene& s) {
+  if (s.dimension == 1)
+    throw InputError("system.dimension = 1 (hard rods on a ring) is not supported yet; use 2 (disks) or 3 (spheres)");
+  if (s.dimension == 3) return;
+  if (s.init == InitialPositions::kFcc)
+    throw InputError("system.init = \"fcc\" is a 3D lattice; in system.dimension = 2 use \"random\" (phi <= 0.45)");
+  if (s.init == InitialPositions::kFile)
+    throw InputError("system.init = \"file\" is not supported yet in system.dimension = 2; use \"random\"");
+  if (s.init == InitialPositions::kRandom && s.phi > kMaxRandomPhi2D)
+    out_of_range("system.phi", s.phi,
+                 "random sequential addition of disks (system.dimension = 2) reaches phi <= 0.45 here");
+}
+
 // Limits that involve more than one key.
 void check_relations(const Scene& s) {
+  check_dimension(s);
+  if (s.dimension == 2) return;
   if (s.init == InitialPositions::kRandom && s.phi > kMaxRandomPhi)
     out_of_range("system.phi", s.phi,
                  "random sequential addition reaches phi <= 0.36; use system.init = \"fcc\" (up to 0.74)");

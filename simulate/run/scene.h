@@ -22,9 +22,10 @@ enum class CollisionModel { kElastic, kInelastic, kViscoelastic, kAggregation };
 
 struct Scene {
   // system
+  int dimension = 3;  // 3: spheres in a periodic cube; 2: disks in a periodic square
   std::int64_t N = 0;
   double L = 0;    // box side, diameters
-  double phi = 0;  // volume fraction N π / (6 L³)
+  double phi = 0;  // volume fraction N π / (6 L³) (2D: area fraction N π / (4 L²); box_geometry.h)
   std::int64_t seed = 1;
   InitialPositions init = InitialPositions::kRandom;
   // Elastic dynamics run before t = 0 to turn the packing into an equilibrium
@@ -102,6 +103,9 @@ std::string scene_keys_help();
 // and 9 s at 0.37 on one core (tests/bench/rsa_bench.cc), against more than
 // 12 minutes (unfinished) for plain RSA. 0.36 leaves a margin for larger N.
 inline constexpr double kMaxRandomPhi = 0.36;
+// The same for disks (saturation at 0.547; Feder 1980), placed by plain
+// trials (simulate/start/rsa_disks.h), whose cost grows steeply towards it.
+inline constexpr double kMaxRandomPhi2D = 0.45;
 // FCC lattice with nearest neighbours at one diameter: π/(3√2).
 inline constexpr double kMaxFccPhi = 0.7404;
 

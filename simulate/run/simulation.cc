@@ -290,7 +290,7 @@ int drive(Driver& driver, const Scene& scene) {
 // start leaves nothing behind.
 H5mdWriter create_partial(const std::string& tmp, const Scene& scene) {
   try {
-    return H5mdWriter::create(tmp, parameters_of(scene), true);
+    return H5mdWriter::create(tmp, parameters_of(scene), true, {}, scene.dimension);
   } catch (...) {
     std::error_code ignored;
     std::filesystem::remove(tmp, ignored);

@@ -1,6 +1,8 @@
-// Equilibrium hard-sphere kinetic theory that fixes the time unit
-// (tests/physics/README.md): Enskog collision frequency with the Carnahan–Starling
-// contact value, ω = 4 n σ² g(σ) √(π T / m).
+// Equilibrium hard-sphere (hard-disk) kinetic theory that fixes the time unit
+// (tests/physics/README.md): the Enskog collision frequency in d dimensions,
+// ω = (2 π^((d−1)/2) / Γ(d/2)) n σ^(d−1) g(σ) √(T/m), that is
+// ω = 4 n σ² g(σ) √(π T / m) for spheres and ω = 2 n σ g(σ) √(π T / m) for
+// disks, with the contact value g(σ) of the dimension's equation of state.
 #pragma once
 #include <cmath>
 
@@ -9,10 +11,15 @@ namespace coolgas {
 // Carnahan–Starling pair correlation at contact, g(σ) = (1 − φ/2) / (1 − φ)³.
 inline double contact_value(double phi) { return (1.0 - 0.5 * phi) / std::pow(1.0 - phi, 3); }
 
-// The temperature at which ω = 1, i.e. the mean collision time is the time unit:
-// T0 = 1 / (π (4 n g(σ))²).
-inline double unit_time_temperature(double n, double phi) {
-  const double a = 4.0 * n * contact_value(phi);
+// Hard disks: Henderson's contact value g(σ) = (1 − 7φ/16) / (1 − φ)²
+// (D. Henderson, Mol. Phys. 30, 971 (1975)), φ the area fraction.
+inline double contact_value_2d(double phi) { return (1.0 - 7.0 * phi / 16.0) / ((1.0 - phi) * (1.0 - phi)); }
+
+// The temperature at which ω = 1, i.e. the mean collision time is the time
+// unit: T0 = 1 / (π (4 n g(σ))²) in 3D, 1 / (π (2 n g(σ))²) in 2D, with n the
+// number density (per volume, per area).
+inline double unit_time_temperature(double n, double phi, int dimension = 3) {
+  const double a = dimension == 3 ? 4.0 * n * contact_value(phi) : 2.0 * n * contact_value_2d(phi);
   return 1.0 / (M_PI * a * a);
 }
 

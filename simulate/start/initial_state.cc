@@ -11,6 +11,8 @@
 #include "simulate/engine/engine.h"
 #include "simulate/start/enskog.h"
 #include "common/random.h"
+#include "simulate/run/box_geometry.h"
+#include "simulate/start/rsa_disks.h"
 #include "simulate/start/rsa_voxels.h"
 
 namespace coolgas {
@@ -52,13 +54,16 @@ std::string percent(double part, double whole) {
 
 // With unit masses every product and quotient by a mass is exact, so the
 // velocities are those of the plain unit-sphere formula, bit for bit.
-void draw_velocities(Particles& p, double T0, Random& rng, const std::vector<double>* mass) {
+// The temperature is the kinetic energy over the dimension's D/2 per
+// particle, so in 2D the sum of squares is scaled to 2 N T0, not 3 N T0.
+void draw_velocities(Particles& p, double T0, Random& rng, const std::vector<double>* mass, int dimension) {
   const auto m = [&](std::size_t i) { return mass ? (*mass)[i] : 1.0; };
   Vec3 momentum;
   double total_mass = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     Vec3& v = p.v[i];
-    v = {rng.normal(), rng.normal(), rng.normal()};
+    if (dimension == 3) v = {rng.normal(), rng.normal(), rng.normal()};
+    else v = {rng.normal(), rng.normal(), 0.0};
     const double root = mass ? std::sqrt(m(i)) : 1.0;
     for (int d = 0; d < 3; ++d) {
       v[d] /= root;
@@ -72,23 +77,46 @@ void draw_velocities(Particles& p, double T0, Random& rng, const std::vector<dou
     for (int d = 0; d < 3; ++d) v[d] -= momentum[d] / total_mass;
     sum2 += m(i) * dot(v, v);
   }
-  const double scale = std::sqrt(T0 * 3.0 * double(p.size()) / sum2);
+  const double scale = std::sqrt(T0 * double(dimension) * double(p.size()) / sum2);
   for (auto& v : p.v)
     for (int d = 0; d < 3; ++d) v[d] *= scale;
 }
 
 constexpr std::int64_t kEquilibrationSlice = 1 << 18;  // events between progress updates
 
+namespace {
+
+// The positions after `duration` collision times of elastic dynamics in
+// dimension D. Only they are kept (velocities are drawn afresh), and only
+// they coexist with the engine: this is the set-up's memory peak.
+template <int D, class Say>
+std::vector<Vec3> equilibrated(Particles p, double duration, InterruptFlag interrupt, const Say& say) {
+  Engine<ElasticRule, D> melt(std::move(p), ElasticRule{}, 0.0);
+  // In slices, for the progress line (slicing a run changes nothing: the engine contract).
+  RunStatus status = RunStatus::kEventBudget;
+  while (status == RunStatus::kEventBudget) {
+    status = melt.run_until(duration, kEquilibrationSlice, interrupt);
+    if (status == RunStatus::kInterrupted) throw SetupInterrupted();
+    say("equilibrating: t = " + format_number(std::round(melt.now() * 100) / 100) + " / " + format_number(duration) +
+            " elastic collision times (" + percent(melt.now(), duration) + ")",
+        false);
+  }
+  return melt.release_positions();
+}
+
+}  // namespace
+
 double initial_temperature(const Scene& s) {
   if (s.T0 > 0) return s.T0;  // a start from a file (simulate/start/file_start.h)
-  return unit_time_temperature(double(s.N) / (s.L * s.L * s.L), s.phi);
+  return unit_time_temperature(double(s.N) / box_volume(s.L, s.dimension), s.phi, s.dimension);
 }
 
 Particles initial_state(const Scene& s, InterruptFlag interrupt, const SetupReport& report) {
   const auto say = [&](const std::string& line, bool phase) {
     if (report) report(line, phase);
   };
-  say("placing " + std::to_string(s.N) + (s.init == InitialPositions::kRandom ? " particles at random" : " particles on FCC"),
+  say("placing " + std::to_string(s.N) + (s.init == InitialPositions::kRandom ? " particles at random" : " particles on FCC") +
+          (s.dimension == 2 ? " in 2D" : ""),
       true);
   Particles p;
   p.L = s.L;
@@ -98,37 +126,24 @@ Particles initial_state(const Scene& s, InterruptFlag interrupt, const SetupRepo
   Random rng(std::uint64_t(s.seed));
   const auto placed = [&](std::int64_t n) {
     say("placing at random: " + std::to_string(n) + " of " + std::to_string(s.N) + " (" + percent(n, s.N) +
-            "), phi = " + four_digits(double(n) * M_PI / (6 * s.L * s.L * s.L)) + " of " + four_digits(s.phi),
+            "), phi = " + four_digits(covered_fraction(double(n), s.L, s.dimension)) + " of " + four_digits(s.phi),
         false);
   };
-  if (s.init == InitialPositions::kRandom) place_random_sequential(p, s.N, rng, interrupt, placed);
+  if (s.dimension == 2) place_random_disks(p, s.N, rng, interrupt, placed);  // the scene allows no other 2D start
+  else if (s.init == InitialPositions::kRandom) place_random_sequential(p, s.N, rng, interrupt, placed);
   else place_fcc(p, s.N, rng);
   p.resize(std::size_t(s.N));
   const double T0 = initial_temperature(s);
-  draw_velocities(p, T0, rng);
+  draw_velocities(p, T0, rng, nullptr, s.dimension);
   if (s.equilibrate > 0) {
-    // Only the relaxed positions are kept (velocities are drawn afresh), and
-    // only they coexist with the engine: this is the set-up's memory peak.
-    std::vector<Vec3> relaxed;
-    {
-      say("equilibrating: " + format_number(s.equilibrate) + " elastic collision times", true);
-      Engine<ElasticRule> melt(std::move(p), ElasticRule{}, 0.0);
-      // In slices, for the progress line (slicing a run changes nothing: the engine contract).
-      RunStatus status = RunStatus::kEventBudget;
-      while (status == RunStatus::kEventBudget) {
-        status = melt.run_until(s.equilibrate, kEquilibrationSlice, interrupt);
-        if (status == RunStatus::kInterrupted) throw SetupInterrupted();
-        say("equilibrating: t = " + format_number(std::round(melt.now() * 100) / 100) + " / " +
-                format_number(s.equilibrate) + " elastic collision times (" + percent(melt.now(), s.equilibrate) + ")",
-            false);
-      }
-      relaxed = melt.release_positions();
-    }
+    say("equilibrating: " + format_number(s.equilibrate) + " elastic collision times", true);
+    std::vector<Vec3> relaxed = s.dimension == 3 ? equilibrated<3>(std::move(p), s.equilibrate, interrupt, say)
+                                                 : equilibrated<2>(std::move(p), s.equilibrate, interrupt, say);
     p = Particles();
     p.L = s.L;
     p.resize(relaxed.size());
     p.r = std::move(relaxed);
-    draw_velocities(p, T0, rng);
+    draw_velocities(p, T0, rng, nullptr, s.dimension);
   }
   return p;
 }

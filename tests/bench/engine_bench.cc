@@ -4,6 +4,7 @@
 //   W2  r0 = 0.1, delta = 1e-3, N = 108000, phi = 0.208
 // each from the Gaussian start for 50 collisions per particle, and
 //   W5  elastic,               N = 10^6,   phi = 0.208, 20 collisions per particle
+//   W5D2 as W5 with hard disks (system.dimension = 2), area fraction 0.208
 //   W7  the paper's gas, r0 = 0.1, delta = 1e-4, N = 8x10^6, phi = 0.208, 5 collisions
 //       per particle from a clustered state: the L = 68 gas (N = 125000) run
 //       from its Gaussian start to t = 1000, tiled 4x4x4 (a valid periodic
@@ -14,7 +15,7 @@
 // Rates are given per second of wall time and per second of this process's
 // CPU time: on an idle machine they agree; on a shared one the CPU figure is
 // the engine's own speed.
-// usage: engine_bench [W1|W2|all|W5|W7] [N] [collisions_per_particle] [repeats] [checkpoint_seconds]
+// usage: engine_bench [W1|W2|all|W5|W5D2|W7] [N] [collisions_per_particle] [repeats] [checkpoint_seconds]
 // (W5 and W7 take their own N and collisions per particle unless given;
 // W7's N must be 64 times a tiled state's)
 // (repeats: runs of each workload, then a line with the best, median and worst;
@@ -133,7 +134,7 @@ double run(const char* name, const coolgas::Scene& s, const Make& make, double p
   // subtracted so the figure is the simulation's own bytes per particle.
   const double baseline = status_bytes("VmRSS:");
   const auto t_setup = clock::now();
-  std::unique_ptr<coolgas::Engine<Rule>> e = make();
+  const auto e = make();  // an Engine<Rule, D>
   const double setup = std::chrono::duration<double>(clock::now() - t_setup).count();
   const auto target = static_cast<std::int64_t>(per_particle * double(s.N) / 2.0);  // two particles per collision
   const auto t0 = clock::now();
@@ -217,11 +218,19 @@ coolgas::Scene workload(bool inelastic, std::int64_t n, double delta = 1e-3) {
   return s;
 }
 
+// W5's gas as hard disks: the same N and covered fraction in a square.
+coolgas::Scene disk_workload(std::int64_t n) {
+  coolgas::Scene s = workload(false, n);
+  s.dimension = 2;
+  s.L = std::sqrt(double(n) * M_PI / (4.0 * s.phi));
+  return s;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   const std::string which = argc > 1 ? argv[1] : "all";
-  const bool w5 = which == "W5", w7 = which == "W7";
+  const bool w5 = which == "W5" || which == "W5D2", w7 = which == "W7";
   const std::int64_t n = argc > 2 ? std::atoll(argv[2]) : w5 ? 1000000 : w7 ? 8000000 : 108000;
   const double per = argc > 3 ? std::atof(argv[3]) : w5 ? 20 : w7 ? 5 : 50;
   const int times = argc > 4 ? std::atoi(argv[4]) : 1;
@@ -229,7 +238,14 @@ int main(int argc, char** argv) {
   if (which == "W1" || which == "all") repeat("W1", workload(false, n), coolgas::ElasticRule{}, per, times);
   if (which == "W2" || which == "all")
     repeat("W2", workload(true, n), coolgas::ConstantRestitutionRule{0.1, 1e-3}, per, times);
-  if (w5) repeat("W5", workload(false, n), coolgas::ElasticRule{}, per, times);
+  if (which == "W5") repeat("W5", workload(false, n), coolgas::ElasticRule{}, per, times);
+  if (which == "W5D2") {
+    const coolgas::Scene s = disk_workload(n);
+    repeat<coolgas::ElasticRule>(
+        "W5D2", s,
+        [&] { return std::make_unique<coolgas::Engine<coolgas::ElasticRule, 2>>(coolgas::initial_state(s), coolgas::ElasticRule{}, 0.0); },
+        per, times);
+  }
   if (w7) {
     constexpr int k = 4;
     const std::string prog = argv[0];

@@ -18,56 +18,15 @@
 #include "common/trajectory/writer_lock.h"
 #include "tests/support/cli_checks.h"
 #include "tests/support/run_command.h"
+#include "tests/support/same_trajectory.h"
 #include "tests/support/simulate_cli.h"
 
 namespace coolgas {
 namespace {
 
-// A cooling, clustering gas; under a second of dynamics on one core.
-const char* kScene = R"([system]
-N = 8000
-phi = 0.2
-seed = 3
-equilibrate = 1
-[collision]
-model = "inelastic"
-r0 = 0.5
-delta = 1e-3
-[run]
-t_end = 2000
-[output]
-dumps_per_decade = 10
-)";
+std::string write_scene(const std::string& dir) { return test::write_file(dir, "gas.toml", test::kCoolingGasScene); }
 
-std::string write_scene(const std::string& dir) { return test::write_file(dir, "gas.toml", kScene); }
-
-const char* const kDatasets[] = {
-    "particles/all/position/value", "particles/all/position/time", "particles/all/velocity/value",
-    "particles/all/image/value",    "observables/kinetic_energy/value", "observables/kinetic_energy/time",
-    "observables/collisions/value", "observables/total_momentum/value", "restart/time"};
-
-// The bytes of a whole dataset (any element type).
-std::vector<char> dataset_bytes(hid_t file, const std::string& path) {
-  h5::Handle d = h5::open_dataset(file, path);
-  const hid_t type = H5Dget_type(d.id());
-  const std::size_t size = H5Tget_size(type);
-  hsize_t n = 1;
-  for (hsize_t x : h5::shape(d.id())) n *= x;
-  std::vector<char> bytes(n * size);
-  if (n > 0) H5Dread(d.id(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, bytes.data());
-  H5Tclose(type);
-  return bytes;
-}
-
-// Every dump and observable of `b` equals that of `a`, bit for bit.
-void expect_same_trajectory(const std::string& a, const std::string& b) {
-  h5::Handle fa = h5::open_file(a, h5::Mode::kReadOnly), fb = h5::open_file(b, h5::Mode::kReadOnly);
-  for (const char* ds : kDatasets) {
-    const auto x = dataset_bytes(fa.id(), ds), y = dataset_bytes(fb.id(), ds);
-    ASSERT_EQ(x.size(), y.size()) << ds << " of " << b;
-    EXPECT_TRUE(x == y) << ds << " of " << b << " differs from the uninterrupted run";
-  }
-}
+using test::expect_same_trajectory;
 
 // Starts the run to `out`, sends `signal` `delay` seconds after its t = 0
 // checkpoint appears and returns its exit code.

@@ -53,5 +53,31 @@ TEST(AggregationConservation, DenseRunKeepsMassAndLeavesNoOverlap) {
   EXPECT_GT(chunks, 10);  // the energy was checked along the way
 }
 
+// Disks: areas add, so sum d^2 stays N (to round-off: each merge takes a
+// square root), with the same mass, momentum and no-overlap laws.
+TEST(AggregationConservation, DisksKeepMassAndAreaAndLeaveNoOverlap) {
+  const std::int64_t n = 20000;
+  Scene s = test::disk_scene(n, 0.3, 22);
+  s.model = CollisionModel::kAggregation;
+  s.equilibrate = 0;
+  auto e = make_engine(s, initial_state(s), 0.0);
+  const Vec3 p0 = e->observables().momentum;
+  while (e->counters().collisions < n * 4 / 5) e->run_until(e->now() + 0.05, std::int64_t(1) << 40, nullptr);
+  const EngineFrame f = e->frame();
+  double mass = 0, area = 0;
+  for (std::size_t i = 0; i < e->size(); ++i) {
+    mass += f.mass[i];
+    area += f.diameter[i] * f.diameter[i];
+    if (f.id[i] < 0) continue;
+    ASSERT_NEAR(f.diameter[i] * f.diameter[i] / f.mass[i], 1.0, 1e-12) << i;  // d^2 = m, not d^3 = m
+    ASSERT_EQ(f.position[i].z, 0.0) << i;
+  }
+  EXPECT_EQ(mass, double(n));
+  EXPECT_NEAR(area / double(n), 1.0, 1e-12);
+  EXPECT_LT(test::largest_overlap(f.position, e->box(), f.diameter), 1e-10);
+  const Vec3 p = e->observables().momentum;
+  for (int d = 0; d < 3; ++d) EXPECT_NEAR(p[d], p0[d], 1e-10) << d;
+}
+
 }  // namespace
 }  // namespace coolgas

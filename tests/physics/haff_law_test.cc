@@ -6,8 +6,7 @@
 // Enskog omega ∝ sqrt(T), i.e. omega(t) = 1 / (1 + t/t0).
 #include <gtest/gtest.h>
 
-#include "simulate/run/engine_factory.h"
-#include "simulate/start/initial_state.h"
+#include "tests/support/kinetic_theory.h"
 #include "tests/support/scenes.h"
 
 namespace coolgas {
@@ -15,25 +14,7 @@ namespace {
 
 TEST(HaffLaw, TemperatureAndCollisionRateFollowTheHomogeneousCooling) {
   const double r = 0.98;
-  const Scene s = test::inelastic_scene(4000, 0.05, r, 0.0, 31);
-  const double t0 = 6.0 / (1.0 - r * r);  // about 152
-  auto e = make_engine(s, initial_state(s), 0.0);
-  const double e0 = e->observables().kinetic_energy;
-  double t_prev = 0;
-  std::int64_t c_prev = 0;
-  for (double t : {0.5 * t0, t0, 2.0 * t0}) {
-    e->run_until(t, std::int64_t(1) << 40, nullptr);
-    const double haff = 1.0 / ((1 + t / t0) * (1 + t / t0));
-    // Within 2 %: the velocity distribution's a2 changes the rate by < 0.3 %
-    // at r = 0.98, the rest is statistics of 4000 particles.
-    EXPECT_NEAR(e->observables().kinetic_energy / e0 / haff, 1.0, 0.02) << "t = " << t;
-    // Mean collision rate over (t_prev, t]: ∫ dt/(1 + t/t0) / (t - t_prev).
-    const double expected = t0 * std::log((1 + t / t0) / (1 + t_prev / t0)) / (t - t_prev);
-    const double measured = 2.0 * double(e->counters().collisions - c_prev) / double(s.N) / (t - t_prev);
-    EXPECT_NEAR(measured / expected, 1.0, 0.03) << "t = " << t;
-    t_prev = t;
-    c_prev = e->counters().collisions;
-  }
+  test::expect_haff_cooling(test::inelastic_scene(4000, 0.05, r, 0.0, 31), 6.0 / (1.0 - r * r));  // t0 about 152
 }
 
 }  // namespace

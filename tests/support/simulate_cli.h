@@ -19,6 +19,23 @@ inline std::string write_file(const std::string& dir, const std::string& name, c
   return path;
 }
 
+// A cooling, clustering gas; under a second of dynamics on one core (the
+// resume tests stop and resume it; with --set system.dimension=2, as disks).
+inline constexpr const char* kCoolingGasScene = R"([system]
+N = 8000
+phi = 0.2
+seed = 3
+equilibrate = 1
+[collision]
+model = "inelastic"
+r0 = 0.5
+delta = 1e-3
+[run]
+t_end = 2000
+[output]
+dumps_per_decade = 10
+)";
+
 // x with 17 significant digits, which read back to the same double (for --set values).
 inline std::string format_exact(double x) {
   std::ostringstream s;

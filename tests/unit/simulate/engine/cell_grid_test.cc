@@ -73,20 +73,24 @@ TEST(CellGrid, HeadsHaveDistinctSlotsAndCheckpointsHoldThemByCellIndex) {
 // The partner search's specialised walk (interior cells without shifts)
 // visits exactly the cells of the one periodic walker, in the same order and
 // with the same shifts, for every cell and every slab a crossing searches.
-TEST(NeighbourCells, SpecialisedSearchMatchesThePeriodicWalker) {
+// In 2D (one layer, z offsets 0) the same for the 9 cells around and the 3
+// beyond each of the 4 faces.
+template <int D>
+void expect_specialised_search_matches_the_walker() {
   for (const int n : {3, 4, 5, 7}) {
     const double L = 1.1 * n;
-    const CellGrid grid(L, 1.0, 1);
+    const CellGrid grid(L, 1.0, 1, D);
     ASSERT_EQ(grid.cells_per_side(), n);
-    for (int slab = -1; slab < 6; ++slab) {  // -1: all 27; else the 9 beyond face `slab`
-      int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
+    ASSERT_EQ(grid.cell_count(), D == 3 ? n * n * n : n * n);
+    for (int slab = -1; slab < 2 * D; ++slab) {  // -1: all 27 (9); else the 9 (3) beyond face `slab`
+      int lo[3] = {-1, -1, D == 3 ? -1 : 0}, hi[3] = {1, 1, D == 3 ? 1 : 0};
       if (slab >= 0) lo[slab / 2] = hi[slab / 2] = slab % 2 ? 1 : -1;
-      for (int cell = 0; cell < n * n * n; ++cell) {
+      for (int cell = 0; cell < grid.cell_count(); ++cell) {
         const CellCoord c = grid.coord(cell);
         int slots[27];
         double shifts[27][3];
         bool wraps = false;
-        const int count = neighbour_slots(grid, L, c, lo, hi, slots, shifts, wraps);
+        const int count = neighbour_slots<D>(grid, L, c, lo, hi, slots, shifts, wraps);
         int k = 0;
         for_each_neighbour_cell(n, L, c, lo, hi, [&](const NeighbourCell& nb) {
           ASSERT_LT(k, count);
@@ -99,6 +103,11 @@ TEST(NeighbourCells, SpecialisedSearchMatchesThePeriodicWalker) {
       }
     }
   }
+}
+
+TEST(NeighbourCells, SpecialisedSearchMatchesThePeriodicWalker) { expect_specialised_search_matches_the_walker<3>(); }
+TEST(NeighbourCells, SpecialisedSearchMatchesThePeriodicWalkerIn2D) {
+  expect_specialised_search_matches_the_walker<2>();
 }
 
 }  // namespace

@@ -19,22 +19,29 @@
 namespace coolgas {
 namespace {
 
-Scene scene_of(CollisionModel model) {
-  Scene s = test::inelastic_scene(1500, 0.2, 0.5, 1e-3, 9);
-  s.model = model;
+// A case: a model in a dimension.
+struct ModelIn {
+  CollisionModel model;
+  int dimension;
+};
+
+Scene scene_of(const ModelIn& m) {
+  Scene s = m.dimension == 3 ? test::inelastic_scene(1500, 0.2, 0.5, 1e-3, 9)
+                             : test::inelastic_disk_scene(1500, 0.2, 0.5, 1e-3, 9);
+  s.model = m.model;
   s.viscoelastic_b = 0.3;
   s.equilibrate = 0;
   return s;
 }
 
-class EngineContract : public ::testing::TestWithParam<CollisionModel> {};
+class EngineContract : public ::testing::TestWithParam<ModelIn> {};
 
 // Aggregates outgrow this small box (half its side) later: stop at t = 8, before.
 double end_of(CollisionModel m) { return m == CollisionModel::kAggregation ? 8 : 40; }
 
 TEST_P(EngineContract, SlicingChangesNothingAndFramesAreWrapped) {
   const Scene s = scene_of(GetParam());
-  const double kEnd = end_of(GetParam());
+  const double kEnd = end_of(GetParam().model);
   const Particles start = initial_state(s);
   auto whole = make_engine(s, start, 0.0);
   ASSERT_EQ(whole->run_until(kEnd, std::int64_t(1) << 40, nullptr), RunStatus::kReached);
@@ -68,7 +75,7 @@ TEST_P(EngineContract, SlicingChangesNothingAndFramesAreWrapped) {
   test::expect_same_frame(restored->frame(), whole->frame());
   const Observables a = sliced->observables(), b = whole->observables();
   EXPECT_EQ(a.kinetic_energy, b.kinetic_energy);
-  EXPECT_EQ(a.aggregates.has_value(), GetParam() == CollisionModel::kAggregation);
+  EXPECT_EQ(a.aggregates.has_value(), GetParam().model == CollisionModel::kAggregation);
 }
 
 // Long enough for the engine's own rebuilds (every 200 collisions per
@@ -95,13 +102,17 @@ TEST(EngineContractRebuilds, ScheduledRebuildsDoNotDependOnSlicing) {
 }
 
 // Every model of the simulator's table (simulate/run/models.h), so a new
-// model is held to the contract from its first row.
-std::vector<CollisionModel> every_model() {
-  std::vector<CollisionModel> models;
-  for (const ModelRow& r : model_rows()) models.push_back(r.model);
+// model is held to the contract from its first row, in 3D and in 2D.
+std::vector<ModelIn> every_model() {
+  std::vector<ModelIn> models;
+  for (const int dimension : {3, 2})
+    for (const ModelRow& r : model_rows()) models.push_back({r.model, dimension});
   return models;
 }
-INSTANTIATE_TEST_SUITE_P(EveryModel, EngineContract, ::testing::ValuesIn(every_model()));
+std::string case_name(const ::testing::TestParamInfo<ModelIn>& info) {
+  return std::string(model_row(info.param.model).name) + "_" + std::to_string(info.param.dimension) + "D";
+}
+INSTANTIATE_TEST_SUITE_P(EveryModel, EngineContract, ::testing::ValuesIn(every_model()), case_name);
 
 }  // namespace
 }  // namespace coolgas

@@ -1,6 +1,6 @@
 // Every engine against a slow, plainly correct reference, in one typed test
-// body: the three rules of Engine<Rule> (cells, calendar, lazy positions)
-// against the all-pairs reference engine, and the aggregation engine (chains,
+// body: the three rules of Engine<Rule, D> in 3D and 2D (cells, calendar,
+// lazy positions) against the all-pairs reference engine, and the aggregation engine (chains,
 // a grid that is rebuilt as aggregates grow) against the all-pairs
 // aggregation reference. Chaos amplifies round-off differences, so only the
 // first few events per particle are compared.
@@ -19,9 +19,9 @@ namespace {
 
 // A case: a start, the fast engine on it, the reference's sequence, and how
 // many events to compare.
-template <class Rule>
+template <class Rule, int D = 3>
 struct RuleCase {
-  using EngineType = Engine<Rule>;
+  using EngineType = Engine<Rule, D>;
   static std::unique_ptr<EngineType> engine(const Particles& p, const Rule& rule) {
     return std::make_unique<EngineType>(p, rule, 0.0);
   }
@@ -30,60 +30,75 @@ struct RuleCase {
   }
 };
 
-struct Elastic : RuleCase<ElasticRule> {
-  static Scene scene() { return test::elastic_scene(120, 0.15, 3); }
+// Each case in 3D and, the same N, phi and seed, as disks (D = 2: one layer
+// of cells, 9 around each; the reference needs no second version, it works
+// on 3-vectors whose z stays 0).
+template <int D>
+struct Elastic : RuleCase<ElasticRule, D> {
+  static Scene scene() { return test::in_dimension(test::elastic_scene(120, 0.15, 3), D); }
   static ElasticRule rule() { return {}; }
   static constexpr int kEvents = 300;
 };
-struct DenseElastic : RuleCase<ElasticRule> {
-  static Scene scene() { return test::elastic_scene(200, 0.35, 5); }
+template <int D>
+struct DenseElastic : RuleCase<ElasticRule, D> {
+  static Scene scene() { return test::in_dimension(test::elastic_scene(200, 0.35, 5), D); }
   static ElasticRule rule() { return {}; }
   static constexpr int kEvents = 400;
 };
 // phi = 0.02: one-diameter cells would be 24 per particle, so the engine's
 // cells are one mean spacing wide (cell_width, engine.cc: 10 per side of
-// L = 29.7, 2.97 wide). The box is large enough that free flights (mean
-// 5.9) stay well below L/2, as the reference's minimum-image predictions
-// need.
-struct DiluteElastic : RuleCase<ElasticRule> {
-  static Scene scene() { return test::elastic_scene(1000, 0.02, 8); }
+// L = 29.7, 2.97 wide; disks: 6.3 wide in a square of side 198). The box is
+// large enough that free flights (mean 5.9; disks 14) stay well below L/2,
+// as the reference's minimum-image predictions need.
+template <int D>
+struct DiluteElastic : RuleCase<ElasticRule, D> {
+  static Scene scene() { return test::in_dimension(test::elastic_scene(1000, 0.02, 8), D); }
   static ElasticRule rule() { return {}; }
   static constexpr int kEvents = 600;
 };
-struct Inelastic : RuleCase<ConstantRestitutionRule> {
-  static Scene scene() { return test::inelastic_scene(120, 0.15, 0.5, 1e-3, 4); }
+template <int D>
+struct Inelastic : RuleCase<ConstantRestitutionRule, D> {
+  static Scene scene() { return test::in_dimension(test::inelastic_scene(120, 0.15, 0.5, 1e-3, 4), D); }
   static ConstantRestitutionRule rule() { return {0.5, 1e-3}; }
   static constexpr int kEvents = 300;
 };
-struct Viscoelastic : RuleCase<ViscoelasticRule> {
-  static Scene scene() { return test::elastic_scene(120, 0.15, 6); }
+template <int D>
+struct Viscoelastic : RuleCase<ViscoelasticRule, D> {
+  static Scene scene() { return test::in_dimension(test::elastic_scene(120, 0.15, 6), D); }
   static ViscoelasticRule rule() { return {0.3, 0.0}; }
   static constexpr int kEvents = 300;
 };
+
 // 400 unit spheres at phi = 0.05 until 360 merges: aggregates outgrow the
 // cells (the large-aggregate index is used), become four times fewer than
-// cells (the grid is rebuilt) and merges chain.
-struct Aggregation {
+// cells (the grid is rebuilt) and merges chain. In 2D, 400 disks at
+// phi = 0.1 do the same on one layer of cells, their areas adding.
+template <int D>
+struct AggregationCase {
   using EngineType = AggregationEngine;
   struct NoRule {};
   static Scene scene() {
-    Scene s = test::elastic_scene(400, 0.05, 7);
+    Scene s = D == 3 ? test::elastic_scene(400, 0.05, 7) : test::disk_scene(400, 0.1, 18);
     s.equilibrate = 0;
     return s;
   }
   static NoRule rule() { return {}; }
   static constexpr int kEvents = 360;
   static std::unique_ptr<EngineType> engine(const Particles& p, NoRule) {
-    return std::make_unique<EngineType>(p, AggregateState::unit_spheres(p.size()), 0.0);
+    return std::make_unique<EngineType>(p, AggregateState::unit_spheres(p.size()), 0.0, EngineCounters{}, D);
   }
   static std::vector<CollisionRecord> reference(const Particles& p, NoRule, int n) {
-    return reference_merges(p, AggregateState::unit_spheres(p.size()), 0.0, 1e9, n);
+    return reference_merges(p, AggregateState::unit_spheres(p.size()), 0.0, 1e9, n, D);
   }
 };
+using Aggregation = AggregationCase<3>;
+using Aggregation2D = AggregationCase<2>;
 
 template <class Case>
 class EngineVsReference : public ::testing::Test {};
-using Cases = ::testing::Types<Elastic, DenseElastic, DiluteElastic, Inelastic, Viscoelastic, Aggregation>;
+using Cases = ::testing::Types<Elastic<3>, DenseElastic<3>, DiluteElastic<3>, Inelastic<3>, Viscoelastic<3>,
+                               Aggregation, Elastic<2>, DenseElastic<2>, DiluteElastic<2>, Inelastic<2>,
+                               Viscoelastic<2>, Aggregation2D>;
 TYPED_TEST_SUITE(EngineVsReference, Cases);
 
 TYPED_TEST(EngineVsReference, SameEventSequence) {
@@ -102,45 +117,53 @@ TYPED_TEST(EngineVsReference, SameEventSequence) {
   }
 }
 
-// The aggregation case really goes through chains, grid rebuilds and the large-aggregate index.
-TEST(EngineVsReferenceAggregation, TheCaseHasChainsAndRebuilds) {
-  const Particles start = initial_state(Aggregation::scene());
-  const auto ref = Aggregation::reference(start, {}, Aggregation::kEvents);
+// The aggregation cases really go through chains, grid rebuilds and the large-aggregate index.
+template <class Case>
+void expect_chains_and_rebuilds() {
+  const Particles start = initial_state(Case::scene());
+  const auto ref = Case::reference(start, {}, Case::kEvents);
   int chained = 0;
   for (std::size_t k = 1; k < ref.size(); ++k) chained += ref[k].t == ref[k - 1].t;
   EXPECT_GT(chained, 0);
-  auto fast = Aggregation::engine(start, {});
+  auto fast = Case::engine(start, {});
   const double width = fast->cell_width();
   std::size_t most_large = 0;
-  while (fast->counters().collisions < Aggregation::kEvents) {
+  while (fast->counters().collisions < Case::kEvents) {
     fast->run_until(fast->now() + 0.1, 1 << 30, nullptr);
     most_large = std::max(most_large, fast->large_aggregates());
   }
   EXPECT_NE(fast->cell_width(), width);
   EXPECT_GT(most_large, 0u);
 }
+TEST(EngineVsReferenceAggregation, TheCaseHasChainsAndRebuilds) { expect_chains_and_rebuilds<Aggregation>(); }
+TEST(EngineVsReferenceAggregation, The2DCaseHasChainsAndRebuilds) { expect_chains_and_rebuilds<Aggregation2D>(); }
 
 // Aggregates of many sizes, growing from wider than a cell up to the L/2
 // limit (past the old L/3 one): a 7³ lattice in a box of side 16, every
 // fifth site a mass-8 aggregate (diameter 2, which fits the lattice spacing
-// 16/7 beside unit spheres), random velocities. The engine runs until it
-// stops at the limit; every merge up to there is the reference's, found
-// through the large-aggregate index at periodic images far beyond the 27
-// neighbours, and, near the end, through images of the box itself.
-TEST(EngineVsReferenceAggregation, SameMergesWithLargeAggregatesUpToHalfTheBox) {
+// 16/7 beside unit spheres), random velocities; in 2D a 9² lattice (spacing
+// 1.78) with every fifth site a disk of mass 4 (diameter 2, areas adding).
+// The engine runs until it stops at the limit; every merge up to there is
+// the reference's, found through the large-aggregate index at periodic
+// images far beyond the neighbouring cells, and, near the end, through
+// images of the box itself.
+template <int D>
+void expect_same_merges_up_to_half_the_box() {
   const double L = 16;
+  const int side = D == 3 ? 7 : 9, sites = D == 3 ? side * side * side : side * side;
   Particles p;
   p.L = L;
-  p.resize(343);
+  p.resize(std::size_t(sites));
   AggregateState a = AggregateState::unit_spheres(p.size());
   std::uint64_t s = 2024;
   auto uniform = [&s] { return double((s = s * 6364136223846793005ULL + 1442695040888963407ULL) >> 11) * 0x1.0p-53; };
   for (std::size_t i = 0; i < p.size(); ++i) {
-    p.r[i] = {(double(i % 7) + 0.5) * L / 7, (double(i / 7 % 7) + 0.5) * L / 7, (double(i / 49) + 0.5) * L / 7};
-    p.v[i] = {uniform() - 0.5, uniform() - 0.5, uniform() - 0.5};
-    if (i % 5 == 0) a.mass[i] = 8, a.diameter[i] = 2;
+    const auto at = [&](std::size_t k) { return (double(k % std::size_t(side)) + 0.5) * L / side; };
+    p.r[i] = {at(i), at(i / std::size_t(side)), D == 3 ? at(i / std::size_t(side * side)) : 0.0};
+    p.v[i] = {uniform() - 0.5, uniform() - 0.5, D == 3 ? uniform() - 0.5 : 0.0};
+    if (i % 5 == 0) a.mass[i] = D == 3 ? 8 : 4, a.diameter[i] = 2;
   }
-  AggregationEngine e(p, a, 0.0);
+  AggregationEngine e(p, a, 0.0, EngineCounters{}, D);
   std::vector<CollisionRecord> log;
   e.record_collisions(&log);
   std::size_t most_large = 0;
@@ -159,14 +182,21 @@ TEST(EngineVsReferenceAggregation, SameMergesWithLargeAggregatesUpToHalfTheBox) 
   ASSERT_TRUE(stopped);
   EXPECT_GE(e.largest_diameter(), L / 2);
   EXPECT_GT(most_large, 3u);
-  EXPECT_GT(widest_cell_multiple, 1.5);  // partners found beyond the 27 neighbouring cells
-  const auto ref = reference_merges(p, a, 0.0, 1e9, std::int64_t(log.size()));
+  EXPECT_GT(widest_cell_multiple, 1.5);  // partners found beyond the neighbouring cells
+  const auto ref = reference_merges(p, a, 0.0, 1e9, std::int64_t(log.size()), D);
   ASSERT_EQ(ref.size(), log.size());
   for (std::size_t k = 0; k < log.size(); ++k) {
     ASSERT_EQ(log[k].i, ref[k].i) << "merge " << k;
     ASSERT_EQ(log[k].j, ref[k].j) << "merge " << k;
     ASSERT_NEAR(log[k].t, ref[k].t, 1e-9 * (1 + ref[k].t)) << "merge " << k;
   }
+}
+
+TEST(EngineVsReferenceAggregation, SameMergesWithLargeAggregatesUpToHalfTheBox) {
+  expect_same_merges_up_to_half_the_box<3>();
+}
+TEST(EngineVsReferenceAggregation, SameMergesWithLargeDisksUpToHalfTheBox) {
+  expect_same_merges_up_to_half_the_box<2>();
 }
 
 }  // namespace
