@@ -39,7 +39,7 @@ constexpr double kAggregationBytesPerParticle = 187;  // peak at N = 1e6 (the ga
 constexpr double kDumpBytesGas = 47, kDumpBytesAggregation = 62;
 constexpr double kRequestExtraBytes = 256e6;  // the libraries and the output buffers
 
-constexpr std::int64_t kEventsPerSlice = std::int64_t(1) << 30;  // far below the budget's overflow
+constexpr std::int64_t kPilotEventsPerSlice = std::int64_t(1) << 30;  // far below the budget's overflow
 
 bool is_aggregation(const Scene& s) { return s.model == CollisionModel::kAggregation; }
 
@@ -60,7 +60,7 @@ double run_pilot(const Scene& pilot, double scale, double t_stop, RunEta& eta, I
   for (double t : times) {
     try {
       RunStatus status;
-      while ((status = engine->run_until(t, kEventsPerSlice, interrupt)) == RunStatus::kEventBudget) {
+      while ((status = engine->run_until(t, kPilotEventsPerSlice, interrupt)) == RunStatus::kEventBudget) {
       }
       if (status == RunStatus::kInterrupted) throw_if_interrupted("in the pilot run of --estimate");
     } catch (const RunStopped&) {
