@@ -28,7 +28,7 @@ constexpr double kClusteringPerDecadeOfDelta = 0.1;  // per factor 10 smaller
 constexpr double kClusteringPerPhi = 0.8;            // 0.08 per 0.1 of phi
 constexpr double kClusteringPerR0 = -0.2;
 constexpr double kClusteringLow = 0.3, kClusteringHigh = 0.9;
-constexpr double kKnee = 0.5;  // the finite-size regime, from t = kKnee L^(5/2) on,
+constexpr double kKnee = 0.5;  // the finite-size regime, from t = kKnee L^z on (z = 5/2 in 3D),
 // where C grows at most as t^b, b = kTail (t / t_knee)^-kTailFall: the
 // demo's gases fall from 0.25-0.3 at x = t/L^(5/2) = 2 to 0.1-0.13 at x = 10
 // (tests/bench/history.md, "ETA").
@@ -180,10 +180,14 @@ RunEta eta_of_aggregation(const RunParameters& p) {
   return RunEta::aggregation(p.L, double(p.N), AggregationEngine::kCellsPerAggregateLimit);
 }
 
-RunEta run_eta_for(const RunParameters& p) {
+RunEta run_eta_for(const RunParameters& p, int dimension) {
   const ModelRow* row = find_model_row(p.model);
-  return row ? row->eta(p) : eta_of_cooling_gas(p);
+  RunEta eta = row ? row->eta(p) : eta_of_cooling_gas(p);
+  eta.set_dimension(dimension);
+  return eta;
 }
+
+void RunEta::set_dimension(int d) { crossover_exponent_ = (d + 2) / 2.0; }
 
 RunEta RunEta::aggregation(double L, double N, double regrid_factor) {
   RunEta eta(L, N - 1);
@@ -241,7 +245,7 @@ double RunEta::expected_collisions(double t_end) const {
   if (!std::isnan(aggregates_)) return expected_merges(t_end);
   const double a = exponent(t / kFitWindow, t);
   if (!std::isfinite(a)) return NAN;
-  const double knee = kKnee * std::pow(L_, 2.5);
+  const double knee = kKnee * std::pow(L_, crossover_exponent_);
   return std::min(most_, now.collisions * std::exp(log_growth(t, t_end, a, clustering_, knee, kTail, kTailFall)));
 }
 

@@ -16,7 +16,7 @@
 // under Haff's law C ~ ln(1 + t/tau), so a falls from 1 towards 0 along
 // x/((1 + x) ln(1 + x)), x = t/tau, with tau set by the measured a. Two
 // regimes of the paper's gas bound it (Pathak et al. 2014): before
-// t = 0.5 L^(5/2) the clustering regime, where a stays at least a floor
+// t = 0.5 L^z, z = (d + 2)/2 (5/2 in 3D, the mean-field crossover), the clustering regime, where a stays at least a floor
 // (0.6 for the paper's gas; clustering_floor() for others), and
 // beyond it the finite-size regime, where a is at most 0.35 (t/t_knee)^-0.35
 // (the constants and how they were chosen: run_eta.cc). The crossings X(t)
@@ -70,6 +70,9 @@ class RunEta {
   // rebuilt, at a search per aggregate, each time they fall that much), so
   // the rate window spans at least that last factor.
   static RunEta aggregation(double L, double N, double regrid_factor);
+  // The dimension d of the box, which sets its finite-size crossover,
+  // t ~ L^z with the mean field's z = (d + 2)/2 (3 unless set).
+  void set_dimension(int d);
   // Keeps samples log-spaced in t (one per 1 % of t at most); the last
   // sample is always the newest.
   void add(const RunSample& s);
@@ -106,6 +109,7 @@ class RunEta {
   double expected_merges(double t_end) const;
 
   double L_, most_, clustering_, crossings_;
+  double crossover_exponent_ = 2.5;  // z of the knee, kKnee L^z
   double aggregates_ = NAN;  // N under aggregation, else NaN
   double regrid_factor_ = 1;  // the rate window's least fall of the aggregates left
   std::vector<RunSample> samples_;
@@ -157,7 +161,7 @@ double clustering_floor(double phi, double r0, double delta);
 // regime, aggregation at most N - 1 merges, the inelastic gas its own
 // clustering floor and its crossings modelled; other cooling gases
 // (viscoelastic) the floor 0.5.
-RunEta run_eta_for(const RunParameters& p);
+RunEta run_eta_for(const RunParameters& p, int dimension = 3);
 // The rules run_eta_for() picks by the run's model (simulate/run/models.h):
 // an elastic gas does not cool (no finite-size regime); a cooling gas with
 // the generic floor; the inelastic gas with its clustering and crossing

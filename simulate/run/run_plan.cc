@@ -8,7 +8,6 @@
 #include "common/error.h"
 #include "simulate/engine/engine_base.h"
 #include "simulate/run/engine_factory.h"
-#include "simulate/run/models.h"
 #include "simulate/run/run_eta.h"
 #include "simulate/run/scene_file.h"
 #include "simulate/run/time_grid.h"
@@ -96,7 +95,7 @@ RunPlan plan_run(const Scene& scene, InterruptFlag interrupt) {
     throw InputError("--estimate needs a generated start (system.init = \"random\" or \"fcc\"): a start from a file "
                      "cannot be scaled down to a pilot run");
   const Scene pilot = pilot_scene(scene);
-  RunEta eta = model_row(scene.model).eta(parameters_of(scene));
+  RunEta eta = run_eta_for(parameters_of(scene), scene.dimension);
   const double t_stop = std::min(scene.t_end, kPilotTime);
   const double reached = run_pilot(pilot, double(scene.N) / double(pilot.N), t_stop, eta, interrupt);
   if (!(reached > 0))

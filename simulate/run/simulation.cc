@@ -230,7 +230,7 @@ class Driver {
   std::string path_;
   double e0_;
   Progress progress_;
-  RunEta eta_ = run_eta_for(parameters_of(scene_));
+  RunEta eta_ = run_eta_for(parameters_of(scene_), scene_.dimension);
   EtaGate eta_gate_;
   double busy_seconds_ = 0;  // wall seconds inside the engine (no dumps, no checkpoints)
   OutputCost dump_cost_, checkpoint_cost_;

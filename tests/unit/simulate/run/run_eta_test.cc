@@ -279,5 +279,16 @@ TEST(RunEta, UnknownUntilAWholeFitWindowAndSamplesStayLogSpaced) {
   EXPECT_NEAR(eta.expected_collisions(1e4), 1e7, 1e-6 * 1e7);
 }
 
+// The knee is the mean-field crossover t ~ L^z, z = (d + 2)/2: a square of
+// side L reaches it when a cube of side L^(4/5) does (L^2 = (L^0.8)^(5/2)).
+TEST(RunEta, TheKneeIsTheCrossoverOfTheBoxsDimension) {
+  RunEta disks(100);
+  disks.set_dimension(2);
+  const double in_2d = power_law_run(disks, 0.8).expected_collisions(1e6);
+  const double in_3d = power_law_run(RunEta(std::pow(100.0, 0.8)), 0.8).expected_collisions(1e6);
+  EXPECT_NEAR(in_2d / in_3d, 1, 1e-12);
+  EXPECT_LT(in_2d, power_law_run(RunEta(100), 0.8).expected_collisions(1e6));
+}
+
 }  // namespace
 }  // namespace coolgas
