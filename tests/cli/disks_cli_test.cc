@@ -114,7 +114,7 @@ TEST_F(DisksCli, AKilledRunResumesBitForBit) {
 
 // The tools not yet made 2D-capable.
 TEST_F(DisksCli, ToolsThatReadFramesRefuseA2DFileWithOneLine) {
-  for (const char* tool : {"coolgas-shape"}) {
+  for (const char* tool : {"coolgas-convert"}) {
     const auto r = run_command(bin(tool) + " " + whole());
     test::expect_one_error_line(r, "2D trajectory");
   }
