@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common/hdf5_file.h"
+#include "tests/support/disk_scene.h"
 #include "tests/support/run_command.h"
 #include "tests/support/simulate_cli.h"
 
@@ -19,21 +20,7 @@ using test::bin;
 using test::run_command;
 using test::simulate;
 
-const char* kDisks = R"([system]
-dimension = 2
-N = 6000
-phi = 0.3
-seed = 5
-equilibrate = 1
-[collision]
-model = "inelastic"
-r0 = 0.5
-delta = 1e-3
-[run]
-t_end = 300
-[output]
-dumps_per_decade = 10
-)";
+const char* kDisks = test::kInelasticDisksToml;
 
 // Every dump and observable, as raw bytes.
 std::vector<char> bytes_of(const std::string& file, const std::string& path) {
@@ -112,7 +99,7 @@ TEST_F(DisksCli, AKilledRunResumesBitForBit) {
   expect_same_run(whole(), out);
 }
 
-// The tools not yet made 2D-capable.
+// The tools not yet made 2D-capable (the others: disk_tools_cli_test.cc).
 TEST_F(DisksCli, ToolsThatReadFramesRefuseA2DFileWithOneLine) {
   for (const char* tool : {"coolgas-convert"}) {
     const auto r = run_command(bin(tool) + " " + whole());
