@@ -1,8 +1,8 @@
 // coolgas-simulate with system.dimension = 2, driven as a user would: the
 // file is H5MD with box/dimension = 2 and 2-component vectors, the
 // validator accepts it, a run extended or stopped and resumed is bit for bit
-// the uninterrupted one, bad dimensions are one line each, and the analysis
-// tools not yet made 2D-capable refuse a 2D file with one line.
+// the uninterrupted one, and bad dimensions are one line each (the analysis
+// tools on a 2D file: disk_tools_cli_test.cc).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -97,14 +97,6 @@ TEST_F(DisksCli, AKilledRunResumesBitForBit) {
     ASSERT_EQ(r.exit_code, 0) << r.err;
   }
   expect_same_run(whole(), out);
-}
-
-// The tools not yet made 2D-capable (the others: disk_tools_cli_test.cc).
-TEST_F(DisksCli, ToolsThatReadFramesRefuseA2DFileWithOneLine) {
-  for (const char* tool : {"coolgas-convert"}) {
-    const auto r = run_command(bin(tool) + " " + whole());
-    test::expect_one_error_line(r, "2D trajectory");
-  }
 }
 
 TEST(DisksCliScene, BadDimensionsAreOneLineEach) {

@@ -3,7 +3,8 @@
 
 usage: read_exports.py xyz RUN.h5 FRAMES.xyz     ASE reads every frame: cell, pbc, time, positions
                                                  and velocities (exactly: the XYZ numbers round-trip),
-                                                 radii = diameter/2 of the aggregates present
+                                                 radii = diameter/2 of the aggregates present; a 2D
+                                                 run's frames: cell (L, L, 1), pbc (T, T, F), z = 0
        read_exports.py lammps RUN.h5 DUMP DUMP   MDAnalysis (LAMMPSDUMP, convert_units=False) reads
                                                  the dump of the last frame: box, ids, positions and
                                                  velocities (float32 in MDAnalysis)
@@ -40,6 +41,11 @@ def fail(msg):
     sys.exit("mismatch: " + msg)
 
 
+def in_3d(v):
+    """Rows of d numbers (a 2D run: d = 2) as 3-vectors, z = 0: what 3D readers hold."""
+    return np.hstack([v, np.zeros((len(v), 3 - v.shape[1]))])
+
+
 def check_xyz(h5, xyz):
     import ase.io
     ref = frames(h5)
@@ -47,11 +53,13 @@ def check_xyz(h5, xyz):
     if len(images) != len(ref):
         fail(f"{len(images)} XYZ frames, {len(ref)} dumps")
     for a, (t, L, pos, vel, d) in zip(images, ref):
-        if not (np.array_equal(a.cell.array, np.diag([L, L, L])) and all(a.pbc)):
+        dim = pos.shape[1]
+        if not (np.array_equal(a.cell.array, np.diag([L] * dim + [1] * (3 - dim)))
+                and list(a.pbc) == [True] * dim + [False] * (3 - dim)):
             fail(f"cell {a.cell.array} pbc {a.pbc} at t = {t}")
         if a.info.get("Time") != t:
             fail(f"Time {a.info.get('Time')} != {t}")
-        if not np.array_equal(a.positions, pos) or not np.array_equal(a.arrays["velo"], vel):
+        if not np.array_equal(a.positions, in_3d(pos)) or not np.array_equal(a.arrays["velo"], in_3d(vel)):
             fail(f"positions or velocities differ at t = {t}")
         if d is not None and not np.array_equal(2 * a.arrays["radius"], d):
             fail(f"radii differ at t = {t}")
@@ -62,11 +70,15 @@ def check_lammps(h5, dump):
     t, L, pos, vel, d = frames(h5)[-1]
     u = mda.Universe(dump, format="LAMMPSDUMP", convert_units=False)
     ts = u.trajectory[0]
-    if u.atoms.n_atoms != len(pos) or not np.allclose(ts.dimensions, [L, L, L, 90, 90, 90]):
+    box = [L, L, L] if pos.shape[1] == 3 else [L, L, 1]  # 2D: z from -0.5 to 0.5
+    # MDAnalysis moves the box's lower corner to the origin: a 2D dump's z = 0 reads as 0.5.
+    pos = in_3d(pos) + [0, 0, 0.5 * (pos.shape[1] == 2)]
+    if u.atoms.n_atoms != len(pos) or not np.allclose(ts.dimensions, box + [90, 90, 90]):
         fail(f"atoms {u.atoms.n_atoms} box {ts.dimensions}")
     if not np.array_equal(u.atoms.ids, np.arange(1, len(pos) + 1)) and d is None:
         fail("ids are not 1..N")
-    if not np.allclose(ts.positions, pos, rtol=1e-6, atol=1e-5) or not np.allclose(ts.velocities, vel, rtol=1e-6, atol=1e-6):
+    if not np.allclose(ts.positions, pos, rtol=1e-6, atol=1e-5) or \
+            not np.allclose(ts.velocities, in_3d(vel), rtol=1e-6, atol=1e-6):
         fail("positions or velocities differ")
 
 
