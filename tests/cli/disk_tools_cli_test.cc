@@ -132,6 +132,15 @@ TEST_F(DiskToolsCli, ShapesOfA2DRunAreTwoDimensional) {
   EXPECT_EQ(s.columns.size(), 7u);
 }
 
+// MDAnalysis 2.4 reads 3D boxes only: it refuses a 2D file with its own
+// ValueError (data-schema/h5md-profile.md says so; coolgas-convert's LAMMPS
+// dump of the file is what it reads, tests/cli/convert_cli_test.cc).
+TEST_F(DiskToolsCli, MDAnalysisRefusesA2DFile) {
+  const auto r = run_command("/usr/bin/python3 " + test::source("tests/cli/read_exports.py") + " mda_2d " + disks() +
+                             " 4000");
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+}
+
 TEST_F(DiskToolsCli, SnapshotDrawsThePlaneAndRefusesTheThreeDimensionalOptions) {
   const std::string png = *dir_ + "/disks.png";
   const Table legend = table(bin("coolgas-snapshot") + " " + disks() + " --time 100 --colored 3 --force -o " + png);

@@ -15,6 +15,8 @@ usage: read_exports.py xyz RUN.h5 FRAMES.xyz     ASE reads every frame: cell, pb
                                                  a vector, group "gas", and one absent particle (id -1)
        read_exports.py h5md_bad KIND OUT         h5py writes a broken H5MD file: KIND = slab (edges 10 10 5),
                                                  open (boundary none), groups (two particle groups)
+       read_exports.py mda_2d RUN.h5 N           MDAnalysis refuses a 2D run's H5MD file (box/dimension = 2)
+                                                 with its ValueError "only supports 3-dimensional simulation boxes"
 Exits non-zero with a message on the first mismatch; prints "ok".
 """
 import sys
@@ -122,7 +124,18 @@ def write_h5md_bad(kind, out):
             h5md_group(f, "b", pos, np.array([10.0, 10, 10]))
 
 
+def check_mda_refuses_2d(h5, n):
+    import MDAnalysis as mda
+    try:
+        mda.Universe.empty(int(n)).load_new(h5, format="H5MD", convert_units=False)
+    except ValueError as e:
+        if "3-dimensional" not in str(e):
+            fail(f"MDAnalysis refused the 2D file otherwise: {e}")
+        return
+    fail("MDAnalysis read a 2D file")
+
+
 mode, h5, other = sys.argv[1], sys.argv[2], sys.argv[3]
 {"xyz": check_xyz, "lammps": check_lammps, "h5md": write_h5md, "h5md_fixed": write_h5md_fixed,
- "h5md_bad": write_h5md_bad}[mode](h5, other)
+ "h5md_bad": write_h5md_bad, "mda_2d": check_mda_refuses_2d}[mode](h5, other)
 print("ok")
