@@ -34,9 +34,11 @@ void write_xyz_frame(std::ostream& out, const XyzFrame& f, const Provenance& pro
   const std::size_t n = f.position.size() / 3;
   const std::string L = format_number(f.L);
   const bool spheres = !f.diameter.empty();
-  out << n << "\nLattice=\"" << L << " 0 0 0 " << L << " 0 0 0 " << L << "\" Properties=species:S:1:pos:R:3"
-      << (f.velocity.empty() ? "" : ":velo:R:3") << (f.id.empty() ? "" : ":id:I:1")
-      << (spheres ? ":radius:R:1" : "") << (f.mass.empty() ? "" : ":mass:R:1") << " pbc=\"T T T\"";
+  const bool disks = f.dimension == 2;  // the plane z = 0: a unit third lattice vector, not periodic
+  out << n << "\nLattice=\"" << L << " 0 0 0 " << L << " 0 0 0 " << (disks ? "1" : L)
+      << "\" Properties=species:S:1:pos:R:3" << (f.velocity.empty() ? "" : ":velo:R:3") << (f.id.empty() ? "" : ":id:I:1")
+      << (spheres ? ":radius:R:1" : "") << (f.mass.empty() ? "" : ":mass:R:1")
+      << (disks ? " pbc=\"T T F\"" : " pbc=\"T T T\"");
   if (f.time) out << " Time=" << format_number(*f.time);
   if (f.step) out << " Step=" << *f.step;
   for (const auto& [k, v] : provenance) out << " " << xyz_key(k) << "=" << quoted(v);

@@ -20,18 +20,18 @@ const std::vector<std::string>& cluster_columns(ClusterTable table) {
 }
 
 void fill_cluster_masses(MassHistogram& hist, ClusterLabeller& labeller, double L, std::span<const double> positions,
-                         std::span<const double> aggregate_mass) {
+                         std::span<const double> aggregate_mass, int dimension) {
   hist.clear();
   if (!aggregate_mass.empty()) {
     for (double m : aggregate_mass) hist.add(std::llround(m));
     return;
   }
-  labeller.label(ClusterGrid(L), positions);
+  labeller.label(ClusterGrid(L, dimension), positions);
   labeller.for_each_mass([&](std::int64_t m) { hist.add(m); });
 }
 
-TableBlock cluster_block(ClusterTable table, double t, double L, const MassHistogram& h) {
-  const double volume = L * L * L;
+TableBlock cluster_block(ClusterTable table, double t, double L, const MassHistogram& h, int dimension) {
+  const double volume = dimension == 3 ? L * L * L : L * L;
   const ClusterMoments& mo = h.moments();
   TableBlock b;
   if (table == ClusterTable::kSeries) {

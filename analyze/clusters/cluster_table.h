@@ -21,14 +21,16 @@ enum class ClusterTable {
 const std::vector<std::string>& cluster_columns(ClusterTable table);
 
 // The masses of one frame into `hist` (cleared first): the paper's clusters
-// of the particles at `positions` (x0 y0 z0 x1 ...) in a box of side L, or,
+// of the particles at `positions` (x0 y0 z0 x1 ...; z = 0 in 2D) in a box of
+// side L in `dimension` 3 (unit cubes) or 2 (unit squares), or,
 // when `aggregate_mass` is not empty (ballistic aggregation), the
 // aggregates themselves, each of its mass rounded to whole particles.
 void fill_cluster_masses(MassHistogram& hist, ClusterLabeller& labeller, double L, std::span<const double> positions,
-                         std::span<const double> aggregate_mass);
+                         std::span<const double> aggregate_mass, int dimension = 3);
 
-// The rows of one dump at time t in a box of side L. The series has one row
-// and no comment (it is not a block).
-TableBlock cluster_block(ClusterTable table, double t, double L, const MassHistogram& hist);
+// The rows of one dump at time t in a box of side L in `dimension` d: the
+// densities are per L^d. The series has one row and no comment (it is not a
+// block).
+TableBlock cluster_block(ClusterTable table, double t, double L, const MassHistogram& hist, int dimension = 3);
 
 }  // namespace coolgas

@@ -29,8 +29,9 @@ int main(int argc, char** argv) {
     app.add_option("--z", o.z, "dynamical exponent z (with --optimize: the starting value)")->capture_default_str();
     auto* optimize_opt = app.add_flag("--optimize", o.optimize, "find the theta and z that collapse the curves best");
     app.add_option("--z-theta", o.z_theta,
-                   "with --optimize: hold the product z theta at this value (the paper's E L^3 against t/L^(5/2):\n"
-                   "3 = d) and find the z that collapses best, theta = z_theta / z; errors from the jackknife over\n"
+                   "with --optimize: hold the product z theta at this value (mean field: z theta = d, the dimension;\n"
+                   "the paper's E L^3 against t/L^(5/2) is 3) and find the z that collapses best, theta = z_theta / z;\n"
+                   "errors from the jackknife over\n"
                    "runs (two or more tables of every L, or --bootstrap 0). Compare its quality with the free fit's")
         ->needs(optimize_opt);
     app.add_option("--bootstrap", o.search.bootstrap, "bootstrap replicas with one table per L (0: no uncertainties at all)")

@@ -9,6 +9,7 @@
 #include "analyze/collapse/seed_weights.h"
 #include "analyze/collapse/tail.h"
 #include "analyze/curves/scaling_window.h"
+#include "common/dimension_line.h"
 #include "common/error.h"
 #include "common/tool_main.h"
 #include "common/tsv.h"
@@ -29,7 +30,7 @@ Window default_window(const std::vector<Table>& tables, const FitColumns& column
     if (!start)
       throw InputError(table.source + ": --optimize needs --t-window TMIN: here: " + columns.E +
                        "(t) does not leave Haff's law (t^-1, then no steeper than t^-3/2) before the finite-size "
-                       "crossover 0.1 L^(5/2)");
+                       "crossover " + crossover_text(table));
     w.lo = std::max(w.lo.value_or(0.0), *start);
   }
   note("--optimize without --t-window: collapsing t >= " + format_number(*w.lo) +
@@ -42,8 +43,28 @@ void check_min_overlap(const CollapseOptions& o) {
     throw InputError("--min-overlap " + format_number(o.search.min_overlap_decades) + " is not allowed; it must be >= 0");
 }
 
+// The one dimension of all tables: a collapse compares boxes of one dimension.
+int common_dimension(const std::vector<Table>& tables) {
+  const int d = dimension_of(tables.front());
+  for (const auto& table : tables)
+    if (dimension_of(table) != d)
+      throw InputError("tables of different dimensions cannot be collapsed together: " + tables.front().source +
+                       " is " + std::to_string(d) + "D, " + table.source + " is " + std::to_string(dimension_of(table)) +
+                       "D (the '# dimension:' line; none = 3D); collapse each dimension on its own");
+  return d;
+}
+
+// --z-theta is any product; the mean-field relation is z theta = d, so a
+// different value for these tables' d is said on stderr (it may be meant).
+void note_z_theta(const CollapseOptions& o, int dimension) {
+  if (!o.optimize || !o.z_theta || *o.z_theta == dimension) return;
+  note("--z-theta " + format_number(*o.z_theta) + " with " + std::to_string(dimension) +
+       "D tables: the mean-field relation there is z theta = d = " + std::to_string(dimension));
+}
+
 std::vector<SizeEnsemble> load_sizes(const std::vector<Table>& tables, CollapseOptions& o) {
   if (tables.empty()) throw InputError("no E(t) tables given (usage: coolgas-collapse TABLE...)");
+  note_z_theta(o, common_dimension(tables));
   if (o.auto_window) o.t_window = default_window(tables, o.columns);
   std::vector<ScalingCurve> curves;
   for (const auto& table : tables) curves.push_back(make_scaling_curve(table, o.columns, o.t_window));
@@ -63,10 +84,12 @@ std::string uncertainty_text(const CollapseFit& fit, std::uint64_t seed) {
   return kind + std::to_string(fit.replicas) + " replicas, seed " + std::to_string(seed);
 }
 
-Provenance collapse_provenance(const CollapseOptions& o, const std::vector<SizeEnsemble>& sizes, const CollapseResult& r) {
+Provenance collapse_provenance(const CollapseOptions& o, const std::vector<SizeEnsemble>& sizes, const CollapseResult& r,
+                               int dimension) {
   Provenance p;
   for (const auto& s : sizes)
     for (const auto& c : s.runs) p.emplace_back("input", c.source + " (L = " + format_number(c.L) + ")");
+  add_dimension_line(p, dimension);
   p.emplace_back("t_window", o.t_window.text());
   p.emplace_back("min_overlap_decades", format_number(o.search.min_overlap_decades));
   p.emplace_back("weights", o.seed_weights ? "seeds: quality is a chi^2 per point, over the variance of ln E among "
@@ -154,7 +177,7 @@ CollapseResult collapse_tables(const std::vector<Table>& tables, const CollapseO
   r.quality = collapse_quality(curves, r.theta, r.z, o.search.min_overlap_decades);
   if (o.eta_window) r.eta = fit_tail_exponent(curves, r.theta, r.z, *o.eta_window);
   check_scaled_points(curves, r);
-  r.provenance = collapse_provenance(o, sizes, r);
+  r.provenance = collapse_provenance(o, sizes, r, dimension_of(tables.front()));
   if (o.summary) {
     summarise(o, r);
   } else {

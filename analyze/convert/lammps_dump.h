@@ -17,6 +17,9 @@
 // into [0, L) and ix iy iz are the image counts. The format has no comment
 // line and no time (TIMESTEP is an integer; MDAnalysis 2.4 also reads
 // exactly nine header lines per frame, so no ITEM: TIME is written).
+// A 2D frame (disks) has z = vz = iz = 0 and z bounds -0.5 0.5, as a LAMMPS
+// run with `dimension 2` has them (its z must straddle 0): read_dump into such
+// a run, or OVITO, reads the plane.
 #pragma once
 #include <iosfwd>
 
@@ -26,6 +29,6 @@ namespace coolgas {
 
 // `frame` as read by a Trajectory opened for position, velocity and image
 // (and diameter, for aggregation files).
-void write_lammps_frame(std::ostream& out, const Frame& frame);
+void write_lammps_frame(std::ostream& out, const Frame& frame, int dimension = 3);
 
 }  // namespace coolgas

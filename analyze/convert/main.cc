@@ -23,7 +23,9 @@ int main(int argc, char** argv) {
         "Units: lengths in particle diameters sigma, velocities in sigma*omega0, times in 1/omega0, masses in\n"
         "particle masses (reduced units: tell readers that convert units not to, e.g. MDAnalysis'\n"
         "convert_units=False). Positions are wrapped into [0, L), written exactly (shortest round-trip form).\n"
-        "An XYZ frame can start a new run: coolgas-simulate with system.init = \"file\", system.from = FILE."};
+        "An XYZ frame can start a new run: coolgas-simulate with system.init = \"file\", system.from = FILE.\n"
+        "A 2D file (disks): z = 0 in both formats; xyz writes Lattice=\"L 0 0 0 L 0 0 0 1\" pbc=\"T T F\" (periodic in\n"
+        "the plane, as ASE reads a 2D system), lammps the z bounds -0.5 0.5 of a LAMMPS run with `dimension 2`."};
     app.add_option("trajectory", o.input, "trajectory file (H5MD, written by coolgas-simulate)")->required();
     app.add_option("--format", format, "xyz or lammps")->check(CLI::IsMember({"xyz", "lammps"}))->capture_default_str();
     auto* time = coolgas::add_dump_selection(app, o.times, o.exact_time, "only the dump nearest this time (default: every dump)");

@@ -13,8 +13,8 @@ namespace coolgas {
 
 namespace {
 
-XyzFrame xyz_of(const Frame& f) {
-  XyzFrame x{f.L, f.time, f.step, std::nullopt, f.position, f.velocity, f.diameter, f.mass, {}};
+XyzFrame xyz_of(const Frame& f, int dimension) {
+  XyzFrame x{f.L, dimension, f.time, f.step, std::nullopt, f.position, f.velocity, f.diameter, f.mass, {}};
   x.id.resize(f.particles());
   for (std::size_t i = 0; i < x.id.size(); ++i) x.id[i] = f.id.empty() ? std::int64_t(i) : f.id[i];
   return x;
@@ -25,7 +25,7 @@ XyzFrame xyz_of(const Frame& f) {
 void run_convert(const ConvertOptions& opt, std::ostream& out) {
   for (double t : opt.times)
     if (!std::isfinite(t)) throw InputError("--time " + format_number(t) + ": a time is a finite number [1/omega0]");
-  const Trajectory t(opt.input, kPosition | kVelocity | kImage | kDiameter);
+  const Trajectory t(opt.input, kPosition | kVelocity | kImage | kDiameter | kAnyDimension);
   const std::vector<std::size_t> dumps =
       opt.last ? std::vector<std::size_t>{t.dump_times().size() - 1} : t.dumps_nearest(opt.times, opt.exact_time);
   Provenance provenance{{"tool", "coolgas-convert"}, {"version", program_version()}};
@@ -33,8 +33,8 @@ void run_convert(const ConvertOptions& opt, std::ostream& out) {
   Frame f;
   for (std::size_t dump : dumps) {
     t.read(dump, f);
-    if (opt.format == ExportFormat::kXyz) write_xyz_frame(out, xyz_of(f), provenance);
-    else write_lammps_frame(out, f);
+    if (opt.format == ExportFormat::kXyz) write_xyz_frame(out, xyz_of(f, t.dimension()), provenance);
+    else write_lammps_frame(out, f, t.dimension());
   }
 }
 

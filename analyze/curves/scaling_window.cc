@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "common/dimension_line.h"
 #include "common/error.h"
 
 namespace coolgas {
@@ -11,7 +12,7 @@ namespace {
 
 constexpr double kQuarterDecade = 1.778;  // 10^(1/4), rounded as pipelines/exponents.sh has it
 constexpr double kBurgers = 1.5;
-constexpr double kCrossoverX = 0.1;  // x = t / L^(5/2) at the finite-size crossover
+constexpr double kCrossoverX = 0.1;  // x = t / L^z at the finite-size crossover
 
 std::string short_number(double x) {
   char buf[32];
@@ -50,9 +51,15 @@ std::optional<double> past_haff(const Table& table, const FitColumns& columns, d
   return haff ? std::nullopt : steep;
 }
 
+double crossover_z(int dimension) { return (dimension + 2) / 2.0; }
+
+std::string crossover_text(const Table& table) {
+  return dimension_of(table) == 3 ? "0.1 L^(5/2)" : "0.1 L^" + short_number(crossover_z(dimension_of(table)));
+}
+
 double finite_size_crossover(const Table& table) {
   const auto L = box_side(table);
-  return L ? kCrossoverX * std::pow(*L, 2.5) : INFINITY;
+  return L ? kCrossoverX * std::pow(*L, crossover_z(dimension_of(table))) : INFINITY;
 }
 
 ChosenWindow scaling_window(const Table& table, const FitColumns& columns) {
@@ -61,14 +68,14 @@ ChosenWindow scaling_window(const Table& table, const FitColumns& columns) {
   if (!start)
     throw InputError(table.source + ": give --t-window TMIN:TMAX: " + columns.E +
                      "(t) does not leave Haff's law (t^-1, then no steeper than t^-3/2)" +
-                     (std::isfinite(end) ? " before 0.1 L^(5/2) = " + short_number(end) : std::string()));
+                     (std::isfinite(end) ? " before " + crossover_text(table) + " = " + short_number(end) : std::string()));
   ChosenWindow c;
   c.window.lo = *start;
   c.rule = "no --t-window: fitting t >= " + short_number(*start) + " (past Haff's law: t^-1 to t^-3/2)";
   if (std::isfinite(end)) {
     c.window.hi = end;
     c.rule = "no --t-window: fitting t = " + short_number(*start) + " to " + short_number(end) +
-             " (past Haff's law: t^-1 to t^-3/2; before the finite-size crossover 0.1 L^(5/2), L = " +
+             " (past Haff's law: t^-1 to t^-3/2; before the finite-size crossover " + crossover_text(table) + ", L = " +
              short_number(*box_side(table)) + ")";
   }
   return c;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <string>
 
 #include "analyze/energy/grid.h"
 #include "common/error.h"
@@ -64,10 +66,16 @@ EnergyRun load_energy_run(const std::string& path) {
 }
 
 void require_same_physics(const std::vector<EnergyRun>& runs) {
-  for (std::size_t i = 1; i < runs.size(); ++i)
-    if (auto d = physics_difference(runs[0].info.params, runs[i].info.params))
-      throw InputError("runs differ in their parameters, cannot average them: " + *d + " (" + runs[0].info.path +
+  for (std::size_t i = 1; i < runs.size(); ++i) {
+    // The dimension is the box's, not a /parameters field: compared first.
+    const int d0 = runs[0].info.dimension, d = runs[i].info.dimension;
+    const std::optional<std::string> diff =
+        d0 != d ? "dimension = " + std::to_string(d0) + " vs " + std::to_string(d)
+                : physics_difference(runs[0].info.params, runs[i].info.params);
+    if (diff)
+      throw InputError("runs differ in their parameters, cannot average them: " + *diff + " (" + runs[0].info.path +
                        " vs " + runs[i].info.path + "); only the seed may differ");
+  }
 }
 
 std::vector<EnergyRow> ensemble_energy(const std::vector<EnergyRun>& runs, int per_decade) {

@@ -3,6 +3,7 @@
 #include <ostream>
 
 #include "analyze/energy/ensemble.h"
+#include "common/dimension_line.h"
 #include "common/error.h"
 #include "common/tsv.h"
 
@@ -22,6 +23,7 @@ Provenance energy_provenance(const std::vector<EnergyRun>& runs, int per_decade)
   p.emplace_back("runs", std::to_string(runs.size()));
   p.emplace_back("seeds", seeds);
   for (auto& entry : physics_provenance(runs[0].info.params)) p.push_back(std::move(entry));
+  add_dimension_line(p, runs[0].info.dimension);
   p.emplace_back("simulator_version", runs[0].info.params.program_version);
   p.emplace_back("per_decade", std::to_string(per_decade));
   return p;

@@ -42,10 +42,10 @@ void for_each_contact(const std::uint64_t* a, const std::uint64_t* b, int words,
 // every contact once. Runs connect cells along x, so runs plus contacts
 // connect exactly the face-adjacent occupied cells. With ncell <= 2 the
 // periodic neighbours are interior ones (or the cell itself) and are not
-// linked again.
+// linked again; a 2D grid's single plane has no neighbour along z.
 template <class OnLink>
 void walk_plane_contacts(const CellOccupancy& occ, const CellRuns& runs, std::int64_t k, OnLink&& on_link) {
-  const int n = occ.grid().per_side(), words = occ.words_per_row();
+  const int n = occ.grid().per_side(), words = occ.words_per_row(), planes = occ.grid().planes();
   const bool periodic = n > 2;
   for (std::int64_t j = 0; j < n; ++j) {
     const std::int64_t r = j + n * k;
@@ -57,7 +57,7 @@ void walk_plane_contacts(const CellOccupancy& occ, const CellRuns& runs, std::in
     if (j > 0) link_rows(r - 1);
     if (k > 0) link_rows(r - n);
     if (periodic && j == n - 1) link_rows(n * k);
-    if (periodic && k == n - 1) link_rows(j);
+    if (planes > 2 && k == planes - 1) link_rows(j);
   }
 }
 

@@ -1,5 +1,6 @@
 // The paper's cluster grid: the periodic box of side L cut into cubic cells
-// of side about one particle diameter.
+// of side about one particle diameter (in 2D, square cells: the same grid
+// with a single plane, k = 0, every disk's z being 0).
 //
 // The paper uses cells of side exactly σ = 1, which tiles the box only when L
 // is an integer. We use ncell = floor(L) cells per side of width
@@ -19,14 +20,17 @@ namespace coolgas {
 
 class ClusterGrid {
  public:
-  // Grid for a periodic box of side L (InputError unless 1 <= L < 1251: the
-  // labeller's links are 32-bit).
-  explicit ClusterGrid(double L);
+  // Grid for a periodic box of side L in `dimension` 3 or 2 (InputError
+  // unless 1 <= L < 1251 in 3D, L < 40001 in 2D: the labeller's links are
+  // 32-bit).
+  explicit ClusterGrid(double L, int dimension = 3);
 
   int per_side() const { return n_; }
+  int dimension() const { return dimension_; }
+  int planes() const { return dimension_ == 3 ? n_ : 1; }  // along z
   double width() const { return width_; }
   double box() const { return L_; }
-  std::int64_t cells() const { return std::int64_t(n_) * n_ * n_; }
+  std::int64_t cells() const { return std::int64_t(n_) * n_ * planes(); }
 
   // Cell of one coordinate: floor(x / w) clamped to [0, ncell-1], so positions
   // a round-off outside [0, L) still land in the boundary cell. Computed as
@@ -43,12 +47,13 @@ class ClusterGrid {
 
  private:
   double L_;
+  int dimension_;
   int n_;
   double width_, inv_width_, last_;
 };
 
 // The grid of dump `dump` of the trajectory `path` (box side L): as
-// ClusterGrid(L), with the InputError naming the file and the dump.
-ClusterGrid cluster_grid_of_dump(double L, const std::string& path, std::size_t dump);
+// ClusterGrid(L, dimension), with the InputError naming the file and the dump.
+ClusterGrid cluster_grid_of_dump(double L, const std::string& path, std::size_t dump, int dimension = 3);
 
 }  // namespace coolgas

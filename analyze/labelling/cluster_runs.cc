@@ -5,7 +5,7 @@ namespace coolgas {
 void CellRuns::reset(const ClusterGrid& grid) {
   const std::int64_t n = grid.per_side();
   words_ = static_cast<int>((n + 63) / 64);
-  starts_.resize(static_cast<std::size_t>(n * n * words_));
+  starts_.resize(static_cast<std::size_t>(n * grid.planes() * words_));
   first_.resize(starts_.size());
   total_ = 0;
 }

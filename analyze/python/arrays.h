@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "common/error.h"
+#include "common/trajectory/widen_rows.h"
 #include "common/tsv.h"
 
 namespace coolgas::python {
@@ -31,18 +32,50 @@ py::array_t<T> to_numpy(std::vector<T>&& v, std::vector<py::ssize_t> shape) {
   return py::array_t<T>(shape, owned->data(), free_it);
 }
 
-// An (N, 3) array of finite numbers (positions, velocities) as x0 y0 z0 x1 ...;
-// InputError naming the argument, its shape or the first bad value.
-inline std::span<const double> xyz(const Doubles& a, const char* name) {
-  if (a.ndim() != 2 || a.shape(1) != 3)
-    throw InputError(std::string(name) + " must be an array of shape (N, 3), got " + std::to_string(a.ndim()) +
-                     " dimensions" + (a.ndim() == 2 ? " (N, " + std::to_string(a.shape(1)) + ")" : ""));
-  std::span<const double> s(a.data(), std::size_t(a.size()));
-  for (std::size_t i = 0; i < s.size(); ++i)
-    if (!std::isfinite(s[i]))
-      throw InputError(std::string(name) + "[" + std::to_string(i / 3) + ", " + std::to_string(i % 3) +
-                       "] = " + format_number(s[i]) + " is not a finite number");
-  return s;
+// An (N, 3) array of finite numbers (positions, velocities) as x0 y0 z0 x1 ...,
+// or, for disks, an (N, 2) array as the same 3-vectors with z = 0 (a copy:
+// the libraries take 3 numbers per particle); InputError naming the
+// argument, its shape or the first bad value.
+class PointRows {
+ public:
+  PointRows(const PointRows&) = delete;  // xyz() may point into the object itself
+  PointRows& operator=(const PointRows&) = delete;
+  PointRows(const Doubles& a, const char* name) {
+    if (a.ndim() != 2 || (a.shape(1) != 3 && a.shape(1) != 2))
+      throw InputError(std::string(name) + " must be an array of shape (N, 3), or (N, 2) for disks, got " +
+                       std::to_string(a.ndim()) + " dimensions" +
+                       (a.ndim() == 2 ? " (N, " + std::to_string(a.shape(1)) + ")" : ""));
+    dimension_ = int(a.shape(1));
+    const std::span<const double> s(a.data(), std::size_t(a.size()));
+    for (std::size_t i = 0; i < s.size(); ++i)
+      if (!std::isfinite(s[i]))
+        throw InputError(std::string(name) + "[" + std::to_string(i / dimension_) + ", " +
+                         std::to_string(i % dimension_) + "] = " + format_number(s[i]) + " is not a finite number");
+    if (dimension_ == 3) {
+      xyz_ = s;
+      return;
+    }
+    widened_.assign(s.begin(), s.end());
+    widen_to_three(widened_, s.size() / 2, 2);
+    xyz_ = widened_;
+  }
+  std::span<const double> xyz() const { return xyz_; }
+  int dimension() const { return dimension_; }
+
+ private:
+  int dimension_ = 3;
+  std::vector<double> widened_;  // 2D only
+  std::span<const double> xyz_;
+};
+
+// The rows of a 3-wide frame array (n rows) as an (n, d) numpy array: a 2D
+// file's frames hold z = 0 (common/trajectory/widen_rows.h), dropped here.
+template <class T>
+py::array_t<T> rows_of(std::vector<T>&& v, std::size_t n, int d) {
+  for (std::size_t i = 0; d < 3 && i < n; ++i)
+    for (int k = 0; k < d; ++k) v[i * std::size_t(d) + std::size_t(k)] = v[3 * i + std::size_t(k)];
+  v.resize(n * std::size_t(d));
+  return to_numpy(std::move(v), {py::ssize_t(n), py::ssize_t(d)});
 }
 
 // A 1-D array of finite numbers (masses, times, energies).

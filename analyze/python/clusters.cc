@@ -17,12 +17,12 @@ ClusterTable table_of(const std::string& name) {
 
 // Labels and the size table: (rank per particle, mass per cluster, smallest cell per cluster), largest first.
 py::tuple label(const Doubles& positions, double L) {
-  const auto pos = xyz(positions, "positions");
-  const ClusterGrid grid(L);
+  const PointRows rows(positions, "positions");
+  const ClusterGrid grid(L, rows.dimension());
   ClusterLabeller labeller;
-  labeller.label(grid, pos);
+  labeller.label(grid, rows.xyz());
   const std::vector<Cluster> ranked = labeller.ranked();
-  std::vector<std::int32_t> ranks = particle_ranks(grid, labeller, ranked, pos);
+  std::vector<std::int32_t> ranks = particle_ranks(grid, labeller, ranked, rows.xyz());
   std::vector<std::int64_t> mass, first_cell;
   for (const Cluster& c : ranked) {
     mass.push_back(c.mass);
@@ -39,14 +39,15 @@ py::dict table(const Doubles& positions, double L, double t, const std::string& 
                const std::optional<Doubles>& masses, std::int64_t slots) {
   if (bins_per_decade < 1) throw InputError("bins_per_decade must be >= 1, got " + std::to_string(bins_per_decade));
   const ClusterTable kind = table_of(table);
-  const auto pos = xyz(positions, "positions");
+  const PointRows rows(positions, "positions");
+  const auto pos = rows.xyz();
   const auto agg = masses ? values(*masses, "masses") : std::span<const double>();
   const std::int64_t n = slots > 0 ? slots : std::int64_t(pos.size() / 3);
   if (n < 1) throw InputError("positions holds no particle; a cluster table needs at least one");
   MassHistogram hist(bins_per_decade, n);
   ClusterLabeller labeller;
-  fill_cluster_masses(hist, labeller, L, pos, agg);
-  const TableBlock b = cluster_block(kind, t, L, hist);
+  fill_cluster_masses(hist, labeller, L, pos, agg, rows.dimension());
+  const TableBlock b = cluster_block(kind, t, L, hist, rows.dimension());
   return table_dict(cluster_columns(kind), b.rows, b.comment);
 }
 

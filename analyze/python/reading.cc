@@ -60,7 +60,8 @@ bool is_coolgas_file(const std::string& path) {
 // A coolgas trajectory opened once; the dumps complete at that moment.
 class TrajectoryView {
  public:
-  explicit TrajectoryView(const std::string& path) : traj_(path, kPosition | kVelocity | kImage | kDiameter) {}
+  explicit TrajectoryView(const std::string& path)
+      : traj_(path, kPosition | kVelocity | kImage | kDiameter | kAnyDimension) {}
 
   py::dict read(std::size_t dump) const {
     if (dump >= traj_.dump_times().size())
@@ -69,14 +70,15 @@ class TrajectoryView {
     Frame f;
     traj_.read(dump, f);
     const auto n = py::ssize_t(f.particles());
+    const int dim = traj_.dimension();  // rows of d numbers: (n, 2) for disks
     py::dict d;
     d["index"] = f.dump;
     d["t"] = f.time;
     d["step"] = f.step;
     d["L"] = f.L;
-    d["positions"] = to_numpy(std::move(f.position), {n, 3});
-    d["velocities"] = to_numpy(std::move(f.velocity), {n, 3});
-    d["images"] = to_numpy(std::move(f.image), {n, 3});
+    d["positions"] = rows_of(std::move(f.position), std::size_t(n), dim);
+    d["velocities"] = rows_of(std::move(f.velocity), std::size_t(n), dim);
+    d["images"] = rows_of(std::move(f.image), std::size_t(n), dim);
     if (traj_.aggregates()) {
       d["ids"] = to_numpy(std::move(f.id), {n});
       d["masses"] = to_numpy(std::move(f.mass), {n});
@@ -127,6 +129,7 @@ void bind_reading(py::module_& m) {
                              })
       .def_property_readonly("slots", [](const TrajectoryView& v) { return v.trajectory().particles(); })
       .def_property_readonly("aggregates", [](const TrajectoryView& v) { return v.trajectory().aggregates(); })
+      .def_property_readonly("dimension", [](const TrajectoryView& v) { return v.trajectory().dimension(); })
       .def("nearest", [](const TrajectoryView& v, double t) { return v.trajectory().nearest_dump(t); }, py::arg("t"))
       .def("read", &TrajectoryView::read, py::arg("dump"));
   m.def("h5md_frame", [](const std::string& path, std::size_t index) { return h5md_frame_dict(read_h5md_frame_at(path, index)); },

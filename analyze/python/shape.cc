@@ -22,16 +22,18 @@ py::dict table(const Doubles& positions, double L, double t, const std::string& 
   const ShapeTable kind = table_of(table);
   check_shape_options(bins_per_decade, min_mass);
   const Window fit = parse_window(fit_mass, "fit_mass");
-  const auto pos = xyz(positions, "positions");
+  const PointRows rows(positions, "positions");
+  const auto pos = rows.xyz();
+  const int d = rows.dimension();
   const auto agg = masses ? values(*masses, "masses") : std::span<const double>();
   for (std::size_t i = 0; i < agg.size(); ++i)
     if (!(agg[i] >= 1))
       throw InputError("masses[" + std::to_string(i) + "] = " + format_number(agg[i]) + " is not a mass >= 1 particle");
   if (pos.empty() && agg.empty()) throw InputError("positions holds no particle; a shape table needs at least one");
   ClusterShapes shapes;
-  const std::vector<ClusterShape> s = masses ? aggregate_shapes(agg) : shapes.of_particles(ClusterGrid(L), pos);
-  const TableBlock b = shape_block(kind, t, s, mass_radius(s, bins_per_decade, fit), min_mass);
-  return table_dict(shape_columns(kind), b.rows, b.comment);
+  const std::vector<ClusterShape> s = masses ? aggregate_shapes(agg, d) : shapes.of_particles(ClusterGrid(L, d), pos);
+  const TableBlock b = shape_block(kind, t, s, mass_radius(s, bins_per_decade, fit), min_mass, d);
+  return table_dict(shape_columns(kind, d), b.rows, b.comment);
 }
 
 }  // namespace

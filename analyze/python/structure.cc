@@ -20,20 +20,26 @@ py::dict table(const Doubles& positions, double L, double t, const std::string& 
   const StructureTable kind = table_of(table);
   check_structure_options(grid, peak_fraction, direct_shells);
   if (!(L > 0 && std::isfinite(L))) throw InputError("L = " + format_number(L) + " is not a box side (a number > 0)");
-  const auto pos = xyz(positions, "positions");
+  const PointRows rows(positions, "positions");
+  const auto pos = rows.xyz();
   const std::size_t n = pos.size() / 3;
   if (n == 0) throw InputError("positions holds no particle; S(k) needs at least one");
-  const auto vel = velocities ? xyz(*velocities, "velocities") : std::span<const double>();
-  if (kind != StructureTable::kSpectrum && vel.size() != pos.size())
-    throw InputError("the " + table + " table needs velocities of the positions' shape (" + std::to_string(n) +
-                     ", 3), got " + (velocities ? std::to_string(vel.size() / 3) + " rows" : std::string("none")));
+  const std::optional<PointRows> vel_rows =
+      velocities ? std::optional<PointRows>(std::in_place, *velocities, "velocities") : std::nullopt;
+  const auto vel = vel_rows ? vel_rows->xyz() : std::span<const double>();
+  const bool vel_fits = vel_rows && vel.size() == pos.size() && vel_rows->dimension() == rows.dimension();
+  if (kind != StructureTable::kSpectrum && !vel_fits)
+    throw InputError("the " + table + " table needs velocities of the positions' shape (" + std::to_string(n) + ", " +
+                     std::to_string(rows.dimension()) + "), got " +
+                     (vel_rows ? "(" + std::to_string(vel.size() / 3) + ", " + std::to_string(vel_rows->dimension()) + ")"
+                               : std::string("none")));
   const auto w = masses ? values(*masses, "masses") : std::span<const double>();
   if (masses && w.size() != n)
     throw InputError("masses holds " + std::to_string(w.size()) + " values for " + std::to_string(n) + " positions");
   for (std::size_t i = 0; i < w.size(); ++i)
     if (!(w[i] > 0)) throw InputError("masses[" + std::to_string(i) + "] = " + format_number(w[i]) + " is not > 0");
   const int points = structure_grid_points(grid, L);
-  FrameStructure fs(points);
+  FrameStructure fs(points, rows.dimension());
   const TableBlock b = structure_block(kind, fs, t, L, pos, vel, w, peak_fraction, direct_shells);
   py::dict d = table_dict(structure_columns(kind), b.rows, b.comment);
   d["grid"] = points;

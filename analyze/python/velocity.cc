@@ -17,10 +17,10 @@ VelocityTable table_of(const std::string& name) {
 py::dict table(const Doubles& velocities, double t, const std::string& table, int bins, double ymax, double tail_from,
                double min_count) {
   const VelocityTable kind = table_of(table);
-  const auto v = xyz(velocities, "velocities");
+  const PointRows v(velocities, "velocities");
   check_tail_options(tail_from, min_count);
   ComponentHistogram hist(bins, ymax);
-  const VelocityStats s = velocity_stats(v, hist, tail_from, min_count);
+  const VelocityStats s = velocity_stats(v.xyz(), hist, tail_from, min_count, v.dimension());
   if (kind == VelocityTable::kTail && !s.fit)
     throw InputError("only " + std::to_string(s.tail.size()) + " tail bins with y >= " + format_number(tail_from) +
                      " and >= " + format_number(min_count) +

@@ -24,19 +24,25 @@ std::vector<ClusterShape> ClusterShapes::of_particles(const ClusterGrid& grid, s
                  r[2] + L * img.z - w * double(f / (n * n)));
   }
   std::vector<ClusterShape> out(clusters.size());
-  for (std::size_t k = 0; k < clusters.size(); ++k) out[k] = {shape_of(sums_[k]), unwrapping_.wraps(k)};
+  for (std::size_t k = 0; k < clusters.size(); ++k) out[k] = {shape_of(sums_[k], grid.dimension()), unwrapping_.wraps(k)};
   return out;
 }
 
-std::vector<ClusterShape> aggregate_shapes(std::span<const double> mass) {
+std::vector<ClusterShape> aggregate_shapes(std::span<const double> mass, int dimension) {
   std::vector<ClusterShape> out;
   out.reserve(mass.size());
   for (double m : mass) {
     ClusterShape c;
     c.shape.mass = std::llround(m);
-    const double d = std::cbrt(m), l = d * d / 20;
-    c.shape.lambda = {l, l, l};
-    c.shape.Rg = std::sqrt(3 * l);
+    if (dimension == 3) {
+      const double d = std::cbrt(m), l = d * d / 20;
+      c.shape.lambda = {l, l, l};
+      c.shape.Rg = std::sqrt(3 * l);
+    } else {  // a solid disc of diameter d: <x^2> = (d/2)^2 / 4
+      const double l = m / 16;
+      c.shape.lambda = {l, l, 0};
+      c.shape.Rg = std::sqrt(2 * l);
+    }
     out.push_back(c);
   }
   std::stable_sort(out.begin(), out.end(),

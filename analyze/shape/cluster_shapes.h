@@ -7,7 +7,8 @@
 // not where its particles are, so an aggregate's shape is that of the solid
 // sphere it is in the simulation: diameter d = m^(1/3) (volumes add), all
 // three eigenvalues d^2/20, R_g^2 = (3/5)(d/2)^2, asphericity and
-// prolateness 0, and M ~ R_g^3 exactly.
+// prolateness 0, and M ~ R_g^3 exactly; in 2D the solid disc of diameter
+// m^(1/2) (areas add): both eigenvalues d^2/16, M ~ R_g^2.
 #pragma once
 #include <span>
 #include <vector>
@@ -36,7 +37,7 @@ class ClusterShapes {
   std::vector<GyrationSums> sums_;
 };
 
-// Aggregates of masses `mass` as solid spheres, in order of decreasing mass (stable).
-std::vector<ClusterShape> aggregate_shapes(std::span<const double> mass);
+// Aggregates of masses `mass` as solid spheres (2D: discs), in order of decreasing mass (stable).
+std::vector<ClusterShape> aggregate_shapes(std::span<const double> mass, int dimension = 3);
 
 }  // namespace coolgas

@@ -6,7 +6,20 @@
 
 namespace coolgas {
 
-Shape shape_of(const GyrationSums& g) {
+namespace {
+
+// The eigenvalues (ascending, round-off below 0 set to 0) of the d x d
+// leading block of the gyration tensor G (3 x 3).
+template <int D>
+void eigenvalues(const Eigen::Matrix3d& G, std::array<double, 3>& lambda) {
+  using Matrix = Eigen::Matrix<double, D, D>;
+  const Eigen::SelfAdjointEigenSolver<Matrix> eig(Matrix(G.topLeftCorner<D, D>()), Eigen::EigenvaluesOnly);
+  for (int i = 0; i < D; ++i) lambda[i] = std::max(0.0, eig.eigenvalues()[i]);
+}
+
+}  // namespace
+
+Shape shape_of(const GyrationSums& g, int dimension) {
   Shape out;
   out.mass = g.mass;
   if (g.mass < 2) return out;
@@ -19,16 +32,19 @@ Shape shape_of(const GyrationSums& g) {
   G(0, 1) = G(1, 0) = g.ss[3] / m - c[0] * c[1];
   G(0, 2) = G(2, 0) = g.ss[4] / m - c[0] * c[2];
   G(1, 2) = G(2, 1) = g.ss[5] / m - c[1] * c[2];
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(G, Eigen::EigenvaluesOnly);
-  for (int i = 0; i < 3; ++i) out.lambda[i] = std::max(0.0, eig.eigenvalues()[i]);  // ascending; round-off below 0 is 0
+  if (dimension == 3) eigenvalues<3>(G, out.lambda);
+  else eigenvalues<2>(G, out.lambda);
   const double sum = out.lambda[0] + out.lambda[1] + out.lambda[2];
   out.Rg = std::sqrt(sum);
   if (sum <= 0) return out;
-  const double mean = sum / 3;
+  const double mean = sum / dimension;
   double dev2 = 0, prod = 1;
-  for (double l : out.lambda) dev2 += (l - mean) * (l - mean), prod *= l - mean;
-  out.asphericity = 1.5 * dev2 / (sum * sum);
-  out.prolateness = 27 * prod / (sum * sum * sum);
+  for (int i = 0; i < dimension; ++i) {
+    const double l = out.lambda[std::size_t(i)];
+    dev2 += (l - mean) * (l - mean), prod *= l - mean;
+  }
+  out.asphericity = double(dimension) / double(dimension - 1) * dev2 / (sum * sum);
+  if (dimension == 3) out.prolateness = 27 * prod / (sum * sum * sum);
   return out;
 }
 

@@ -8,6 +8,11 @@
 //   prolateness         P = 27 prod_i (l_i - lbar) / (sum_i l_i)^3, -1/4 (disc) .. 2 (rod)
 //                       (Dima & Thirumalai, J. Phys. Chem. B 108, 6564 (2004)),
 // with lbar = (l1 + l2 + l3)/3. A set of one point has R_g = A = P = 0.
+// In 2D (points in the plane z = 0) the tensor is 2 x 2, eigenvalues
+// l1 <= l2, R_g^2 = l1 + l2, and the asphericity is normalised the same way
+// for d dimensions, A = (d/(d-1)) sum_i (l_i - lbar)^2 / (sum_i l_i)^2
+// = ((l2 - l1)/(l1 + l2))^2: 0 for a disc or square, 1 for a rod; the
+// prolateness is a 3D invariant (0 in 2D, and no column of the 2D tables).
 #pragma once
 #include <array>
 #include <cstdint>
@@ -29,10 +34,11 @@ struct GyrationSums {
 
 struct Shape {
   std::int64_t mass = 0;
-  std::array<double, 3> lambda{};  // ascending
+  std::array<double, 3> lambda{};  // ascending; in 2D the first two (the third 0)
   double Rg = 0, asphericity = 0, prolateness = 0;
 };
 
-Shape shape_of(const GyrationSums& g);
+// The shape of the points in `dimension` 3, or 2 (every z = 0).
+Shape shape_of(const GyrationSums& g, int dimension = 3);
 
 }  // namespace coolgas

@@ -4,7 +4,9 @@
 
 namespace coolgas {
 
-const std::vector<std::string>& shape_columns(ShapeTable table) {
+namespace {
+
+const std::vector<std::string>& all_columns(ShapeTable table) {
   static const std::vector<std::string> mass_radius{"t", "m", "dm", "clusters", "Rg", "Rg_err", "asphericity", "prolateness"},
       series{"t", "d_f", "d_f_err", "fit_bins", "fitted_clusters", "asphericity", "prolateness", "wrapping_fraction"},
       clusters{"t", "mass", "Rg", "lambda1", "lambda2", "lambda3", "asphericity", "prolateness", "wraps"};
@@ -19,31 +21,56 @@ const std::vector<std::string>& shape_columns(ShapeTable table) {
   return clusters;
 }
 
+// A 2D table leaves out the columns of 3D invariants.
+bool in_dimension(const std::string& column, int dimension) {
+  return dimension == 3 || (column != "lambda3" && column != "prolateness");
+}
+
+// The entries of a full row (all_columns order) that the dimension's table has.
+std::vector<double> row_of(ShapeTable table, int dimension, const std::vector<double>& full) {
+  if (dimension == 3) return full;
+  std::vector<double> row;
+  const auto& names = all_columns(table);
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (in_dimension(names[i], dimension)) row.push_back(full[i]);
+  return row;
+}
+
+}  // namespace
+
+std::vector<std::string> shape_columns(ShapeTable table, int dimension) {
+  std::vector<std::string> out;
+  for (const auto& c : all_columns(table))
+    if (in_dimension(c, dimension)) out.push_back(c);
+  return out;
+}
+
 void check_shape_options(int bins_per_decade, std::int64_t min_mass) {
   if (bins_per_decade < 1) throw InputError("--bins-per-decade must be >= 1, got " + std::to_string(bins_per_decade));
   if (min_mass < 1) throw InputError("--min-mass must be >= 1, got " + std::to_string(min_mass));
 }
 
 TableBlock shape_block(ShapeTable table, double t, const std::vector<ClusterShape>& shapes, const MassRadius& mr,
-                       std::int64_t min_mass) {
+                       std::int64_t min_mass, int dimension) {
   TableBlock b;
+  const auto add = [&](const std::vector<double>& full) { b.rows.push_back(row_of(table, dimension, full)); };
   if (table == ShapeTable::kSeries) {
-    b.rows.push_back({t, mr.d_f, mr.d_f_err, double(mr.fit_bins), double(mr.fitted_clusters), mr.asphericity,
-                      mr.prolateness, mr.wrapping_fraction});
+    add({t, mr.d_f, mr.d_f_err, double(mr.fit_bins), double(mr.fitted_clusters), mr.asphericity, mr.prolateness,
+         mr.wrapping_fraction});
     return b;
   }
   b.comment = "t = " + format_number(t) + "; d_f = " + format_number(mr.d_f) + " +- " + format_number(mr.d_f_err) +
               " (" + std::to_string(mr.fit_bins) + " bins); wrapping_fraction = " + format_number(mr.wrapping_fraction);
   if (table == ShapeTable::kMassRadius) {
     for (const MassRadiusBin& m : mr.bins)
-      b.rows.push_back({t, m.m, double(m.dm), double(m.clusters), m.Rg, m.Rg_err, m.asphericity, m.prolateness});
+      add({t, m.m, double(m.dm), double(m.clusters), m.Rg, m.Rg_err, m.asphericity, m.prolateness});
     return b;
   }
   for (const ClusterShape& c : shapes) {
     if (c.shape.mass < min_mass) break;  // ranked by mass
     const Shape& s = c.shape;
-    b.rows.push_back({t, double(s.mass), s.Rg, s.lambda[0], s.lambda[1], s.lambda[2], s.asphericity, s.prolateness,
-                      c.wraps ? 1.0 : 0.0});
+    add({t, double(s.mass), s.Rg, s.lambda[0], s.lambda[1], s.lambda[2], s.asphericity, s.prolateness,
+         c.wraps ? 1.0 : 0.0});
   }
   return b;
 }

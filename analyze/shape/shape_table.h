@@ -15,7 +15,8 @@
 
 namespace coolgas {
 
-const std::vector<std::string>& shape_columns(ShapeTable table);
+// The table's columns; a 2D table (dimension 2) has no lambda3 and no prolateness.
+std::vector<std::string> shape_columns(ShapeTable table, int dimension = 3);
 
 // InputError unless bins_per_decade >= 1 and min_mass >= 1 (the tool's options).
 void check_shape_options(int bins_per_decade, std::int64_t min_mass);
@@ -24,6 +25,6 @@ void check_shape_options(int bins_per_decade, std::int64_t min_mass);
 // block (of at least min_mass particles), each with the d_f summary as its
 // comment, or the series' one row (no comment).
 TableBlock shape_block(ShapeTable table, double t, const std::vector<ClusterShape>& shapes, const MassRadius& mr,
-                       std::int64_t min_mass);
+                       std::int64_t min_mass, int dimension = 3);
 
 }  // namespace coolgas

@@ -25,15 +25,22 @@ const char* table_name(ShapeTable t) {
   return "";
 }
 
+const char* clusters_text(const Trajectory& traj) {
+  if (traj.aggregates())
+    return traj.dimension() == 3 ? "the aggregates of the file (ballistic aggregation) as solid spheres of diameter "
+                                   "m^(1/3): their particles are not recorded, so d_f = 3 by construction"
+                                 : "the aggregates of the file (ballistic aggregation) as solid discs of diameter "
+                                   "m^(1/2): their particles are not recorded, so d_f = 2 by construction";
+  return traj.dimension() == 3 ? "floor(L)^3 cubic cells of side L/floor(L); face neighbours; periodic; each unwrapped "
+                                 "along its own cells; gyration tensor of its particle centres"
+                               : "floor(L)^2 square cells of side L/floor(L); edge neighbours; periodic; each unwrapped "
+                                 "along its own cells; 2 x 2 gyration tensor of its particle centres";
+}
+
 Provenance provenance(const Trajectory& traj, const ShapeOptions& o, const Window& fit) {
   Provenance p = traj.provenance();
   p.emplace_back("table", table_name(o.table));
-  if (traj.aggregates())
-    p.emplace_back("clusters", "the aggregates of the file (ballistic aggregation) as solid spheres of diameter "
-                               "m^(1/3): their particles are not recorded, so d_f = 3 by construction");
-  else
-    p.emplace_back("clusters", "floor(L)^3 cubic cells of side L/floor(L); face neighbours; periodic; each unwrapped "
-                               "along its own cells; gyration tensor of its particle centres");
+  p.emplace_back("clusters", clusters_text(traj));
   p.emplace_back("bins_per_decade", std::to_string(o.bins_per_decade));
   p.emplace_back("fit_mass", fit.text());
   p.emplace_back("d_f", "unweighted fit of <ln R_g> = <ln m>/d_f + c over the mass bins in fit_mass; "
@@ -48,9 +55,10 @@ Provenance provenance(const Trajectory& traj, const ShapeOptions& o, const Windo
 void run_shape(const ShapeOptions& opt, std::ostream& final_out) {
   check_shape_options(opt.bins_per_decade, opt.min_mass);
   const Window fit = parse_window(opt.fit_mass, "--fit-mass");
-  Trajectory traj(opt.input, kPosition);
+  Trajectory traj(opt.input, kPosition | kAnyDimension);
+  const int d = traj.dimension();
   std::ostringstream os;  // written only when every dump has been read
-  TsvWriter out(os, "coolgas-shape", provenance(traj, opt, fit), shape_columns(opt.table));
+  TsvWriter out(os, "coolgas-shape", provenance(traj, opt, fit), shape_columns(opt.table, d));
   ClusterShapes shapes;
   Frame frame;
   const std::vector<std::size_t> dumps = traj.dumps_nearest(opt.times, opt.exact_time);
@@ -58,8 +66,10 @@ void run_shape(const ShapeOptions& opt, std::ostream& final_out) {
     throw_if_interrupted(i, dumps.size(), "dumps");
     traj.read(dumps[i], frame);
     const std::vector<ClusterShape> s =
-        traj.aggregates() ? aggregate_shapes(frame.mass) : shapes.of_particles(cluster_grid_of_dump(frame.L, traj.path(), frame.dump), frame.position);
-    const TableBlock b = shape_block(opt.table, frame.time, s, mass_radius(s, opt.bins_per_decade, fit), opt.min_mass);
+        traj.aggregates() ? aggregate_shapes(frame.mass, d)
+                          : shapes.of_particles(cluster_grid_of_dump(frame.L, traj.path(), frame.dump, d), frame.position);
+    const TableBlock b =
+        shape_block(opt.table, frame.time, s, mass_radius(s, opt.bins_per_decade, fit), opt.min_mass, d);
     if (opt.table == ShapeTable::kSeries) out.append(b);  // a row per dump, not a block
     else out.write(b);
   }

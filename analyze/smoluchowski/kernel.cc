@@ -12,7 +12,7 @@ namespace coolgas::smoluchowski {
 namespace {
 
 const char* kAccepted =
-    "use constant, additive, product, ballistic (eq4) or separable:c,p,q[;c,p,q...] "
+    "use constant, additive, product, ballistic (eq4), ballistic2d, ballistic1d or separable:c,p,q[;c,p,q...] "
     "for K = sum c (i^p j^q + i^q j^p) with c > 0";
 
 [[noreturn]] void reject(const std::string& text, const std::string& why) {
@@ -58,6 +58,19 @@ std::vector<KernelTerm> parse_separable(const std::string& body, const std::stri
 }
 
 }  // namespace
+
+std::vector<KernelTerm> ballistic_terms(int dimension) {
+  switch (dimension) {
+    case 1:  // i^-1/2 + j^-1/2
+      return {{1, -0.5, 0}};
+    case 2:  // (i^-1/2 + j^-1/2)(i^1/2 + j^1/2) = 2 + (i/j)^1/2 + (j/i)^1/2
+      return {{1, 0, 0}, {1, 0.5, -0.5}};
+    default:
+      // (i^-1/2 + j^-1/2)(i^2/3 + 2 i^1/3 j^1/3 + j^2/3) multiplied out: six
+      // products, pairing into three symmetric terms.
+      return {{1, 1.0 / 6, 0}, {2, -1.0 / 6, 1.0 / 3}, {1, -0.5, 2.0 / 3}};
+  }
+}
 
 double Kernel::operator()(double i, double j) const {
   double k = 0;
@@ -115,11 +128,9 @@ Kernel parse_kernel(const std::string& text) {
   } else if (text == "product") {
     k.kind = KernelKind::Product;
     k.terms = {{0.5, 1, 1}};  // ½ (ij + ij)
-  } else if (text == "ballistic" || text == "eq4") {
-    // (i^-1/2 + j^-1/2)(i^2/3 + 2 i^1/3 j^1/3 + j^2/3) multiplied out: six
-    // products, pairing into three symmetric terms.
+  } else if (text == "ballistic" || text == "eq4" || text == "ballistic2d" || text == "ballistic1d") {
     k.kind = KernelKind::Ballistic;
-    k.terms = {{1, 1.0 / 6, 0}, {2, -1.0 / 6, 1.0 / 3}, {1, -0.5, 2.0 / 3}};
+    k.terms = ballistic_terms(text == "ballistic2d" ? 2 : text == "ballistic1d" ? 1 : 3);
   } else if (text.rfind("separable:", 0) == 0) {
     k.terms = parse_separable(text.substr(10), text);
   } else {

@@ -11,6 +11,14 @@
 //   product         K = i j                    exact, gels at t_g = 1 (½-gain time, c_k(0)=δ_k1)
 //   ballistic       K = (i^-1/2 + j^-1/2)(i^1/3 + j^1/3)^2, the paper's Eq. (4)
 //                   (alias eq4); prefactor 1, homogeneity 1/6
+//   ballistic2d     the same in d = 2 (disks, cross-section ~ diameter ~ m^1/2):
+//                   K = (i^-1/2 + j^-1/2)(i^1/2 + j^1/2), homogeneity 0
+//   ballistic1d     d = 1 (rods, cross-section 1): K = i^-1/2 + j^-1/2, homogeneity -1/2
+//                   In d dimensions K = (i^-1/2 + j^-1/2)(i^1/d + j^1/d)^(d-1):
+//                   relative speed ~ m^-1/2 (equipartition) times the
+//                   cross-section (r_i + r_j)^(d-1), r ~ m^1/d; homogeneity
+//                   lambda = (d-2)/(2d), mean mass ~ t^(1/(1-lambda)) = t^(2d/(d+2)),
+//                   the mean-field theta of ballistic aggregation (t^6/5, t, t^2/3)
 //   separable:c,p,q[;c,p,q...]   the general sum above; c > 0, numbers may be
 //                   fractions such as 1/6 or -1/2
 #pragma once
@@ -26,6 +34,9 @@ struct KernelTerm {
 };
 
 enum class KernelKind { Constant, Additive, Product, Ballistic, Separable };
+
+// The ballistic kernel's terms in dimension d = 1, 2, 3 (3: the paper's Eq. 4).
+std::vector<KernelTerm> ballistic_terms(int dimension);
 
 struct Kernel {
   KernelKind kind = KernelKind::Separable;

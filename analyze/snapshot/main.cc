@@ -21,6 +21,8 @@ int main(int argc, char** argv) {
         "Views: slab (default): particles with |z - L/2| < thickness/2 (aggregates of diameter d: < (thickness + d - 1)/2),\n"
         "seen along z, drawn at their true size;\n"
         "3d: all particles in perspective, at most --max-points of them (every k-th particle).\n"
+        "A 2D file (disks) is drawn whole in its square, every disk at its true size, clusters from unit\n"
+        "squares (coolgas-clusters); --view and --thickness are refused for it.\n"
         "Table on stdout, one row per coloured cluster: rank (1 = largest), mass [particles],\n"
         "fraction = mass/N, shown [particles drawn], rgb (colour as the integer 0xRRGGBB)."};
     app.add_option("trajectory", o.input, "trajectory file (H5MD, written by coolgas-simulate)")->required();
@@ -28,8 +30,9 @@ int main(int argc, char** argv) {
     app.add_option("-o,--output", o.output, "picture to write: .png, .pdf or .svg")->required();
     app.add_flag("--force", o.force, "replace the picture if it exists");
     std::string view = "slab";
-    app.add_option("--view", view, "slab or 3d")->check(CLI::IsMember({"slab", "3d"}))->capture_default_str();
-    app.add_option("--thickness", o.scene.thickness, "slab thickness [sigma]")->capture_default_str();
+    auto* view_opt =
+        app.add_option("--view", view, "slab or 3d (3D files)")->check(CLI::IsMember({"slab", "3d"}))->capture_default_str();
+    auto* thickness_opt = app.add_option("--thickness", o.scene.thickness, "slab thickness [sigma]")->capture_default_str();
     app.add_option("--colored", o.scene.colored, "number of largest clusters drawn in colour (0-9)")
         ->capture_default_str();
     app.add_option("--max-points", o.scene.max_points, "3d view: most particles drawn")->capture_default_str();
@@ -37,6 +40,8 @@ int main(int argc, char** argv) {
     app.add_option("--gnuplot", o.gnuplot, "gnuplot program to run")->capture_default_str();
     if (coolgas::parse_command_line(app, argc, argv)) return 0;
     o.scene.view = view == "3d" ? coolgas::SnapshotView::k3d : coolgas::SnapshotView::kSlab;
+    if (view_opt->count() > 0) o.only_3d = "--view " + view;
+    else if (thickness_opt->count() > 0) o.only_3d = "--thickness " + thickness_opt->as<std::string>();
     coolgas::run_snapshot(o, std::cout);
     return 0;
   });

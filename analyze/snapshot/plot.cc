@@ -106,7 +106,7 @@ std::string script(const SnapshotScene& scene, const PlotOptions& o, const fs::p
     << "set xrange [0:" << format_number(o.L) << "]\nset yrange [0:" << format_number(o.L) << "]\n"
     << "set xlabel 'x [sigma]'\nset ylabel 'y [sigma]'\n";
   const std::string keys = key_entries(scene, o.what);
-  if (o.view == SnapshotView::kSlab) {
+  if (o.view != SnapshotView::k3d) {
     // Circles of radius d/2 in axis units: the particles at their true size.
     s << "set size ratio -1\n"
       << "plot " << quoted(data.string()) << " using 1:2:($5/2):4 with circles fill solid noborder lc rgb variable notitle"

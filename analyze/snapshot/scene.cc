@@ -29,7 +29,7 @@ void check(const SnapshotOptions& o, double L) {
 // A sphere of diameter d is in the slab when it reaches into it by more than
 // a unit sphere's half: for unit spheres, |z - L/2| < thickness/2.
 bool in_view(const SnapshotOptions& o, double L, double z, double d) {
-  return o.view == SnapshotView::k3d || std::abs(z - 0.5 * L) < 0.5 * (o.thickness + d - 1);
+  return o.view != SnapshotView::kSlab || std::abs(z - 0.5 * L) < 0.5 * (o.thickness + d - 1);
 }
 
 }  // namespace
@@ -109,8 +109,9 @@ SnapshotScene make_aggregate_scene(double L, std::span<const double> pos, std::s
     rank[order[r]] = int(r) + 1;
     scene.clusters.push_back({int(r) + 1, std::llround(mass[order[r]]), 0, cluster_colour(int(r) + 1)});
   }
+  const bool disks = opt.view == SnapshotView::kPlane;
   add_points(scene, L, pos, opt, [&](std::size_t p) { return rank[p]; },
-             [&](std::size_t p) { return std::cbrt(mass[p]); });
+             [&](std::size_t p) { return disks ? std::sqrt(mass[p]) : std::cbrt(mass[p]); });
   return scene;
 }
 

@@ -2,7 +2,8 @@
 // cluster like the paper's Fig. 3 (upper panels): the largest clusters in
 // distinct colours, all others grey. For ballistic aggregation the clusters
 // are the aggregates themselves, drawn at their true diameter m^(1/3)
-// (volumes add, unit spheres) and ranked by mass.
+// (volumes add, unit spheres; in the plane of disks m^(1/2), areas add) and
+// ranked by mass.
 #pragma once
 #include <cstdint>
 #include <span>
@@ -14,7 +15,8 @@ namespace coolgas {
 
 enum class SnapshotView {
   kSlab,  // particles with |z - L/2| < thickness/2, seen along z
-  k3d     // all particles in perspective (subsampled to max_points)
+  k3d,    // all particles in perspective (subsampled to max_points)
+  kPlane  // a 2D file: every disk in the square, at true size
 };
 
 struct SnapshotOptions {

@@ -17,7 +17,8 @@ Provenance provenance(const Trajectory& traj, const SnapshotToolOptions& o, cons
   Provenance p = traj.provenance();
   p.emplace_back("time", format_number(o.times.front()));
   p.emplace_back("dump_time", format_number(f.time));
-  p.emplace_back("view", o.scene.view == SnapshotView::kSlab ? "slab" : "3d");
+  const SnapshotView v = o.scene.view;
+  p.emplace_back("view", v == SnapshotView::kSlab ? "slab" : (v == SnapshotView::k3d ? "3d" : "plane"));
   if (o.scene.view == SnapshotView::kSlab) p.emplace_back("thickness", format_number(o.scene.thickness));
   if (o.scene.view == SnapshotView::k3d) p.emplace_back("max_points", std::to_string(o.scene.max_points));
   p.emplace_back("colored", std::to_string(o.scene.colored));
@@ -25,9 +26,9 @@ Provenance provenance(const Trajectory& traj, const SnapshotToolOptions& o, cons
   return p;
 }
 
-ClusterGrid cluster_grid(const SnapshotToolOptions& o, const Frame& frame) {
+ClusterGrid cluster_grid(const SnapshotToolOptions& o, const Frame& frame, int dimension) {
   try {
-    return ClusterGrid(frame.L);
+    return ClusterGrid(frame.L, dimension);
   } catch (const InputError& e) {
     throw InputError(o.input + ": " + e.what());
   }
@@ -41,6 +42,18 @@ std::string title(const SnapshotToolOptions& o, const Frame& f) {
   return t;
 }
 
+// A 2D file is drawn whole in its plane: the 3D views and the slab's
+// thickness do not apply to it.
+SnapshotToolOptions for_dimension(const SnapshotToolOptions& o, const Trajectory& traj) {
+  if (traj.dimension() == 3) return o;
+  if (!o.only_3d.empty())
+    throw InputError(o.input + ": " + o.only_3d + " is for 3D trajectories; this one is " +
+                     std::to_string(traj.dimension()) + "D (disks), drawn whole in its plane without --view or --thickness");
+  SnapshotToolOptions plane = o;
+  plane.scene.view = SnapshotView::kPlane;
+  return plane;
+}
+
 }  // namespace
 
 void run_snapshot(const SnapshotToolOptions& o, std::ostream& os) {
@@ -50,20 +63,22 @@ void run_snapshot(const SnapshotToolOptions& o, std::ostream& os) {
     throw InputError("coolgas-snapshot draws one dump: give one --time, not " + std::to_string(o.times.size()));
   const PictureFormat format = picture_format(o.output);
   check_output_file(o.output, o.force);
-  Trajectory traj(o.input, kPosition);
+  const Trajectory traj(o.input, kPosition | kAnyDimension);
+  const SnapshotToolOptions opt = for_dimension(o, traj);
   Frame frame;
-  traj.read(traj.dump_at(o.times.front(), o.exact_time), frame);
-  const SnapshotScene scene = traj.aggregates() ? make_aggregate_scene(frame.L, frame.position, frame.mass, frame.id, o.scene)
-                                                : make_scene(cluster_grid(o, frame), frame.position, o.scene);
-  const PlotOptions plot{.title = title(o, frame),
+  traj.read(traj.dump_at(opt.times.front(), opt.exact_time), frame);
+  const SnapshotScene scene =
+      traj.aggregates() ? make_aggregate_scene(frame.L, frame.position, frame.mass, frame.id, opt.scene)
+                        : make_scene(cluster_grid(opt, frame, traj.dimension()), frame.position, opt.scene);
+  const PlotOptions plot{.title = title(opt, frame),
                          .L = frame.L,
-                         .view = o.scene.view,
+                         .view = opt.scene.view,
                          .size_px = o.size_px,
                          .what = traj.aggregates() ? "aggregate" : "cluster",
                          .gnuplot = o.gnuplot,
                          .format = format};
   render_picture(scene, plot, o.output);
-  TsvWriter out(os, "coolgas-snapshot", provenance(traj, o, frame), {"rank", "mass", "fraction", "shown", "rgb"});
+  TsvWriter out(os, "coolgas-snapshot", provenance(traj, opt, frame), {"rank", "mass", "fraction", "shown", "rgb"});
   for (const auto& c : scene.clusters)
     out.row(
         {double(c.rank), double(c.mass), double(c.mass) / double(traj.particles()), double(c.shown), double(c.rgb)});

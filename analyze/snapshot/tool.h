@@ -18,6 +18,7 @@ struct SnapshotToolOptions {
   std::string output;
   bool force = false;  // --force: replace an existing picture
   SnapshotOptions scene;
+  std::string only_3d;  // "--view 3d", "--thickness 4" when given: options a 2D file refuses
   int size_px = 900;
   std::string gnuplot = "gnuplot";
 };

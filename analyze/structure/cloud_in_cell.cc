@@ -25,24 +25,24 @@ Split split(double x, double scale, int n) {
 
 void CloudInCell::assign(FourierGrid& grid, double L, std::span<const double> positions,
                          std::span<const double> weights) {
-  const int n = grid.n();
+  const int n = grid.n(), depth = grid.depth();  // depth 1 in 2D: every z is 0, one plane
   const double scale = n / L;
   const std::size_t count = positions.size() / 3;
   // Counting sort by the lower z plane.
   plane_.resize(count);
-  start_.assign(std::size_t(n) + 1, 0);
+  start_.assign(std::size_t(depth) + 1, 0);
   for (std::size_t p = 0; p < count; ++p) {
-    plane_[p] = std::uint16_t(split(positions[3 * p + 2], scale, n).lo);
+    plane_[p] = std::uint16_t(split(positions[3 * p + 2], scale, depth).lo);
     ++start_[plane_[p] + 1];
   }
-  for (int k = 0; k < n; ++k) start_[k + 1] += start_[k];
+  for (int k = 0; k < depth; ++k) start_[k + 1] += start_[k];
   sorted_.resize(count);
   for (std::size_t p = 0; p < count; ++p)
     sorted_[start_[plane_[p]]++] = {positions[3 * p], positions[3 * p + 1], positions[3 * p + 2],
                                     weights.empty() ? 1.0 : weights[p]};
   double* g = grid.real();
   for (const Point& q : sorted_) {
-    const Split x = split(q.x, scale, n), y = split(q.y, scale, n), z = split(q.z, scale, n);
+    const Split x = split(q.x, scale, n), y = split(q.y, scale, n), z = split(q.z, scale, depth);
     const double wx[2] = {1 - x.f, x.f}, wy[2] = {1 - y.f, y.f}, wz[2] = {q.w * (1 - z.f), q.w * z.f};
     const int iy[2] = {y.lo, y.hi}, iz[2] = {z.lo, z.hi};
     for (int c = 0; c < 2; ++c)

@@ -8,6 +8,7 @@
 // 0 <= kx <= n/2 is complex()[kx + (n/2+1)*(iy + n*iz)], where iy, iz are
 // ky, kz mod n; the other half of k space is its complex conjugate.
 // The transform is unnormalised: forward() gives sum_x f(x) e^{-i k.x}.
+// A 2D grid (disks) is the same with one plane: n^2 points, iz = kz = 0.
 #pragma once
 #include <fftw3.h>
 
@@ -18,15 +19,17 @@ namespace coolgas {
 
 class FourierGrid {
  public:
-  explicit FourierGrid(int n);  // n even, >= 4
+  explicit FourierGrid(int n, int dimension = 3);  // n even, >= 4; dimension 3 or 2
   ~FourierGrid();
   FourierGrid(const FourierGrid&) = delete;
   FourierGrid& operator=(const FourierGrid&) = delete;
 
   int n() const { return n_; }
+  int dimension() const { return dimension_; }
+  int depth() const { return dimension_ == 3 ? n_ : 1; }  // planes along z
   int padded() const { return 2 * (n_ / 2 + 1); }     // P, real numbers per x row
   int half() const { return n_ / 2 + 1; }             // complex modes per x row
-  std::int64_t modes() const { return std::int64_t(half()) * n_ * n_; }
+  std::int64_t modes() const { return std::int64_t(half()) * n_ * depth(); }
   std::int64_t real_index(int ix, int iy, int iz) const { return ix + std::int64_t(padded()) * (iy + std::int64_t(n_) * iz); }
 
   double* real() { return data_; }
@@ -36,13 +39,13 @@ class FourierGrid {
 
   void clear();     // every real point (and the padding) to 0
   void forward();   // real -> complex
-  void inverse();   // complex (half space) -> real, unnormalised (n^3 times the inverse DFT)
+  void inverse();   // complex (half space) -> real, unnormalised (n^d times the inverse DFT)
 
   // Signed wave number of row index i (0..n-1): i for i <= n/2, else i - n.
   int signed_index(int i) const { return i <= n_ / 2 ? i : i - n_; }
 
  private:
-  int n_;
+  int n_, dimension_;
   double* data_;
   fftw_plan forward_, inverse_;
 };

@@ -25,7 +25,7 @@ std::vector<CorrelationBin> FrameStructure::momentum_correlation(double L, std::
   std::fill(power_.begin(), power_.end(), 0.0);
   const std::size_t count = positions.size() / 3;
   component_.resize(count);
-  for (int a = 0; a < 3; ++a) {
+  for (int a = 0; a < grid_.dimension(); ++a) {
     for (std::size_t j = 0; j < count; ++j) component_[j] = (weights.empty() ? 1.0 : weights[j]) * velocities[3 * j + a];
     grid_.clear();
     cic_.assign(grid_, L, positions, component_);

@@ -15,15 +15,16 @@ namespace coolgas {
 
 class FrameStructure {
  public:
-  explicit FrameStructure(int n) : grid_(n) {}
+  explicit FrameStructure(int n, int dimension = 3) : grid_(n, dimension) {}
   int n() const { return grid_.n(); }
+  int dimension() const { return grid_.dimension(); }
 
   // S(k) shells of the points (weights: one per point, empty = 1 each).
   // Leaves the density's transform in the grid for density_correlation().
   std::vector<Shell> spectrum(double L, std::span<const double> positions, std::span<const double> weights);
   // C(r) of the CIC density; call right after spectrum().
   std::vector<CorrelationBin> density_correlation(double L);
-  // C_v(r) of the momentum field (velocities x0 y0 z0 x1 ...).
+  // C_v(r) of the momentum field (velocities x0 y0 z0 x1 ...; its d components).
   std::vector<CorrelationBin> momentum_correlation(double L, std::span<const double> positions,
                                                    std::span<const double> velocities, std::span<const double> weights);
 

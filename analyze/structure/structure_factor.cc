@@ -48,7 +48,7 @@ std::vector<Shell> shell_average(const FourierGrid& grid, double L, const Weight
   std::vector<ShellSums> sums(last + 1);
   const fftw_complex* f = grid.complex();
   const double dk = 2 * M_PI / L;
-  for (int iz = 0; iz < n; ++iz) {
+  for (int iz = 0; iz < grid.depth(); ++iz) {
     const long c = grid.signed_index(iz);
     for (int iy = 0; iy < n; ++iy) {
       const long b = grid.signed_index(iy);
@@ -113,13 +113,13 @@ class UnitPhase {
 }  // namespace
 
 std::vector<double> direct_structure_factor(double L, std::span<const double> positions,
-                                            std::span<const double> weights, int max_shell) {
+                                            std::span<const double> weights, int max_shell, int dimension) {
   // The modes of shells 1..max_shell in one half space (k and -k give the same |rho|^2).
   struct Mode {
     int a, b, c, shell;
   };
   std::vector<Mode> modes;
-  for (int c = 0; c <= max_shell; ++c)
+  for (int c = 0; c <= (dimension == 3 ? max_shell : 0); ++c)  // 2D: the modes with c = 0
     for (int b = -max_shell; b <= max_shell; ++b)
       for (int a = -max_shell; a <= max_shell; ++a) {
         if (c == 0 && (b < 0 || (b == 0 && a <= 0))) continue;

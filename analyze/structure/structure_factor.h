@@ -1,6 +1,6 @@
 // The static structure factor of a weighted set of points in a periodic box,
 //   S(k) = |sum_j m_j e^{-i k.r_j}|^2 / sum_j m_j,   k = (2 pi / L) (a, b, c), integer a, b, c,
-// averaged over spherical shells of |k|: shell s holds the modes with
+// averaged over spherical shells of |k| (in 2D: k = (2 pi / L) (a, b), circles): shell s holds the modes with
 // s - 1/2 <= |k| L / (2 pi) < s + 1/2, s = 1 .. n/4 (up to half the Nyquist
 // wave number k_N = pi n / L of the grid; k = 0 is left out). Beyond k_N/2
 // the correction below fails: along an axis its shot-noise residual
@@ -47,9 +47,10 @@ Weights weights_of(std::span<const double> weights, std::size_t points);
 std::vector<Shell> shell_average(const FourierGrid& grid, double L, const Weights& w);
 
 // The exact S(k) of the points, averaged over the same modes, for shells
-// 1 .. max_shell: O(points * modes), the check of shell_average.
+// 1 .. max_shell: O(points * modes), the check of shell_average. In 2D
+// (dimension 2; every z is 0) the modes have c = 0.
 std::vector<double> direct_structure_factor(double L, std::span<const double> positions,
-                                            std::span<const double> weights, int max_shell);
+                                            std::span<const double> weights, int max_shell, int dimension = 3);
 
 // Shell of the integer wave vector with a^2 + b^2 + c^2 = m2: round(sqrt(m2)).
 int shell_of(long m2);

@@ -70,10 +70,11 @@ TableBlock structure_block(StructureTable table, FrameStructure& fs, double t, d
   const PeakLength len = peak_length(shells, w.shot, peak_fraction);
   TableBlock b;
   if (table == StructureTable::kSpectrum) {
-    b.comment = spectrum_comment(t, len, shells, direct_structure_factor(L, positions, weights, direct_shells));
+    const int d = fs.dimension();
+    b.comment = spectrum_comment(t, len, shells, direct_structure_factor(L, positions, weights, direct_shells, d));
+    const double volume = d == 3 ? len.L * len.L * len.L : len.L * len.L;  // L_t^d
     for (const Shell& s : shells)
-      b.rows.push_back({t, double(s.index), s.k, s.S, s.S_err, s.modes, s.k * len.L,
-                        len.L > 0 ? s.S / (len.L * len.L * len.L) : 0.0});
+      b.rows.push_back({t, double(s.index), s.k, s.S, s.S_err, s.modes, s.k * len.L, len.L > 0 ? s.S / volume : 0.0});
     return b;
   }
   const auto c = fs.density_correlation(L);

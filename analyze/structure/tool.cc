@@ -26,12 +26,13 @@ const char* table_name(StructureTable t) {
 }
 
 Provenance provenance(const Trajectory& traj, const StructureOptions& o, int n, double L) {
+  const std::string points = traj.dimension() == 3 ? "^3 points" : "^2 points";
   Provenance p = traj.provenance();
   p.emplace_back("table", table_name(o.table));
   p.emplace_back("density", traj.aggregates() ? "aggregates weighted by their mass (ballistic aggregation): S of "
                                                  "their particles, each at its aggregate's centre"
                                                : "particles, unit weight");
-  p.emplace_back("grid", std::to_string(n) + "^3 points, spacing " + format_number(L / n) + " sigma");
+  p.emplace_back("grid", std::to_string(n) + points + ", spacing " + format_number(L / n) + " sigma");
   p.emplace_back("assignment", "cloud in cell; S = s + (|rho_grid|^2/M - s C1)/W^2 (Jing 2005, ApJ 620, 559)");
   p.emplace_back("shells", "|k| L/(2 pi) rounded, 1 .. grid/4 (k up to half the grid's Nyquist wave number)");
   p.emplace_back("peak_fraction", format_number(o.peak_fraction));
@@ -50,7 +51,7 @@ std::span<const double> frame_weights(const Trajectory& traj, const Frame& f) {
 void run_structure(const StructureOptions& opt, std::ostream& final_out) {
   check_structure_options(opt.grid, opt.peak_fraction, opt.direct_shells);
   const bool velocity = opt.table != StructureTable::kSpectrum;
-  Trajectory traj(opt.input, velocity ? (kPosition | kVelocity) : kPosition);
+  Trajectory traj(opt.input, (velocity ? (kPosition | kVelocity) : kPosition) | kAnyDimension);
   const std::vector<std::size_t> dumps = traj.dumps_nearest(opt.times, opt.exact_time);
   if (dumps.empty()) throw InputError(opt.input + ": the trajectory holds no dumps");
   Frame frame;
@@ -58,7 +59,7 @@ void run_structure(const StructureOptions& opt, std::ostream& final_out) {
   const int n = structure_grid_points(opt.grid, frame.L);
   std::ostringstream os;  // written only when every dump has been read
   TsvWriter out(os, "coolgas-structure", provenance(traj, opt, n, frame.L), structure_columns(opt.table));
-  FrameStructure fs(n);
+  FrameStructure fs(n, traj.dimension());
   for (std::size_t i = 0; i < dumps.size(); ++i) {
     throw_if_interrupted(i, dumps.size(), "dumps");
     if (i > 0) traj.read(dumps[i], frame);

@@ -9,12 +9,13 @@
 
 namespace coolgas {
 
-// kappa + 5/3 = R = a / b² with a = <s⁴>, b = <s²> (s the speed). Its standard
-// error by the delta method (first-order expansion of R in the sample means):
+// kappa + (d+2)/d = R = a / b² with a = <s⁴>, b = <s²> (s the speed). Its
+// standard error by the delta method (first-order expansion of R in the sample means):
 //   Var(R) = [Var(s⁴)/b⁴ - 4a Cov(s⁴, s²)/b⁵ + 4a² Var(s²)/b⁶] / N.
-// For a Maxwellian (s² ~ χ²₃ in units of T: moments 3, 15, 105, 945) this is
-// 40/(27 N); the velocity tests check that value.
-SpeedMoments speed_moments(std::span<const double> v) {
+// For a Maxwellian in 3D (s² ~ χ²₃ in units of T: moments 3, 15, 105, 945)
+// this is 40/(27 N); in 2D (χ²₂: 2, 8, 48, 384) it is 4/N. The velocity
+// tests check both values.
+SpeedMoments speed_moments(std::span<const double> v, int dimension) {
   const std::size_t n = v.size() / 3;
   if (n < 2) throw InputError("velocity statistics need at least 2 particles, got " + std::to_string(n));
   auto speed2 = [&](std::size_t p) {
@@ -39,7 +40,8 @@ SpeedMoments speed_moments(std::span<const double> v) {
   var4 /= N - 1;
   cov /= N - 1;
   const double var_r = (var4 / std::pow(b, 4) - 4 * a * cov / std::pow(b, 5) + 4 * a * a * var2 / std::pow(b, 6)) / N;
-  return {std::int64_t(n), std::sqrt(b / 3), a / (b * b) - 5.0 / 3.0, std::sqrt(std::max(var_r, 0.0))};
+  return {std::int64_t(n), std::sqrt(b / dimension), a / (b * b) - maxwellian_speed_ratio(dimension),
+          std::sqrt(std::max(var_r, 0.0))};
 }
 
 ComponentHistogram::ComponentHistogram(int bins, double ymax) : ymax_(ymax) {
@@ -52,13 +54,15 @@ ComponentHistogram::ComponentHistogram(int bins, double ymax) : ymax_(ymax) {
   count_.assign(static_cast<std::size_t>(bins), 0);
 }
 
-void ComponentHistogram::fill(std::span<const double> v, double v_rms) {
+void ComponentHistogram::fill(std::span<const double> v, double v_rms, int dimension) {
   std::fill(count_.begin(), count_.end(), 0);
-  samples_ = static_cast<std::int64_t>(v.size());
+  const std::size_t d = static_cast<std::size_t>(dimension);
+  samples_ = static_cast<std::int64_t>(v.size() / 3 * d);
   const double scale = 1.0 / (v_rms * width_);
   const double nb = double(count_.size());
-  for (double c : v) {
-    const double u = c * scale + 0.5 * nb;  // bin coordinate: 0 at y = -ymax
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (i % 3 >= d) continue;  // a 2D file's vz = 0 is no sample
+    const double u = v[i] * scale + 0.5 * nb;  // bin coordinate: 0 at y = -ymax
     if (u >= 0 && u < nb) ++count_[static_cast<std::size_t>(u)];
   }
 }

@@ -56,14 +56,14 @@ void run_velocity(const VelocityOptions& opt, std::ostream& final_out) {
   std::ostringstream os;
   check_tail_options(opt.tail_from, opt.min_count);
   ComponentHistogram hist(opt.bins, opt.ymax);
-  Trajectory traj(opt.input, kVelocity);
+  Trajectory traj(opt.input, kVelocity | kAnyDimension);
   TsvWriter out(os, "coolgas-velocity", provenance(traj, opt), velocity_columns(opt.table));
   Frame frame;
   const std::vector<std::size_t> dumps = traj.dumps_nearest(opt.times, opt.exact_time);
   for (std::size_t i = 0; i < dumps.size(); ++i) {
     throw_if_interrupted(i, dumps.size(), "dumps");
     traj.read(dumps[i], frame);
-    const VelocityStats s = velocity_stats(frame.velocity, hist, opt.tail_from, opt.min_count);
+    const VelocityStats s = velocity_stats(frame.velocity, hist, opt.tail_from, opt.min_count, traj.dimension());
     if (opt.table == VelocityTable::kTail && !s.fit) no_tail(traj, frame, opt, s.tail.size());
     const TableBlock b = velocity_block(opt.table, frame.time, hist, s, opt.tail_from);
     if (opt.table == VelocityTable::kSeries) {

@@ -30,10 +30,10 @@ const std::vector<std::string>& velocity_columns(VelocityTable t) {
 }
 
 VelocityStats velocity_stats(std::span<const double> velocities, ComponentHistogram& hist, double tail_from,
-                             double min_count) {
+                             double min_count, int dimension) {
   VelocityStats s;
-  s.moments = speed_moments(velocities);
-  hist.fill(velocities, s.moments.v_rms);
+  s.moments = speed_moments(velocities, dimension);
+  hist.fill(velocities, s.moments.v_rms, dimension);
   s.tail = tail_points(hist, tail_from, min_count);
   s.fit = fit_tail(s.tail);
   return s;

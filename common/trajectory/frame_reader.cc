@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "common/dimension_line.h"
 #include "common/error.h"
 #include "common/memory.h"
 #include "common/tool_main.h"
@@ -232,10 +233,12 @@ void Trajectory::keep_present(Frame& frame) const {
 Provenance Trajectory::provenance() const {
   Provenance p{{"input", path_}};
   const std::string parameters(layout::kParameters);
-  if (!h5::exists(file_.id(), parameters)) return p;
-  const RunParameters run = read_file_parameters(file_.id(), path_);
-  p.emplace_back("seed", std::to_string(run.seed));
-  for (auto& entry : physics_provenance(run)) p.push_back(std::move(entry));
+  if (h5::exists(file_.id(), parameters)) {
+    const RunParameters run = read_file_parameters(file_.id(), path_);
+    p.emplace_back("seed", std::to_string(run.seed));
+    for (auto& entry : physics_provenance(run)) p.push_back(std::move(entry));
+  }
+  add_dimension_line(p, dimension_);
   return p;
 }
 

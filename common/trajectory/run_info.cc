@@ -33,7 +33,7 @@ std::vector<double> read_doubles(hid_t file, const std::string& path, const std:
 
 RunInfo read_run_info(const std::string& path) {
   h5::Handle f = h5::open_file(path, h5::Mode::kReadOnly);
-  RunInfo info{path, read_file_parameters(f.id(), path)};
+  RunInfo info{path, read_file_parameters(f.id(), path), layout::dimension_of(f.id())};
   const RunParameters& p = info.params;
   if (!(p.L > 0) || p.N <= 0)
     throw InputError(path + ": /parameters has N = " + std::to_string(p.N) + ", L = " + format_number(p.L) +

@@ -10,6 +10,7 @@
 #include <fstream>
 
 #include "common/hdf5_file.h"
+#include "tests/support/disk_scene.h"
 #include "tests/support/run_command.h"
 #include "tests/support/simulate_cli.h"
 
@@ -103,8 +104,10 @@ TEST(ConvertCli, ARunStartedFromAnExportedFrameBeginsWithItsStateBitForBit) {
   }
 }
 
+// Disks too: ASE reads a 2D frame as a cell (L, L, 1) periodic in the plane, z = 0.
 TEST(ConvertCli, AseReadsTheXyzAndMDAnalysisTheLammpsDumpAsH5pyReadsTheRun) {
-  for (const Case& c : {Case{kGas, "inelastic", false}, Case{kAggregates, "aggregation", true}}) {
+  for (const Case& c : {Case{kGas, "inelastic", false}, Case{kAggregates, "aggregation", true},
+                        Case{test::kInelasticDisksToml, "disks", false}}) {
     const std::string dir = test::scratch_dir(std::string("convert_readers_") + c.model);
     const std::string run = dir + "/run.h5";
     ASSERT_EQ(run_command(simulate(test::write_file(dir, "run.toml", c.scene) + " -o " + run)).exit_code, 0);

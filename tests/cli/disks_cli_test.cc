@@ -1,9 +1,8 @@
 // coolgas-simulate with system.dimension = 2, driven as a user would: the
 // file is H5MD with box/dimension = 2 and 2-component vectors, the
 // validator accepts it, a run extended or stopped and resumed is bit for bit
-// the uninterrupted one, bad dimensions are one line each, and the analysis
-// tools that read frames refuse a 2D file with one line (they read 3D only
-// for now).
+// the uninterrupted one, and bad dimensions are one line each (the analysis
+// tools on a 2D file: disk_tools_cli_test.cc).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -82,16 +81,6 @@ TEST_F(DisksCli, AKilledRunResumesBitForBit) {
     ASSERT_EQ(r.exit_code, 0) << r.err;
   }
   test::expect_same_trajectory(whole(), out);
-}
-
-TEST_F(DisksCli, ToolsThatReadFramesRefuseA2DFileWithOneLine) {
-  for (const std::string tool : {"coolgas-clusters", "coolgas-velocity", "coolgas-structure", "coolgas-shape",
-                                  "coolgas-convert --last"})
-    test::expect_one_error_line(run_command(bin(tool) + " " + whole()), "2D trajectory");
-  const std::string png = *dir_ + "/snap.png";
-  test::expect_one_error_line(run_command(bin("coolgas-snapshot") + " " + whole() + " --time 0 -o " + png),
-                              "2D trajectory");
-  EXPECT_FALSE(std::filesystem::exists(png));
 }
 
 TEST(DisksCliScene, BadDimensionsAreOneLineEach) {

@@ -1,6 +1,7 @@
-"""Shared runs for the Python tests: a small inelastic gas and its
-ballistic-aggregation counterpart, simulated once per test file by the CLI
-(so every comparison is Python against the tool on the same file)."""
+"""Shared runs for the Python tests: a small inelastic gas, its
+ballistic-aggregation counterpart and an inelastic gas of disks (2D),
+simulated once per test file by the CLI (so every comparison is Python
+against the tool on the same file)."""
 import os
 import subprocess
 
@@ -18,6 +19,21 @@ r0 = 0.1
 delta = 1e-4
 [run]
 t_end = 300
+[output]
+dumps_per_decade = 3
+"""
+
+DISKS = """[system]
+dimension = 2
+N = 3000
+phi = 0.3
+seed = 4
+[collision]
+model = "inelastic"
+r0 = 0.5
+delta = 1e-3
+[run]
+t_end = 100
 [output]
 dumps_per_decade = 3
 """
@@ -50,6 +66,11 @@ def simulate_cli(tmp, name, scene):
 @pytest.fixture(scope="module")
 def gas(tmp_path_factory):
     return simulate_cli(tmp_path_factory.mktemp("gas"), "gas", GAS)
+
+
+@pytest.fixture(scope="module")
+def disks(tmp_path_factory):
+    return simulate_cli(tmp_path_factory.mktemp("disks"), "disks", DISKS)
 
 
 @pytest.fixture(scope="module")

@@ -48,8 +48,8 @@ def test_a_file_that_is_not_hdf5_is_an_input_error(tmp_path):
 def test_wrong_argument_types_raise():
     with pytest.raises(TypeError):
         coolgas.label_clusters("positions", 10.0)
-    with pytest.raises(coolgas.InputError, match=r"shape \(N, 3\)"):
-        coolgas.label_clusters(np.zeros((4, 2)), 10.0)
+    with pytest.raises(coolgas.InputError, match=r"shape \(N, 3\), or \(N, 2\) for disks"):
+        coolgas.label_clusters(np.zeros((4, 4)), 10.0)
     with pytest.raises(coolgas.InputError, match=r"positions\[1, 2\] = nan is not a finite number"):
         coolgas.label_clusters([[1, 1, 1], [2, 2, np.nan]], 10.0)
     with pytest.raises(coolgas.InputError, match="L"):

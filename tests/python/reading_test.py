@@ -38,9 +38,25 @@ def test_observables_are_the_files(gas):
         np.testing.assert_array_equal(obs[["total_momentum_x", "total_momentum_y", "total_momentum_z"]].to_numpy(), p)
 
 
-def test_frames_are_the_files_dumps(gas):
-    frames = coolgas.open(gas).frames
-    with h5py.File(gas, "r") as f:
+def test_a_2d_run_reads_as_2d(disks, gas):
+    run = coolgas.open(disks)
+    assert run.dimension == 2 and coolgas.open(gas).dimension == 3
+    fr = run.frames[-1]
+    assert fr.dimension == 2 and fr.positions.shape == (3000, 2) and fr.velocities.shape == (3000, 2)
+    obs = run.observables
+    with h5py.File(disks, "r") as f:
+        p = f["observables/total_momentum/value"][:]
+    assert p.shape[1] == 2 and "total_momentum_z" not in obs
+    np.testing.assert_array_equal(obs[["total_momentum_x", "total_momentum_y"]].to_numpy(), p)
+    labels, sizes = coolgas.label_clusters(fr)  # squares of the plane: every disk in one cluster
+    assert sizes["mass"].sum() == 3000 and (np.bincount(labels) == sizes["mass"].to_numpy()).all()
+
+
+@pytest.mark.parametrize("run", ["gas", "disks"])
+def test_frames_are_the_files_dumps(run, request):
+    path = request.getfixturevalue(run)
+    frames = coolgas.open(path).frames
+    with h5py.File(path, "r") as f:
         times = f["particles/all/position/time"][:]
         assert len(frames) == len(times)
         np.testing.assert_array_equal(frames.times, times)

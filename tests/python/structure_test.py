@@ -19,7 +19,7 @@ def cli_table(tmp_path, *args):
 
 
 @pytest.mark.parametrize("table", ["spectrum", "series", "correlation"])
-@pytest.mark.parametrize("run", ["gas", "aggregates"])
+@pytest.mark.parametrize("run", ["gas", "aggregates", "disks"])
 def test_equals_the_tool(run, table, request, tmp_path):
     assert_the_tool_per_dump(request.getfixturevalue(run), "structure",
                              ["--direct-shells", 2, "--peak-fraction", 0.15, *FLAGS[table]],
@@ -39,7 +39,9 @@ def test_bad_arguments_raise_python_errors():
     rng = np.random.default_rng(1)
     pos = rng.uniform(0, 10, size=(50, 3))
     with pytest.raises(coolgas.InputError, match=r"shape \(N, 3\)"):
-        coolgas.structure(pos[:, :2], L=10)
+        coolgas.structure(np.hstack([pos, pos]), L=10)
+    with pytest.raises(coolgas.InputError, match=r"velocities of the positions' shape \(50, 2\), got \(50, 3\)"):
+        coolgas.structure(pos[:, :2], L=10, table="series", velocities=pos)  # disks with 3D velocities
     with pytest.raises(coolgas.InputError, match="allowed: spectrum, series, correlation"):
         coolgas.structure(pos, L=10, table="S")
     with pytest.raises(coolgas.InputError, match="needs velocities"):

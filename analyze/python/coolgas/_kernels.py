@@ -25,7 +25,9 @@ def label_clusters(positions, L=None):
     labels[i] is the cluster of particle i, numbered by size: 0 is the
     largest (ties by the smallest cell). sizes is a DataFrame with one row
     per cluster in that order: cluster, mass (particles), first_cell (the
-    smallest flat cell index i + n(j + n k), n = floor(L)). Accepts a Frame."""
+    smallest flat cell index i + n(j + n k), n = floor(L)). Accepts a Frame.
+    An (N, 2) array is disks: floor(L)^2 unit squares sharing an edge; so
+    in every kernel here, an (N, 2) positions or velocities array is 2D."""
     positions, L, _, _ = _frame_args(positions, L, None)
     labels, mass, first_cell, _ = _core.label_clusters(positions, float(L))
     sizes = pd.DataFrame({"cluster": np.arange(len(mass)), "mass": mass, "first_cell": first_cell})

@@ -28,24 +28,31 @@ UNITS = {
 class Frame:
     """One dump. Arrays are in id order; for ballistic aggregation only the
     aggregates present (ids, masses, diameters), for the gas every particle
-    (ids 0..N-1, masses and diameters None: unit spheres)."""
+    (ids 0..N-1, masses and diameters None: unit spheres). A 2D file (disks,
+    dimension 2) has two columns per vector: (n, 2) arrays, which the
+    analysis kernels (coolgas.clusters, velocity, structure, shape) read as 2D."""
     index: int
     t: float
     L: float
-    positions: np.ndarray          # (n, 3), wrapped into [0, L)
-    velocities: np.ndarray         # (n, 3); None when the file has none
+    positions: np.ndarray          # (n, d), wrapped into [0, L)
+    velocities: np.ndarray         # (n, d); None when the file has none
     ids: np.ndarray                # (n,)
     step: int = None               # collisions so far (coolgas files)
-    images: np.ndarray = None      # (n, 3) periodic image counts (coolgas files)
+    images: np.ndarray = None      # (n, d) periodic image counts (coolgas files)
     masses: np.ndarray = None
     diameters: np.ndarray = None
     slots: int = None              # N of the file: particles, or aggregation slots
     extra: dict = field(default_factory=dict)
 
     @property
+    def dimension(self):
+        """d: 3, or 2 for disks (the columns of positions)."""
+        return self.positions.shape[1]
+
+    @property
     def box(self):
-        """The box edges (L, L, L)."""
-        return np.full(3, self.L)
+        """The box edges (L, L, L), or (L, L) in 2D."""
+        return np.full(self.dimension, self.L)
 
 
 class Frames:
@@ -142,10 +149,17 @@ class Run:
         return self.parameters["L"]
 
     @property
+    def dimension(self):
+        """The box's dimension d: 3, or 2 for disks (system.dimension = 2)."""
+        if self.is_coolgas:
+            return _core.Trajectory(self.path).dimension
+        return self.frames[0].dimension
+
+    @property
     def observables(self):
         """Every /observables element up to the last complete dump, as a
-        DataFrame indexed by t; a vector element (total_momentum) is three
-        columns name_x, name_y, name_z. Elements recorded at other times
+        DataFrame indexed by t; a vector element (total_momentum) is d
+        columns name_x, name_y(, name_z). Elements recorded at other times
         meet on the union of the times (NaN where one has no row)."""
         columns = []
         for name in _core.observable_names(self.path):
@@ -154,7 +168,7 @@ class Run:
                 columns.append(pd.Series(v, index=pd.Index(t, name="t"), name=name))
             else:
                 for c in range(v.shape[1]):
-                    suffix = "xyz"[c] if v.shape[1] == 3 else str(c)
+                    suffix = "xyz"[c] if v.shape[1] in (2, 3) else str(c)
                     columns.append(pd.Series(v[:, c], index=pd.Index(t, name="t"), name=f"{name}_{suffix}"))
         if not columns:
             return pd.DataFrame(index=pd.Index([], name="t"))

@@ -49,6 +49,22 @@ TEST(CollapseFixedProduct, RecoversZOfDataWithThatProduct) {
   }
 }
 
+// Disks: the 2D mean field has theta = 2d/(d+2) = 1 and z theta = d = 2, so
+// z = 2. Data with that scaling, the product held at 2 (--z-theta 2): z = 2
+// within its error; held at the 3D value 3, the collapse is clearly worse.
+TEST(CollapseFixedProduct, RecoversTheTwoDimensionalMeanFieldZ) {
+  const auto sizes = ensemble(1.0, 2.0, 4, 12);
+  CollapseSearch s;
+  s.z0 = 2.6;
+  s.theta0 = 2 / 2.6;
+  const CollapseFit f = optimize_collapse_fixed_product(sizes, s, 2.0);
+  EXPECT_NEAR(f.z, 2.0, 0.05);
+  EXPECT_LT(std::abs(f.z - 2.0), 3 * f.z_err);
+  EXPECT_EQ(f.theta, 2.0 / f.z);
+  s.bootstrap = 0;
+  EXPECT_GT(optimize_collapse_fixed_product(sizes, s, 3.0).quality, 10 * f.quality);
+}
+
 // Q at the fixed-product minimum can never be below the free minimum (a
 // minimum over a line of the plane), and it is clearly above it when the
 // data do not obey the product (z theta = 2.5 in the data, 3 imposed).

@@ -35,6 +35,21 @@ TEST(ScalingWindow, StartsWhereTheDecayReachesTMinusOneAndEndsAtTheFiniteSizeCro
   EXPECT_FALSE(scaling_window(energy_table(E, std::nullopt), FitColumns{}).window.hi.has_value());
 }
 
+// A 2D run's table (its '# dimension: 2' line): the mean-field z = d/theta
+// = (d+2)/2 = 2, so the end is 0.1 L^2 = 40 for L = 20, and the rule says so.
+TEST(ScalingWindow, InTwoDimensionsEndsAtTheTwoDimensionalCrossover) {
+  const auto E = [](double t) { return t < 10 ? 1.0 : std::pow(t / 10, -1.0); };
+  Table t = energy_table(E, 20.0);
+  t.provenance.emplace_back("dimension", "2");
+  const ChosenWindow c = scaling_window(t, FitColumns{});
+  EXPECT_DOUBLE_EQ(*c.window.lo, 10);
+  EXPECT_NEAR(*c.window.hi, 40, 1e-9);
+  EXPECT_NE(c.rule.find("0.1 L^2,"), std::string::npos) << c.rule;
+  EXPECT_EQ(crossover_z(3), 2.5);
+  t.provenance.back().second = "4";
+  EXPECT_THROW(scaling_window(t, FitColumns{}), InputError);  // no dimension coolgas writes
+}
+
 // Flat, Haff's t^-2 from 10 to 100, then t^-1.2: the secant from 10^(39/20) = 89.1
 // is (2 ln(100/89.1) + 1.2 ln(158.5/100))/ln(1.778) = 1.36 <= 3/2, from 10^(38/20)
 // it is 1.52: the start is 10^(39/20), past Haff's law.

@@ -13,6 +13,7 @@
 #include <functional>
 
 #include "common/random.h"
+#include "tests/unit/analyze/shape/percolation.h"
 
 namespace coolgas {
 namespace {
@@ -75,16 +76,7 @@ TEST(MassRadius, BallsAreThreeDimensional) {
 // on; small clusters pull it down (2.44 from 20 on), as corrections to
 // scaling do, and clusters near the box size up (2.60 from 200 on).
 TEST(MassRadius, PercolationClustersAtThresholdHaveTheKnownFractalDimension) {
-  const int L = 128;
-  Random rng(7);
-  std::vector<double> p;
-  for (int k = 0; k < L; ++k)
-    for (int j = 0; j < L; ++j)
-      for (int i = 0; i < L; ++i)
-        if (rng.uniform() < 0.3116077) p.insert(p.end(), {i + 0.5, j + 0.5, k + 0.5});
-  ClusterShapes shapes;
-  const MassRadius mr = fit(shapes.of_particles(ClusterGrid(L), p), "50:");
-  std::printf("percolation at p_c: d_f = %.3f +- %.3f over %d bins\n", mr.d_f, mr.d_f_err, mr.fit_bins);
+  const MassRadius mr = test::percolation_mass_radius(128, 3, 0.3116077, 7, "50:");
   EXPECT_NEAR(mr.d_f, 2.5226, 0.1);
   EXPECT_LT(mr.d_f_err, 0.1);
   EXPECT_GE(mr.fit_bins, 10);

@@ -46,13 +46,7 @@ TEST(StructureFactor, UniformRandomPointsGiveOne) {
   FrameStructure fs(32);
   const auto shells = fs.spectrum(L, p, {});
   ASSERT_EQ(shells.size(), 8u);
-  double sum = 0, var = 0;
-  for (const Shell& s : shells) {
-    EXPECT_NEAR(s.S, 1, 4 * s.S_err) << "shell " << s.index;
-    sum += s.S * s.modes;
-    var += s.modes;
-  }
-  EXPECT_NEAR(sum / var, 1, 3 / std::sqrt(var));
+  test::expect_poisson_shells(shells);
 }
 
 // With weights the shot-noise level is s = sum m^2 / sum m.

@@ -4,9 +4,24 @@
 #include <cmath>
 #include <vector>
 
+#include <gtest/gtest.h>
+
+#include "analyze/structure/structure_factor.h"
 #include "common/random.h"
 
 namespace coolgas::test {
+
+// Poisson points: every shell's S is 1 within 4 of its standard errors, and
+// the mean over all shells (each weighted by its modes) within 3 of its errors.
+inline void expect_poisson_shells(const std::vector<Shell>& shells) {
+  double sum = 0, modes = 0;
+  for (const Shell& s : shells) {
+    EXPECT_NEAR(s.S, 1, 4 * s.S_err) << "shell " << s.index;
+    sum += s.S * s.modes;
+    modes += s.modes;
+  }
+  EXPECT_NEAR(sum / modes, 1, 3 / std::sqrt(modes));
+}
 
 // n points uniformly in the periodic box [0, L)^3.
 inline std::vector<double> uniform_points(std::size_t n, double L, std::uint64_t seed) {

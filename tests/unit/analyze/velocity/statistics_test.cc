@@ -14,6 +14,7 @@
 #include "common/random.h"
 #include "common/tsv.h"
 #include "tests/support/run_command.h"
+#include "tests/unit/analyze/velocity/velocity_file.h"
 
 namespace coolgas {
 namespace {
@@ -138,23 +139,11 @@ TEST(VelocityTool, SeriesRowMatchesTheLibrary) {
   const std::string path = test::scratch_dir("velocity_tool") + "/run.h5";
   const std::size_t n = 200'000;
   Random rng(16);
-  std::vector<double> vel(3 * n), pos(3 * n, 1.0);
+  std::vector<double> vel(3 * n);
   for (double& x : vel) x = rng.normal();
-  {
-    RunParameters p;
-    p.N = static_cast<std::int64_t>(n);
-    p.L = 100;
-    H5mdWriter w = H5mdWriter::create(path, p, false);
-    std::vector<std::int32_t> img(3 * n, 0);
-    w.add_frame({5.0, 10, 0, pos.data(), img.data(), vel.data()});
-  }
-  VelocityOptions o;
-  o.input = path;
-  o.table = VelocityTable::kSeries;
-  std::stringstream out;
-  run_velocity(o, out);
-  const Table t = read_table(out, "out");
+  const Table t = test::velocity_series_of(path, vel, 100, 3);
   ASSERT_EQ(t.rows.size(), 1u);
+  const VelocityOptions o;
   const SpeedMoments m = speed_moments(vel);
   ComponentHistogram h(o.bins, o.ymax);
   h.fill(vel, m.v_rms);
