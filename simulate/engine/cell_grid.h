@@ -149,7 +149,7 @@ void for_each_neighbour_cell(int n, double L, const CellCoord& c, F&& f) {
 // untouched (wraps = false); otherwise shifts[k] holds the shift of the k-th
 // cell (wraps = true).
 template <int D>
-int neighbour_slots(const CellGrid& grid, double L, const CellCoord& c, const int* lo, const int* hi, int* slots,
+inline int neighbour_slots(const CellGrid& grid, double L, const CellCoord& c, const int* lo, const int* hi, int* slots,
                     double (*shifts)[3], bool& wraps) {
   const int n = grid.cells_per_side();
   int k = 0;
