@@ -122,6 +122,8 @@ class AggregationEngine final : public EngineBase {
   // Calls f(cell coordinates, shift) for the cells within `reach` of aggregate i's.
   template <class F>
   void for_each_cell_in_reach(int i, int reach, F&& f) const;
+  template <class F>
+  [[gnu::noinline]] void for_each_cell_in_reach_2d(const CellCoord& c, int reach, F& f) const;
   [[noreturn]] void throw_too_large() const;
   void check_aggregates(const StateReader& in, std::int64_t alive) const;
   void check_listed(const StateReader& in, const std::vector<std::int32_t>& fine) const;
