@@ -10,7 +10,6 @@
 #include <fstream>
 
 #include "common/hdf5_file.h"
-#include "tests/support/disk_scene.h"
 #include "tests/support/run_command.h"
 #include "tests/support/simulate_cli.h"
 
@@ -77,6 +76,7 @@ struct Case {
   const char* scene;
   const char* model;
   bool aggregates;
+  const char* set = "";  // --set options of the run
 };
 
 TEST(ConvertCli, ARunStartedFromAnExportedFrameBeginsWithItsStateBitForBit) {
@@ -107,10 +107,10 @@ TEST(ConvertCli, ARunStartedFromAnExportedFrameBeginsWithItsStateBitForBit) {
 // Disks too: ASE reads a 2D frame as a cell (L, L, 1) periodic in the plane, z = 0.
 TEST(ConvertCli, AseReadsTheXyzAndMDAnalysisTheLammpsDumpAsH5pyReadsTheRun) {
   for (const Case& c : {Case{kGas, "inelastic", false}, Case{kAggregates, "aggregation", true},
-                        Case{test::kInelasticDisksToml, "disks", false}}) {
+                        Case{kGas, "disks", false, " --set system.dimension=2 --set system.phi=0.3"}}) {
     const std::string dir = test::scratch_dir(std::string("convert_readers_") + c.model);
     const std::string run = dir + "/run.h5";
-    ASSERT_EQ(run_command(simulate(test::write_file(dir, "run.toml", c.scene) + " -o " + run)).exit_code, 0);
+    ASSERT_EQ(run_command(simulate(test::write_file(dir, "run.toml", c.scene) + c.set + " -o " + run)).exit_code, 0);
     ASSERT_EQ(run_command(bin("coolgas-convert") + " " + run + " > " + dir + "/all.xyz").exit_code, 0);
     const auto a = run_command(py("xyz " + run + " " + dir + "/all.xyz"));
     EXPECT_EQ(a.exit_code, 0) << a.out << a.err;

@@ -10,7 +10,6 @@
 #include <string>
 
 #include "common/tsv.h"
-#include "tests/support/disk_scene.h"
 #include "tests/support/run_command.h"
 #include "tests/support/simulate_cli.h"
 
@@ -21,16 +20,18 @@ using test::bin;
 using test::run_command;
 using test::simulate;
 
-// 4000 disks to t = 100 (tests/support/disk_scene.h), and the same gas as
-// 500 spheres at phi = 0.2 to t = 10.
-const char* kDisks = " --set system.N=4000 --set system.seed=7 --set run.t_end=100 --set output.dumps_per_decade=5";
-const char* kSpheres = " --set system.dimension=3 --set system.N=500 --set system.phi=0.2 --set run.t_end=10";
+// The cooling gas of tests/support/simulate_cli.h as 4000 disks at area
+// fraction 0.3 to t = 100, and as 500 spheres to t = 10.
+const char* kDisks =
+    " --set system.dimension=2 --set system.N=4000 --set system.phi=0.3 --set system.seed=7 --set run.t_end=100"
+    " --set output.dumps_per_decade=5";
+const char* kSpheres = " --set system.N=500 --set run.t_end=10";
 
 class DiskToolsCli : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     dir_ = new std::string(test::scratch_dir("disk_tools_cli"));
-    const std::string scene = test::write_file(*dir_, "disks.toml", test::kInelasticDisksToml);
+    const std::string scene = test::write_file(*dir_, "gas.toml", test::kCoolingGasScene);
     for (auto [set, out] : {std::pair{kDisks, disks()}, {kSpheres, spheres()}}) {
       const auto r = run_command(simulate(scene + set + " -o " + out));
       ASSERT_EQ(r.exit_code, 0) << r.err;
