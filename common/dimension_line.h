@@ -14,7 +14,7 @@ namespace coolgas {
 void add_dimension_line(Provenance& p, int dimension);
 
 // The table's dimension: 3 without the line; InputError naming the table
-// and the value when the line is not 2 or 3.
+// and the value when the line is not 1, 2 or 3.
 int dimension_of(const Table& table);
 
 }  // namespace coolgas

@@ -79,7 +79,7 @@ Profile make_profile() {
       {.group = kCreator, .name = "version", .type = kVlenString, .meaning = "its version"},
       // The page says int32; coolgas 0.1 writes int64 and MDAnalysis reads either.
       // d = 3 for spheres, 2 for disks (system.dimension); it sets the d extents below.
-      {.group = kBox, .name = "dimension", .type = kInteger, .at_least = 2, .at_most = 3, .meaning = "dimension d"},
+      {.group = kBox, .name = "dimension", .type = kInteger, .at_least = 1, .at_most = 3, .meaning = "dimension d"},
       {.group = kBox,
        .name = "boundary",
        .type = kVlenString,

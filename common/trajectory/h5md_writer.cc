@@ -108,7 +108,7 @@ void H5mdWriter::writing(F&& body) {
 
 H5mdWriter H5mdWriter::create(const std::string& path, const RunParameters& params, bool overwrite,
                               const DumpStorage& storage, int dimension) {
-  if (dimension != 2 && dimension != 3) throw std::logic_error("a trajectory has dimension 2 or 3");
+  if (dimension < 1 || dimension > 3) throw std::logic_error("a trajectory has dimension 1, 2 or 3");
   if (storage.particles_per_chunk < 1 || storage.deflate_level < 0 || storage.deflate_level > 9)
     throw std::logic_error("dump storage: particles_per_chunk >= 1 and deflate_level 0-9 required");
   if (!overwrite && std::filesystem::exists(path))
@@ -289,8 +289,8 @@ void H5mdWriter::write_pending() {
 }
 
 void H5mdWriter::write_frame(const FrameView& fr) {
-  const double cube[9] = {box_, 0, 0, 0, box_, 0, 0, 0, box_}, square[4] = {box_, 0, 0, box_};
-  append(kBoxEdges, fr.collisions, fr.time, h5::Type::kFloat64, dimension_ == 3 ? cube : square);
+  const double cube[9] = {box_, 0, 0, 0, box_, 0, 0, 0, box_}, square[4] = {box_, 0, 0, box_}, ring[1] = {box_};
+  append(kBoxEdges, fr.collisions, fr.time, h5::Type::kFloat64, dimension_ == 3 ? cube : dimension_ == 2 ? square : ring);
   append(kPosition, fr.collisions, fr.time, h5::Type::kFloat64, fr.position, fr.position_stride);
   append(kImage, fr.collisions, fr.time, h5::Type::kInt32, fr.image, dimension_ == 3 ? 0 : 3);
   append(kVelocity, fr.collisions, fr.time, h5::Type::kFloat64, fr.velocity, fr.velocity_stride);

@@ -84,7 +84,7 @@ struct DumpStorage {
 class H5mdWriter {
  public:
   // Creates a new file (fails if it exists unless overwrite) for a run in
-  // `dimension` 3 or 2 (the box's `dimension`, and d components per vector).
+  // `dimension` 3, 2 or 1 (the box's `dimension`, and d components per vector).
   // The schema and program versions of `params` are set here.
   static H5mdWriter create(const std::string& path, const RunParameters& params, bool overwrite,
                            const DumpStorage& storage = {}, int dimension = 3);

@@ -87,8 +87,8 @@ ResumeFrame read_resume_frame(const std::string& path) {
   r.below_delta = in.counter(kRestartBelowDelta, last);
   r.particles = static_cast<std::size_t>(r.params.N);
   r.dimension = dimension_of(f.id());
-  if (r.dimension != 2 && r.dimension != 3)
-    in.fail("box/dimension = " + std::to_string(r.dimension) + "; a run is in dimension 2 or 3");
+  if (r.dimension < 1 || r.dimension > 3)
+    in.fail("box/dimension = " + std::to_string(r.dimension) + "; a run is in dimension 1, 2 or 3");
   const auto n = static_cast<hsize_t>(r.particles), d = static_cast<hsize_t>(r.dimension);
   r.position = in.row<double>(kPosition, last, {n, d});
   r.velocity = in.row<double>(kVelocity, last, {n, d});
