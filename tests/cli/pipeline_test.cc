@@ -75,6 +75,12 @@ std::map<std::string, Judged> read_exponents(const std::string& path) {
   return rows;
 }
 
+// The dimensions the dimension study runs in the test, and its table's rows:
+// theta of the gas (twice in 3D, once per theory) and of BA in each d, the
+// gas's kappa against BA's in each d, and 2D's against the Gaussian.
+constexpr const char* kStudiedDimensions = "2 3";
+constexpr std::size_t kStudiedRows = 3 + 2 + 2 + 1;
+
 const char* kFigures[] = {"fig1_energy_size.png", "fig2_energy_parameters.png", "fig3_clusters.png",
                           "fig4_largest_mass.png", "fig5_velocity.png", "smoluchowski.png",
                           "structure.png"};
@@ -267,6 +273,44 @@ TEST(AccuracyPipeline, CollapseOfRunsCutAtTheirEndIsTheCollapseOfTheWholeRuns) {
   EXPECT_EQ(tend[0].at(0), "1");
   EXPECT_LT(std::stod(tend[0].at(7)), std::stod(tend[1].at(7)));
   EXPECT_GT(std::stod(tend[0].at(7)), 0);
+}
+
+TEST(DimensionsPipeline, TinyRunsGiveEveryRowBothFiguresAndNothingLeftToDo) {
+  // pipelines/dimensions with PARAMETERS=tiny.mk (boxes of seconds): every
+  // row of the table, judged against the two theories' exact values, and the
+  // figures; then make has nothing left to do, and a new fit window refits
+  // without simulating.
+  std::string bin_dir = test::bin("coolgas-simulate");
+  bin_dir.erase(bin_dir.rfind('/'));
+  const std::string out = test::scratch_dir("dimensions_pipeline") + "/out";
+  const std::string make = "make -C " + test::source("pipelines/dimensions") + " PARAMETERS=tiny.mk BIN=" + bin_dir +
+                           " OUT=" + out + " DIMS='" + kStudiedDimensions + "' ";
+  const auto r = run_command(make + "-j2");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_TRUE(is_png(out + "/figures/theta_dimension.png"));
+  EXPECT_TRUE(is_png(out + "/figures/energy_dimension.png"));
+  std::string columns;
+  const auto rows = tsv_rows(out + "/dimensions.tsv", &columns);
+  EXPECT_EQ(columns, "quantity\td\tmeasured\terror\treference\treference_error\tsource\tdeviation\tregime");
+  std::map<std::string, double> reference;  // "quantity d source" -> reference value
+  for (const auto& cells : rows) {
+    ASSERT_EQ(cells.size(), 9u) << cells.at(0);
+    EXPECT_TRUE(std::isfinite(std::stod(cells[2]))) << cells[0];
+    EXPECT_GT(std::stod(cells[3]), 0) << cells[0];
+    EXPECT_TRUE(std::isfinite(std::stod(cells[7]))) << cells[0];
+    reference[cells[0] + " d=" + cells[1] + " " + cells[6].substr(0, 5)] = std::stod(cells[4]);
+  }
+  // Both theories in 3D: 2d/(d+2) = 6/5 and Burgers' d/2 = 3/2; in 2D both are 1.
+  EXPECT_DOUBLE_EQ(reference.at("theta, inelastic gas d=3 balli"), 1.2);
+  EXPECT_DOUBLE_EQ(reference.at("theta, inelastic gas d=3 Burge"), 1.5);
+  EXPECT_DOUBLE_EQ(reference.at("theta, inelastic gas d=2 2d/(d"), 1.0);
+  EXPECT_DOUBLE_EQ(reference.at("theta, ballistic aggregation d=3 mean "), 1.2);
+  EXPECT_EQ(rows.size(), kStudiedRows);
+  EXPECT_EQ(run_command(make + "-q").exit_code, 0);
+  const auto dry = run_command(make + "-n GAS_WINDOW_D2=10:50");
+  ASSERT_EQ(dry.exit_code, 0) << dry.err;
+  EXPECT_NE(dry.out.find("coolgas-fit --power --t-window 10:50"), std::string::npos) << dry.out;
+  EXPECT_EQ(dry.out.find("coolgas-simulate"), std::string::npos) << dry.out;
 }
 
 }  // namespace
