@@ -1,5 +1,5 @@
 // Every engine against a slow, plainly correct reference, in one typed test
-// body: the three rules of Engine<Rule, D> in 3D and 2D (cells, calendar,
+// body: the three rules of Engine<Rule, D> in 3D, 2D and 1D (cells, calendar,
 // lazy positions) against the all-pairs reference engine, and the aggregation engine (chains,
 // a grid that is rebuilt as aggregates grow) against the all-pairs
 // aggregation reference. Chaos amplifies round-off differences, so only the
@@ -31,8 +31,9 @@ struct RuleCase {
 };
 
 // Each case in 3D and, the same N, phi and seed, as disks (D = 2: one layer
-// of cells, 9 around each; the reference needs no second version, it works
-// on 3-vectors whose z stays 0).
+// of cells, 9 around each) and as rods on a ring (D = 1: one row of cells, 3
+// around each; phi the line fraction); the reference needs no other
+// version, it works on 3-vectors whose z (and y) stay 0.
 template <int D>
 struct Elastic : RuleCase<ElasticRule, D> {
   static Scene scene() { return test::in_dimension(test::elastic_scene(120, 0.15, 3), D); }
@@ -49,7 +50,8 @@ struct DenseElastic : RuleCase<ElasticRule, D> {
 // cells are one mean spacing wide (cell_width, engine.cc: 10 per side of
 // L = 29.7, 2.97 wide; disks: 6.3 wide in a square of side 198). The box is
 // large enough that free flights (mean 5.9; disks 14) stay well below L/2,
-// as the reference's minimum-image predictions need.
+// as the reference's minimum-image predictions need (rods: cells 50 wide on
+// a ring of 50000, free flights of 49).
 template <int D>
 struct DiluteElastic : RuleCase<ElasticRule, D> {
   static Scene scene() { return test::in_dimension(test::elastic_scene(1000, 0.02, 8), D); }
@@ -98,7 +100,8 @@ template <class Case>
 class EngineVsReference : public ::testing::Test {};
 using Cases = ::testing::Types<Elastic<3>, DenseElastic<3>, DiluteElastic<3>, Inelastic<3>, Viscoelastic<3>,
                                Aggregation, Elastic<2>, DenseElastic<2>, DiluteElastic<2>, Inelastic<2>,
-                               Viscoelastic<2>, Aggregation2D>;
+                               Viscoelastic<2>, Aggregation2D, Elastic<1>, DenseElastic<1>, DiluteElastic<1>,
+                               Inelastic<1>, Viscoelastic<1>>;
 TYPED_TEST_SUITE(EngineVsReference, Cases);
 
 TYPED_TEST(EngineVsReference, SameEventSequence) {
