@@ -563,9 +563,6 @@ void check_rods(const Scene& s) {
     throw InputError("system.init = \"fcc\" is a 3D lattice; in system.dimension = 1 use \"random\" (any phi < 1)");
   if (s.init == InitialPositions::kFile)
     throw InputError("system.init = \"file\" is not supported yet in system.dimension = 1; use \"random\"");
-  if (s.model == CollisionModel::kAggregation)
-    throw InputError("collision.model = \"aggregation\" is not supported yet in system.dimension = 1; use "
-                     "\"elastic\", \"inelastic\" or \"viscoelastic\", or dimension 2 or 3");
   if (!(s.phi < 1))
     out_of_range("system.phi", s.phi,
                  "unit rods (system.dimension = 1) cover the ring of length L = " + format_number(s.L) +

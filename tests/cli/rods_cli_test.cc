@@ -91,6 +91,42 @@ TEST_F(RodsCli, EstimateAndProgressWorkIn1D) {
   EXPECT_FALSE(std::filesystem::exists(*dir_ + "/estimate.h5"));
 }
 
+// Ballistic aggregation of rods: the file (1-component vectors, masses and
+// lengths), the validator, and a run extended from t = 10 bit for bit the
+// whole one, aggregates included.
+constexpr const char* kRodAggregationScene = R"([system]
+dimension = 1
+N = 8000
+phi = 0.2
+seed = 4
+equilibrate = 0
+[collision]
+model = "aggregation"
+[run]
+t_end = 300
+[output]
+dumps_per_decade = 10
+)";
+
+TEST(RodsCliAggregation, AnExtendedRunIsBitForBitTheWholeOneAndValid) {
+  const std::string dir = test::scratch_dir("rods_aggregation");
+  const std::string scene = test::write_file(dir, "agg.toml", kRodAggregationScene);
+  const std::string whole = dir + "/whole.h5", part = dir + "/part.h5";
+  const auto r = run_command(test::simulate(scene + " -o " + whole));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto v = run_command(bin("coolgas-validate") + " " + whole);
+  EXPECT_EQ(v.exit_code, 0) << v.out << v.err;
+  ASSERT_EQ(run_command(test::simulate(scene + " -o " + part + " --set run.t_end=10")).exit_code, 0);
+  const auto resumed = run_command(test::simulate("--resume " + part + " --set run.t_end=300"));
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  test::expect_same_trajectory(whole, part);
+  h5::Handle fa = h5::open_file(whole, h5::Mode::kReadOnly), fb = h5::open_file(part, h5::Mode::kReadOnly);
+  for (const char* ds : {"particles/all/mass/value", "particles/all/diameter/value", "particles/all/id/value"})
+    EXPECT_TRUE(test::dataset_bytes(fa.id(), ds) == test::dataset_bytes(fb.id(), ds)) << ds;
+  h5::Handle d = h5::open_dataset(fa.id(), "particles/all/position/value");
+  EXPECT_EQ(h5::shape(d.id()).at(2), 1u);
+}
+
 TEST(RodsCliScene, WhatRodsRefuseIsOneLineEach) {
   const std::string dir = test::scratch_dir("rods_bad_scene");
   const std::string scene = test::write_file(dir, "gas.toml", test::kCoolingGasScene), out = dir + "/out.h5";
