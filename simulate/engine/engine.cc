@@ -46,17 +46,24 @@ constexpr std::int64_t kCollisionsPerParticlePerRebuild = 200;
 // on average, as in the aggregation engine), which was the fastest width
 // tried (tests/bench/history.md, "Constants chosen by measurement"). Denser
 // gases keep one-diameter cells, and with them their runs bit for bit.
-// In 2D the same rule, with the box's area: disks below phi = 0.049; in 1D
-// with the ring's length: rods below phi = 1/16.
+// In 2D the same rule, with the box's area: disks below phi = 0.049.
 constexpr double kDiluteCellsPerParticle = 16;
 
+// Rods (D = 1) get cells one mean spacing L/N wide at every density: a free
+// flight there is (1 - phi)/phi diameters long (several at phi = 0.2, where
+// a sphere's is under one), so one-diameter cells would make each flight
+// cross several cells, each crossing an event; with one rod per cell on
+// average a flight crosses about one, and a search still meets ~3 rods.
 template <int D>
 double cell_width(double L, std::size_t n) {
-  const double volume = D == 3 ? L * L * L : (D == 2 ? L * L : L), particles = double(std::max<std::size_t>(n, 1));
+  if constexpr (D == 1) {
+    const double most = L / 3.0 / (1.0 + 1e-6);  // three cells, with CellGrid's margin
+    return std::max(1.0, std::min(L / double(std::max<std::size_t>(n, 1)), most));
+  }
+  const double volume = D == 3 ? L * L * L : L * L, particles = double(std::max<std::size_t>(n, 1));
   if (volume <= kDiluteCellsPerParticle * particles) return 1.0;
   const double most = L / 3.0 / (1.0 + 1e-6);  // three cells per side, with CellGrid's margin
-  const double spacing =
-      D == 3 ? std::cbrt(volume / particles) : (D == 2 ? std::sqrt(volume / particles) : volume / particles);
+  const double spacing = D == 3 ? std::cbrt(volume / particles) : std::sqrt(volume / particles);
   return std::max(1.0, std::min(spacing, most));
 }
 
