@@ -51,7 +51,7 @@ Trajectory::Trajectory(const std::string& path, unsigned fields) : path_(path), 
   file_ = h5::open_file(path, h5::Mode::kReadOnly);
   aggregates_ = layout::layout_of(file_.id()) == layout::Layout::kAggregation;
   dimension_ = layout::dimension_of(file_.id());
-  if (dimension_ != 3 && (!(fields & Field::kAnyDimension) || dimension_ != 2))
+  if (dimension_ != 3 && (!(fields & Field::kAnyDimension) || dimension_ < 1 || dimension_ > 2))
     throw InputError(path + ": a " + std::to_string(dimension_) +
                      "D trajectory (box/dimension = " + std::to_string(dimension_) +
                      "); this tool reads 3D trajectories only for now");
@@ -60,7 +60,7 @@ Trajectory::Trajectory(const std::string& path, unsigned fields) : path_(path), 
   std::size_t frames = SIZE_MAX;
   for (const auto& e : kElements) {
     if (!(fields_ & e.field)) continue;
-    check_element(std::string(e.path), e.per_particle == 3 ? hsize_t(dimension_) : e.per_particle);
+    check_element(std::string(e.path), e.per_particle == 3, e.per_particle == 3 ? hsize_t(dimension_) : 1);
     h5::Handle value = h5::open_dataset(file_.id(), value_of(e));
     h5::Handle time = h5::open_dataset(file_.id(), layout::time_of(e.path));
     frames = std::min<std::size_t>({frames, h5::shape(value.id())[0], h5::shape(time.id())[0]});
@@ -84,17 +84,18 @@ void Trajectory::missing(const std::string& what) const {
   throw InputError(path_ + ": not a coolgas trajectory: missing " + what);
 }
 
-// Checks that an element has value/time/step and that value is (F, N, 3), or
-// (F, N) for one number per particle, with the same N as the elements checked before.
-void Trajectory::check_element(const std::string& element, hsize_t per_particle) {
+// Checks that an element has value/time/step and that value is (F, N, d) for
+// a vector (d = 1 too: a rod's position is a 1-vector), or (F, N) for one
+// number per particle, with the same N as the elements checked before.
+void Trajectory::check_element(const std::string& element, bool vector, hsize_t per_particle) {
   for (const std::string& d : {layout::value_of(element), layout::time_of(element), layout::step_of(element)})
     if (!h5::exists(file_.id(), d)) missing(d);
   h5::Handle value = h5::open_dataset(file_.id(), layout::value_of(element));
   const auto dims = h5::shape(value.id());
-  const bool fits = per_particle == 1 ? dims.size() == 2 : (dims.size() == 3 && dims[2] == per_particle);
+  const bool fits = !vector ? dims.size() == 2 : (dims.size() == 3 && dims[2] == per_particle);
   if (!fits)
     throw InputError(path_ + ": " + element + "/value has the wrong shape (expected frames x particles" +
-                     (per_particle == 1 ? ")" : " x " + std::to_string(per_particle) + ")"));
+                     (!vector ? ")" : " x " + std::to_string(per_particle) + ")"));
   const auto n = static_cast<std::int64_t>(dims[1]);
   if (n < 1) throw InputError(path_ + ": " + element + "/value holds no particles");
   // Checked before a frame's buffers are sized by it (a damaged file may declare any shape).
@@ -145,7 +146,7 @@ double Trajectory::box_side(std::size_t dump) const {
     const auto d = hsize_t(dimension_);
     if (dims.size() == 3 && dims[1] == d && dims[2] == d && dump < dims[0]) {
       const auto m = h5::read_row<double>(edges.id(), dump);
-      const double last = m[d * d - 1];  // the diagonal: 0, 4, 8 (2D: 0, 3)
+      const double last = m[d * d - 1];  // the diagonal: 0, 4, 8 (2D: 0, 3; 1D: the one edge)
       if (m[0] != last || (d == 3 && m[0] != m[4]))
         throw InputError(path_ + ": dump " + std::to_string(dump) + ": the box is not " +
                          (d == 3 ? "cubic" : "square") + " (edges " + format_number(m[0]) + ", " +

@@ -27,8 +27,9 @@
 namespace coolgas {
 
 // Per-particle elements, combinable as a bit set. kAnyDimension is no
-// element: it lets a reader that handles disks open a 2D file, whose frames
-// then hold z = 0 (the analysis tools do not ask for it and refuse 2D files).
+// element: it lets a reader that handles disks and rods open a 2D or 1D file,
+// whose frames then hold z = 0 (and y = 0 in 1D); a reader without it
+// refuses them.
 enum Field : unsigned {
   kPosition = 1u,
   kVelocity = 2u,
@@ -40,7 +41,8 @@ enum Field : unsigned {
 };
 
 // One dump. Arrays hold 3 numbers per particle, in particle-id order (for a
-// 2D file opened with kAnyDimension, the third is 0).
+// 2D file opened with kAnyDimension, the third is 0; for a 1D file, the
+// second and third).
 struct Frame {
   std::size_t dump = 0;  // index in the file
   double time = 0;
@@ -67,7 +69,7 @@ class Trajectory {
   const std::string& path() const { return path_; }
   std::int64_t particles() const { return n_; }  // N (slots, for aggregation files)
   bool aggregates() const { return aggregates_; }  // an aggregation file: frames hold the aggregates present
-  int dimension() const { return dimension_; }     // 3, or 2 (opened with kAnyDimension)
+  int dimension() const { return dimension_; }     // 3, or 2 or 1 (opened with kAnyDimension)
   const std::vector<double>& dump_times() const { return times_; }
   // Index of the dump whose time is nearest t (the earlier one on a tie).
   std::size_t nearest_dump(double t) const;
@@ -89,7 +91,7 @@ class Trajectory {
 
  private:
   [[noreturn]] void missing(const std::string& what) const;
-  void check_element(const std::string& element, hsize_t per_particle);
+  void check_element(const std::string& element, bool vector, hsize_t per_particle);
   void keep_present(Frame& frame) const;
   double box_side(std::size_t dump) const;
 

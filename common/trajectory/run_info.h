@@ -18,7 +18,7 @@ namespace coolgas {
 struct RunInfo {
   std::string path;
   RunParameters params;  // every field of run_parameters.h that the file's model has
-  int dimension = 3;     // box/dimension: 3, or 2 for disks
+  int dimension = 3;     // box/dimension: 3, 2 for disks, 1 for rods
 };
 
 // One H5MD element of /observables: value[i] was recorded at time[i].

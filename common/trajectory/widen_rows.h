@@ -1,6 +1,7 @@
 // A 2D file's per-particle rows (2 numbers each) as the 3-vectors every
 // reader and the engine use, with z = 0: disks are spheres confined to the
-// plane z = 0 (simulate/engine/engine.h).
+// plane z = 0 (simulate/engine/engine.h). A 1D file's rows (1 number each)
+// widen the same way, y = z = 0: rods on the x axis.
 #pragma once
 #include <cstddef>
 #include <vector>
