@@ -11,8 +11,8 @@ namespace coolgas {
 namespace {
 // Run numbers and masses are int32 (cluster_labeller.h): fewer than 2^31
 // cells; in 2D also the 32-bit bit index of a cell (cluster_occupancy.h),
-// 64 ceil(n/64) n < 2^32; in 1D one row of fewer than 2^31 cells, whose
-// last word stays below 2^31 bits.
+// 64 ceil(n/64) n < 2^32; in 1D one row of fewer than 2^31 cells, n + 63
+// (its words are (n + 63)/64) still an int.
 constexpr int kMaxPerSide = 1250, kMaxPerSide2d = 40000, kMaxPerSide1d = 2147483583;
 }  // namespace
 

@@ -22,7 +22,7 @@ namespace coolgas {
 class ClusterGrid {
  public:
   // Grid for a periodic box of side L in `dimension` 3, 2 or 1 (InputError
-  // unless 1 <= L < 1251 in 3D, L < 40001 in 2D, L < 2^31 - 63 in 1D: the
+  // unless 1 <= L < 1251 in 3D, L < 40001 in 2D, L < 2^31 - 64 in 1D: the
   // labeller's links are 32-bit).
   explicit ClusterGrid(double L, int dimension = 3);
 

@@ -134,7 +134,7 @@ TEST(RodClusters, RandomOccupationIsOneDimensionalPercolation) {
 }
 
 // A line holds far more cells than a plane: the grid takes rings up to
-// L < 2^31 - 63, and no 1D cell index overflows.
+// L < 2^31 - 64, and no 1D cell index overflows.
 TEST(RodClusters, TheGridTakesRingsUpToTwoToThe31) {
   EXPECT_THROW(ClusterGrid(40001.0, 2), InputError);
   EXPECT_EQ(ClusterGrid(1e9, 1).cells(), 1'000'000'000);
