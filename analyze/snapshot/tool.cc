@@ -7,6 +7,7 @@
 #include "analyze/snapshot/space_time.h"
 #include "common/trajectory/frame_reader.h"
 #include "common/error.h"
+#include "common/memory.h"
 #include "common/output_file.h"
 #include "common/tsv.h"
 
@@ -69,8 +70,19 @@ struct RodDumps {
   std::vector<SpaceTimeRow> rows;
 };
 
+// The rows are held until gnuplot runs: refused before reading when they
+// would not fit the machine's memory.
+void check_rows_fit(const Trajectory& traj, std::size_t last) {
+  const double bytes = double(last + 1) * double(traj.particles()) * sizeof(SpaceTimeRod);
+  if (bytes > physical_memory_bytes())
+    throw InputError(traj.path() + ": " + std::to_string(last + 1) + " dumps of " + std::to_string(traj.particles()) +
+                     " rods take " + bytes_text(bytes) + ", more than this machine's memory (" +
+                     bytes_text(physical_memory_bytes()) + "); give an earlier --time");
+}
+
 RodDumps read_rod_dumps(const std::string& path, std::size_t last) {
   const Trajectory traj(path, kPosition | kVelocity | kAnyDimension);
+  check_rows_fit(traj, last);
   RodDumps dumps;
   Frame f;
   for (std::size_t d = 0; d <= last; ++d) {
