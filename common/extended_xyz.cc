@@ -34,11 +34,14 @@ void write_xyz_frame(std::ostream& out, const XyzFrame& f, const Provenance& pro
   const std::size_t n = f.position.size() / 3;
   const std::string L = format_number(f.L);
   const bool spheres = !f.diameter.empty();
-  const bool disks = f.dimension == 2;  // the plane z = 0: a unit third lattice vector, not periodic
-  out << n << "\nLattice=\"" << L << " 0 0 0 " << L << " 0 0 0 " << (disks ? "1" : L)
+  // Disks: the plane z = 0, a unit third lattice vector, not periodic; rods:
+  // the x axis, unit second and third vectors, periodic along x only.
+  const std::string b = f.dimension >= 2 ? L : "1", c = f.dimension == 3 ? L : "1";
+  const char* pbc = f.dimension == 3 ? " pbc=\"T T T\"" : f.dimension == 2 ? " pbc=\"T T F\"" : " pbc=\"T F F\"";
+  out << n << "\nLattice=\"" << L << " 0 0 0 " << b << " 0 0 0 " << c
       << "\" Properties=species:S:1:pos:R:3" << (f.velocity.empty() ? "" : ":velo:R:3") << (f.id.empty() ? "" : ":id:I:1")
       << (spheres ? ":radius:R:1" : "") << (f.mass.empty() ? "" : ":mass:R:1")
-      << (disks ? " pbc=\"T T F\"" : " pbc=\"T T T\"");
+      << pbc;
   if (f.time) out << " Time=" << format_number(*f.time);
   if (f.step) out << " Step=" << *f.step;
   for (const auto& [k, v] : provenance) out << " " << xyz_key(k) << "=" << quoted(v);

@@ -8,7 +8,8 @@
 //
 // with radius:R:1:mass:R:1 appended for ballistic aggregates (a 2D frame,
 // disks: Lattice="L 0 0 0 L 0 0 0 1" pbc="T T F", z = 0: periodic in the
-// plane, as ASE and OVITO read a 2D system), every number in
+// plane, as ASE and OVITO read a 2D system; a 1D frame, rods:
+// Lattice="L 0 0 0 1 0 0 0 1" pbc="T F F", y = z = 0), every number in
 // its shortest form that reads back to the same double (so a frame written
 // and read again is exact), and the provenance as further quoted pairs.
 // Reading takes what another program may write: any order of properties, pos
@@ -27,7 +28,7 @@ namespace coolgas {
 
 struct XyzFrame {
   double L = 0;                // cubic periodic box side (Lattice = L times the unit matrix)
-  int dimension = 3;           // written: 2 for disks (see above); read: always 3
+  int dimension = 3;           // written: 2 for disks, 1 for rods (see above); read: always 3
   std::optional<double> time;  // Time=
   std::optional<std::int64_t> step;
   std::optional<double> T0;    // T0= (coolgas-convert writes the source's time unit); read only

@@ -31,7 +31,7 @@ void fill_cluster_masses(MassHistogram& hist, ClusterLabeller& labeller, double 
 }
 
 TableBlock cluster_block(ClusterTable table, double t, double L, const MassHistogram& h, int dimension) {
-  const double volume = dimension == 3 ? L * L * L : L * L;
+  const double volume = dimension == 3 ? L * L * L : dimension == 2 ? L * L : L;
   const ClusterMoments& mo = h.moments();
   TableBlock b;
   if (table == ClusterTable::kSeries) {

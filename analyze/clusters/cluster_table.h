@@ -22,7 +22,8 @@ const std::vector<std::string>& cluster_columns(ClusterTable table);
 
 // The masses of one frame into `hist` (cleared first): the paper's clusters
 // of the particles at `positions` (x0 y0 z0 x1 ...; z = 0 in 2D) in a box of
-// side L in `dimension` 3 (unit cubes) or 2 (unit squares), or,
+// side L in `dimension` 3 (unit cubes), 2 (unit squares) or 1 (unit
+// segments of the ring; y = z = 0), or,
 // when `aggregate_mass` is not empty (ballistic aggregation), the
 // aggregates themselves, each of its mass rounded to whole particles.
 void fill_cluster_masses(MassHistogram& hist, ClusterLabeller& labeller, double L, std::span<const double> positions,

@@ -27,8 +27,9 @@ void run_clusters(const ClustersOptions& opt, std::ostream& final_out) {
   if (traj.aggregates())  // ballistic aggregation: the clusters are the aggregates themselves
     prov.emplace_back("clusters", "the aggregates of the file (ballistic aggregation); mass in particles");
   else
-    prov.emplace_back("cells", d == 3 ? "floor(L)^3 cubic cells of side L/floor(L); face neighbours; periodic"
-                                      : "floor(L)^2 square cells of side L/floor(L); edge neighbours; periodic");
+    prov.emplace_back("cells", d == 3   ? "floor(L)^3 cubic cells of side L/floor(L); face neighbours; periodic"
+                               : d == 2 ? "floor(L)^2 square cells of side L/floor(L); edge neighbours; periodic"
+                                        : "floor(L) segments of length L/floor(L); left and right neighbours; periodic");
   for (double t : opt.times) prov.emplace_back("time", format_number(t));
   if (opt.series && opt.scaled) throw InputError("--series and --scaled exclude each other: choose one table");
   prov.emplace_back("table", opt.series ? "cluster series" : (opt.scaled ? "scaled mass distribution" : "mass distribution"));

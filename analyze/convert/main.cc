@@ -25,7 +25,9 @@ int main(int argc, char** argv) {
         "convert_units=False). Positions are wrapped into [0, L), written exactly (shortest round-trip form).\n"
         "An XYZ frame can start a new run: coolgas-simulate with system.init = \"file\", system.from = FILE.\n"
         "A 2D file (disks): z = 0 in both formats; xyz writes Lattice=\"L 0 0 0 L 0 0 0 1\" pbc=\"T T F\" (periodic in\n"
-        "the plane, as ASE reads a 2D system), lammps the z bounds -0.5 0.5 of a LAMMPS run with `dimension 2`."};
+        "the plane, as ASE reads a 2D system), lammps the z bounds -0.5 0.5 of a LAMMPS run with `dimension 2`.\n"
+        "A 1D file (rods): xyz only, y = z = 0, Lattice=\"L 0 0 0 1 0 0 0 1\" pbc=\"T F F\" (periodic along x);\n"
+        "LAMMPS has no 1D mode, so --format lammps is refused for it."};
     app.add_option("trajectory", o.input, "trajectory file (H5MD, written by coolgas-simulate)")->required();
     app.add_option("--format", format, "xyz or lammps")->check(CLI::IsMember({"xyz", "lammps"}))->capture_default_str();
     auto* time = coolgas::add_dump_selection(app, o.times, o.exact_time, "only the dump nearest this time (default: every dump)");

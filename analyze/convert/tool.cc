@@ -20,12 +20,20 @@ XyzFrame xyz_of(const Frame& f, int dimension) {
   return x;
 }
 
+// LAMMPS runs in 2 or 3 dimensions only: a 1D file has no LAMMPS dump.
+void check_format(const ConvertOptions& opt, int dimension) {
+  if (opt.format != ExportFormat::kLammps || dimension != 1) return;
+  throw InputError(opt.input + ": a 1D trajectory (rods) has no LAMMPS dump: LAMMPS runs in 2 or 3 dimensions; use "
+                   "--format xyz (pbc=\"T F F\")");
+}
+
 }  // namespace
 
 void run_convert(const ConvertOptions& opt, std::ostream& out) {
   for (double t : opt.times)
     if (!std::isfinite(t)) throw InputError("--time " + format_number(t) + ": a time is a finite number [1/omega0]");
   const Trajectory t(opt.input, kPosition | kVelocity | kImage | kDiameter | kAnyDimension);
+  check_format(opt, t.dimension());
   const std::vector<std::size_t> dumps =
       opt.last ? std::vector<std::size_t>{t.dump_times().size() - 1} : t.dumps_nearest(opt.times, opt.exact_time);
   Provenance provenance{{"tool", "coolgas-convert"}, {"version", program_version()}};

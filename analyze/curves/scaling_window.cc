@@ -53,8 +53,14 @@ std::optional<double> past_haff(const Table& table, const FitColumns& columns, d
 
 double crossover_z(int dimension) { return (dimension + 2) / 2.0; }
 
+// z = (d+2)/2 written as the papers write it: L^2 in 2D, L^(5/2) and L^(3/2) in 3D and 1D.
 std::string crossover_text(const Table& table) {
-  return dimension_of(table) == 3 ? "0.1 L^(5/2)" : "0.1 L^" + short_number(crossover_z(dimension_of(table)));
+  const int d = dimension_of(table);
+  std::string text = "0.1 L^";  // appended piece by piece: GCC 12 warns falsely on "(" + std::string
+  if (d % 2 == 0) return text += std::to_string((d + 2) / 2);
+  text += "(";
+  text += std::to_string(d + 2);
+  return text += "/2)";
 }
 
 double finite_size_crossover(const Table& table) {

@@ -10,7 +10,7 @@
 //   end:   t = 0.1 L^z, the paper's finite-size crossover x = t/L^z ~ 0.1
 //          (Pathak et al. 2014, Fig. 1), when the table's provenance gives L;
 //          else the last row. z = d/theta with the mean-field theta =
-//          2d/(d+2): z = (d+2)/2, 5/2 in 3D (the paper's), 2 in 2D, d from
+//          2d/(d+2): z = (d+2)/2, 5/2 in 3D (the paper's), 2 in 2D, 3/2 in 1D, d from
 //          the table's dimension line (common/dimension_line.h).
 //   In 2D the start's rule is the same: Haff's t^-2 holds in every
 //   dimension, and 3/2 lies between it and the 2D theories' theta = 1.
@@ -30,7 +30,7 @@ std::optional<double> past_haff(const Table& table, const FitColumns& columns, d
 double finite_size_crossover(const Table& table);
 // The mean-field z = (d+2)/2 of that crossover in dimension d.
 double crossover_z(int dimension);
-// "0.1 L^(5/2)" (3D) or "0.1 L^2" (2D), for messages.
+// "0.1 L^(5/2)" (3D), "0.1 L^2" (2D) or "0.1 L^(3/2)" (1D), for messages.
 std::string crossover_text(const Table& table);
 
 struct ChosenWindow {

@@ -31,7 +31,7 @@ int main(int argc, char** argv) {
                                       "fit only rows with TMIN <= t <= TMAX, as TMIN:TMAX [time]; a side may be empty.\n"
                                       "--power without it: E past Haff's law (from where it falls as t^-1, or back to\n"
                                       "t^-3/2 if it fell faster) to the finite-size crossover t = 0.1 L^(5/2) (L from\n"
-                                      "the table; 0.1 L^2 for a 2D run's table); other columns: t > 0; stderr says which");
+                                      "the table; 0.1 L^2 and 0.1 L^(3/2) for a 2D and a 1D run's table); other columns: t > 0; stderr says which");
     app.add_option("--t-column", o.columns.t, "name of the time column")->capture_default_str();
     app.add_option("--e-column", o.columns.E, "name of the energy column")->capture_default_str();
     app.add_option("--err-column", err, "name of the column of standard errors of E (default: <E>_err if usable)");

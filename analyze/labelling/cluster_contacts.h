@@ -42,21 +42,23 @@ void for_each_contact(const std::uint64_t* a, const std::uint64_t* b, int words,
 // every contact once. Runs connect cells along x, so runs plus contacts
 // connect exactly the face-adjacent occupied cells. With ncell <= 2 the
 // periodic neighbours are interior ones (or the cell itself) and are not
-// linked again; a 2D grid's single plane has no neighbour along z.
+// linked again; a 2D grid's single plane has no neighbour along z, a 1D
+// grid's single row none along y either (only its ends meet, across x).
 template <class OnLink>
 void walk_plane_contacts(const CellOccupancy& occ, const CellRuns& runs, std::int64_t k, OnLink&& on_link) {
   const int n = occ.grid().per_side(), words = occ.words_per_row(), planes = occ.grid().planes();
+  const int rows = occ.grid().rows_per_plane();
   const bool periodic = n > 2;
-  for (std::int64_t j = 0; j < n; ++j) {
-    const std::int64_t r = j + n * k;
+  for (std::int64_t j = 0; j < rows; ++j) {
+    const std::int64_t r = j + rows * k;
     if (periodic && occ.occupied(0, r) && occ.occupied(n - 1, r)) on_link(runs.run_at(r, 0), runs.run_at(r, n - 1));
     auto link_rows = [&](std::int64_t other) {
       cluster_contacts_detail::for_each_contact(occ.row(r), occ.row(other), words,
                                                 [&](int x) { on_link(runs.run_at(r, x), runs.run_at(other, x)); });
     };
     if (j > 0) link_rows(r - 1);
-    if (k > 0) link_rows(r - n);
-    if (periodic && j == n - 1) link_rows(n * k);
+    if (k > 0) link_rows(r - rows);
+    if (rows > 2 && j == rows - 1) link_rows(rows * k);
     if (planes > 2 && k == planes - 1) link_rows(j);
   }
 }

@@ -1,6 +1,7 @@
 // The paper's cluster grid: the periodic box of side L cut into cubic cells
 // of side about one particle diameter (in 2D, square cells: the same grid
-// with a single plane, k = 0, every disk's z being 0).
+// with a single plane, k = 0, every disk's z being 0; in 1D, unit segments
+// of the ring: a single row, j = k = 0, neighbours left and right).
 //
 // The paper uses cells of side exactly σ = 1, which tiles the box only when L
 // is an integer. We use ncell = floor(L) cells per side of width
@@ -20,17 +21,18 @@ namespace coolgas {
 
 class ClusterGrid {
  public:
-  // Grid for a periodic box of side L in `dimension` 3 or 2 (InputError
-  // unless 1 <= L < 1251 in 3D, L < 40001 in 2D: the labeller's links are
-  // 32-bit).
+  // Grid for a periodic box of side L in `dimension` 3, 2 or 1 (InputError
+  // unless 1 <= L < 1251 in 3D, L < 40001 in 2D, L < 2^31 - 64 in 1D: the
+  // labeller's links are 32-bit).
   explicit ClusterGrid(double L, int dimension = 3);
 
   int per_side() const { return n_; }
   int dimension() const { return dimension_; }
-  int planes() const { return dimension_ == 3 ? n_ : 1; }  // along z
+  int planes() const { return dimension_ == 3 ? n_ : 1; }          // along z
+  int rows_per_plane() const { return dimension_ == 1 ? 1 : n_; }  // along y
   double width() const { return width_; }
   double box() const { return L_; }
-  std::int64_t cells() const { return std::int64_t(n_) * n_ * planes(); }
+  std::int64_t cells() const { return std::int64_t(n_) * rows_per_plane() * planes(); }
 
   // Cell of one coordinate: floor(x / w) clamped to [0, ncell-1], so positions
   // a round-off outside [0, L) still land in the boundary cell. Computed as

@@ -33,7 +33,7 @@ class CellOccupancy {
 
   const ClusterGrid& grid() const { return grid_; }
   int words_per_row() const { return words_; }
-  std::int64_t rows() const { return std::int64_t(grid_.per_side()) * grid_.planes(); }
+  std::int64_t rows() const { return std::int64_t(grid_.rows_per_plane()) * grid_.planes(); }
   // Occupancy words of row r = j + ncell*k.
   const std::uint64_t* row(std::int64_t r) const { return bits_.data() + r * words_; }
   bool occupied(std::int64_t i, std::int64_t r) const { return (row(r)[i >> 6] >> (i & 63)) & 1u; }

@@ -33,16 +33,16 @@ py::array_t<T> to_numpy(std::vector<T>&& v, std::vector<py::ssize_t> shape) {
 }
 
 // An (N, 3) array of finite numbers (positions, velocities) as x0 y0 z0 x1 ...,
-// or, for disks, an (N, 2) array as the same 3-vectors with z = 0 (a copy:
-// the libraries take 3 numbers per particle); InputError naming the
-// argument, its shape or the first bad value.
+// or, for disks, an (N, 2) array as the same 3-vectors with z = 0, for rods
+// an (N, 1) array with y = z = 0 (a copy: the libraries take 3 numbers per
+// particle); InputError naming the argument, its shape or the first bad value.
 class PointRows {
  public:
   PointRows(const PointRows&) = delete;  // xyz() may point into the object itself
   PointRows& operator=(const PointRows&) = delete;
   PointRows(const Doubles& a, const char* name) {
-    if (a.ndim() != 2 || (a.shape(1) != 3 && a.shape(1) != 2))
-      throw InputError(std::string(name) + " must be an array of shape (N, 3), or (N, 2) for disks, got " +
+    if (a.ndim() != 2 || a.shape(1) < 1 || a.shape(1) > 3)
+      throw InputError(std::string(name) + " must be an array of shape (N, 3), or (N, 2) for disks, (N, 1) for rods, got " +
                        std::to_string(a.ndim()) + " dimensions" +
                        (a.ndim() == 2 ? " (N, " + std::to_string(a.shape(1)) + ")" : ""));
     dimension_ = int(a.shape(1));
@@ -56,7 +56,7 @@ class PointRows {
       return;
     }
     widened_.assign(s.begin(), s.end());
-    widen_to_three(widened_, s.size() / 2, 2);
+    widen_to_three(widened_, s.size() / std::size_t(dimension_), std::size_t(dimension_));
     xyz_ = widened_;
   }
   std::span<const double> xyz() const { return xyz_; }
@@ -64,12 +64,13 @@ class PointRows {
 
  private:
   int dimension_ = 3;
-  std::vector<double> widened_;  // 2D only
+  std::vector<double> widened_;  // 2D and 1D only
   std::span<const double> xyz_;
 };
 
 // The rows of a 3-wide frame array (n rows) as an (n, d) numpy array: a 2D
-// file's frames hold z = 0 (common/trajectory/widen_rows.h), dropped here.
+// file's frames hold z = 0, a 1D file's y = z = 0
+// (common/trajectory/widen_rows.h), dropped here.
 template <class T>
 py::array_t<T> rows_of(std::vector<T>&& v, std::size_t n, int d) {
   for (std::size_t i = 0; d < 3 && i < n; ++i)

@@ -47,7 +47,7 @@ py::dict parameters(const std::string& path) {
 py::tuple observable(const std::string& path, const std::string& name) {
   ObservableRows r = read_observable_rows(path, std::string(layout::kObservables) + "/" + name);
   const auto rows = py::ssize_t(r.time.size());
-  py::array value = r.per_row == 1 ? py::array(to_numpy(std::move(r.value), {rows}))
+  py::array value = !r.vectors ? py::array(to_numpy(std::move(r.value), {rows}))
                                    : py::array(to_numpy(std::move(r.value), {rows, py::ssize_t(r.per_row)}));
   return py::make_tuple(to_numpy(std::move(r.time), {rows}), value);
 }
@@ -70,7 +70,7 @@ class TrajectoryView {
     Frame f;
     traj_.read(dump, f);
     const auto n = py::ssize_t(f.particles());
-    const int dim = traj_.dimension();  // rows of d numbers: (n, 2) for disks
+    const int dim = traj_.dimension();  // rows of d numbers: (n, 2) for disks, (n, 1) for rods
     py::dict d;
     d["index"] = f.dump;
     d["t"] = f.time;

@@ -38,10 +38,14 @@ std::vector<ClusterShape> aggregate_shapes(std::span<const double> mass, int dim
       const double d = std::cbrt(m), l = d * d / 20;
       c.shape.lambda = {l, l, l};
       c.shape.Rg = std::sqrt(3 * l);
-    } else {  // a solid disc of diameter d: <x^2> = (d/2)^2 / 4
+    } else if (dimension == 2) {  // a solid disc of diameter d: <x^2> = (d/2)^2 / 4
       const double l = m / 16;
       c.shape.lambda = {l, l, 0};
       c.shape.Rg = std::sqrt(2 * l);
+    } else {  // a solid rod of length m: <x^2> = m^2 / 12
+      const double l = m * m / 12;
+      c.shape.lambda = {l, 0, 0};
+      c.shape.Rg = std::sqrt(l);
     }
     out.push_back(c);
   }

@@ -8,7 +8,8 @@
 // sphere it is in the simulation: diameter d = m^(1/3) (volumes add), all
 // three eigenvalues d^2/20, R_g^2 = (3/5)(d/2)^2, asphericity and
 // prolateness 0, and M ~ R_g^3 exactly; in 2D the solid disc of diameter
-// m^(1/2) (areas add): both eigenvalues d^2/16, M ~ R_g^2.
+// m^(1/2) (areas add): both eigenvalues d^2/16, M ~ R_g^2; in 1D the solid
+// rod of length m (lengths add): its one eigenvalue m^2/12, M ~ R_g.
 #pragma once
 #include <span>
 #include <vector>
@@ -37,7 +38,7 @@ class ClusterShapes {
   std::vector<GyrationSums> sums_;
 };
 
-// Aggregates of masses `mass` as solid spheres (2D: discs), in order of decreasing mass (stable).
+// Aggregates of masses `mass` as solid spheres (2D: discs, 1D: rods), in order of decreasing mass (stable).
 std::vector<ClusterShape> aggregate_shapes(std::span<const double> mass, int dimension = 3);
 
 }  // namespace coolgas

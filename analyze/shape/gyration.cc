@@ -33,10 +33,11 @@ Shape shape_of(const GyrationSums& g, int dimension) {
   G(0, 2) = G(2, 0) = g.ss[4] / m - c[0] * c[2];
   G(1, 2) = G(2, 1) = g.ss[5] / m - c[1] * c[2];
   if (dimension == 3) eigenvalues<3>(G, out.lambda);
-  else eigenvalues<2>(G, out.lambda);
+  else if (dimension == 2) eigenvalues<2>(G, out.lambda);
+  else out.lambda[0] = std::max(0.0, G(0, 0));
   const double sum = out.lambda[0] + out.lambda[1] + out.lambda[2];
   out.Rg = std::sqrt(sum);
-  if (sum <= 0) return out;
+  if (sum <= 0 || dimension == 1) return out;  // 1D: R_g is all there is
   const double mean = sum / dimension;
   double dev2 = 0, prod = 1;
   for (int i = 0; i < dimension; ++i) {

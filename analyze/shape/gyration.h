@@ -13,6 +13,9 @@
 // for d dimensions, A = (d/(d-1)) sum_i (l_i - lbar)^2 / (sum_i l_i)^2
 // = ((l2 - l1)/(l1 + l2))^2: 0 for a disc or square, 1 for a rod; the
 // prolateness is a 3D invariant (0 in 2D, and no column of the 2D tables).
+// In 1D (points on the x axis) the "tensor" is the one number l1 = <x^2> -
+// <x>^2 = R_g^2; no shape invariant is left (asphericity and prolateness 0,
+// and no columns of the 1D tables).
 #pragma once
 #include <array>
 #include <cstdint>
@@ -34,11 +37,11 @@ struct GyrationSums {
 
 struct Shape {
   std::int64_t mass = 0;
-  std::array<double, 3> lambda{};  // ascending; in 2D the first two (the third 0)
+  std::array<double, 3> lambda{};  // ascending; in 2D the first two (the third 0), in 1D the first
   double Rg = 0, asphericity = 0, prolateness = 0;
 };
 
-// The shape of the points in `dimension` 3, or 2 (every z = 0).
+// The shape of the points in `dimension` 3, 2 (every z = 0) or 1 (every y and z = 0).
 Shape shape_of(const GyrationSums& g, int dimension = 3);
 
 }  // namespace coolgas

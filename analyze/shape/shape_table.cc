@@ -21,8 +21,10 @@ const std::vector<std::string>& all_columns(ShapeTable table) {
   return clusters;
 }
 
-// A 2D table leaves out the columns of 3D invariants.
+// A 2D table leaves out the columns of 3D invariants; a 1D table those of
+// any shape (its 1 x 1 tensor is R_g^2 itself).
 bool in_dimension(const std::string& column, int dimension) {
+  if (dimension == 1) return column != "lambda2" && column != "lambda3" && column != "asphericity" && column != "prolateness";
   return dimension == 3 || (column != "lambda3" && column != "prolateness");
 }
 

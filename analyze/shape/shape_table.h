@@ -15,7 +15,8 @@
 
 namespace coolgas {
 
-// The table's columns; a 2D table (dimension 2) has no lambda3 and no prolateness.
+// The table's columns; a 2D table (dimension 2) has no lambda3 and no
+// prolateness, a 1D table no lambda2, lambda3, asphericity or prolateness.
 std::vector<std::string> shape_columns(ShapeTable table, int dimension = 3);
 
 // InputError unless bins_per_decade >= 1 and min_mass >= 1 (the tool's options).

@@ -25,16 +25,27 @@ const char* table_name(ShapeTable t) {
   return "";
 }
 
+const char* aggregates_text(int dimension) {
+  if (dimension == 3)
+    return "the aggregates of the file (ballistic aggregation) as solid spheres of diameter "
+           "m^(1/3): their particles are not recorded, so d_f = 3 by construction";
+  if (dimension == 2)
+    return "the aggregates of the file (ballistic aggregation) as solid discs of diameter "
+           "m^(1/2): their particles are not recorded, so d_f = 2 by construction";
+  return "the aggregates of the file (ballistic aggregation) as solid rods of length m: their particles are not "
+         "recorded, so d_f = 1 by construction";
+}
+
 const char* clusters_text(const Trajectory& traj) {
-  if (traj.aggregates())
-    return traj.dimension() == 3 ? "the aggregates of the file (ballistic aggregation) as solid spheres of diameter "
-                                   "m^(1/3): their particles are not recorded, so d_f = 3 by construction"
-                                 : "the aggregates of the file (ballistic aggregation) as solid discs of diameter "
-                                   "m^(1/2): their particles are not recorded, so d_f = 2 by construction";
-  return traj.dimension() == 3 ? "floor(L)^3 cubic cells of side L/floor(L); face neighbours; periodic; each unwrapped "
-                                 "along its own cells; gyration tensor of its particle centres"
-                               : "floor(L)^2 square cells of side L/floor(L); edge neighbours; periodic; each unwrapped "
-                                 "along its own cells; 2 x 2 gyration tensor of its particle centres";
+  if (traj.aggregates()) return aggregates_text(traj.dimension());
+  if (traj.dimension() == 3)
+    return "floor(L)^3 cubic cells of side L/floor(L); face neighbours; periodic; each unwrapped "
+           "along its own cells; gyration tensor of its particle centres";
+  if (traj.dimension() == 2)
+    return "floor(L)^2 square cells of side L/floor(L); edge neighbours; periodic; each unwrapped "
+           "along its own cells; 2 x 2 gyration tensor of its particle centres";
+  return "floor(L) segments of length L/floor(L); left and right neighbours; periodic; each unwrapped along its "
+         "own segments; R_g^2 of its particle centres (the 1 x 1 gyration tensor)";
 }
 
 Provenance provenance(const Trajectory& traj, const ShapeOptions& o, const Window& fit) {

@@ -27,7 +27,7 @@ void ClusterUnwrapping::walk(const ClusterGrid& grid, std::size_t cluster) {
     const std::int64_t c = queue_[head];
     const CellImage here = image_[c];
     const std::int64_t at[3] = {c % n, (c / n) % n, c / (n * n)};
-    for (int axis = 0; axis < grid.dimension(); ++axis)  // 2D: one plane, no z neighbours
+    for (int axis = 0; axis < grid.dimension(); ++axis)  // 2D: one plane, no z neighbours; 1D: one row
       for (int step : {-1, 1}) {
         std::int64_t to[3] = {at[0], at[1], at[2]};
         int shift = 0;  // image change on crossing the face at 0 or n

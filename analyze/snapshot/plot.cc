@@ -45,13 +45,6 @@ class TempDir {
   fs::path path_;
 };
 
-// gnuplot single-quoted string: a quote is written twice.
-std::string quoted(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("''") : std::string(1, c);
-  return q + "'";
-}
-
 void write_data(const SnapshotScene& scene, const fs::path& file) {
   std::ofstream out(file);
   char line[96];
@@ -63,10 +56,17 @@ void write_data(const SnapshotScene& scene, const fs::path& file) {
   if (!out) throw WriteError("cannot write the snapshot data to " + file.string() + ": " + std::strerror(errno));
 }
 
-// Terminal line: the width adds room for the key beside the square picture;
-// the font grows with the picture (18 at 900 pixels, 14 at 700), so that it
+}  // namespace
+
+std::string gnuplot_quoted(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("''") : std::string(1, c);
+  return q + "'";
+}
+
+// The font grows with the picture (18 at 900 pixels, 14 at 700), so that it
 // stays readable where the picture is shown smaller (the pipelines' Fig. 3).
-std::string terminal(const PlotOptions& o, int width) {
+std::string gnuplot_terminal(const PlotOptions& o, int width) {
   const int font = std::max(10, int(std::lround(o.size_px / 50.0)));
   std::ostringstream t;
   switch (o.format) {
@@ -79,6 +79,10 @@ std::string terminal(const PlotOptions& o, int width) {
   t << " font '," << font << "'";
   return t.str();
 }
+
+namespace {
+
+std::string quoted(const std::string& s) { return gnuplot_quoted(s); }
 
 std::string hex(std::uint32_t rgb) {
   char s[16];
@@ -99,7 +103,7 @@ std::string key_entries(const SnapshotScene& scene, const std::string& what) {
 
 std::string script(const SnapshotScene& scene, const PlotOptions& o, const fs::path& data, const fs::path& picture) {
   std::ostringstream s;
-  s << "set terminal " << terminal(o, o.size_px + o.size_px * 3 / 10) << "\n"
+  s << "set terminal " << gnuplot_terminal(o, o.size_px + o.size_px * 3 / 10) << "\n"
     << "set output " << quoted(picture.string()) << "\n"
     << "set title " << quoted(o.title) << "\n"
     << "set key outside right top samplen 1 title " << quoted("largest " + o.what + "s") << "\n"
@@ -190,16 +194,24 @@ PictureFormat picture_format(const std::string& output) {
 }
 
 void render_picture(const SnapshotScene& scene, const PlotOptions& opt, const std::string& output) {
+  render_with_gnuplot([&](const fs::path& data) { write_data(scene, data); },
+                      [&](const fs::path& data, const fs::path& picture) { return script(scene, opt, data, picture); },
+                      opt, output);
+}
+
+void render_with_gnuplot(const std::function<void(const fs::path& data)>& write,
+                         const std::function<std::string(const fs::path& data, const fs::path& picture)>& make_script,
+                         const PlotOptions& opt, const std::string& output) {
   const fs::path dir = fs::absolute(output).parent_path();
   if (!fs::is_directory(dir))
     throw InputError("cannot write '" + output + "': directory '" + dir.string() + "' does not exist");
   TempDir tmp;
   const fs::path data = tmp.path() / "particles.dat", png = tmp.path() / (std::string("snapshot") + extension(opt.format));
   const fs::path gp = tmp.path() / "snapshot.gp", log = tmp.path() / "gnuplot.log";
-  write_data(scene, data);
+  write(data);
   {
     std::ofstream script_file(gp);
-    script_file << script(scene, opt, data, png);
+    script_file << make_script(data, png);
     script_file.close();
     if (!script_file) throw WriteError("cannot write the gnuplot script to " + gp.string() + ": " + std::strerror(errno));
   }

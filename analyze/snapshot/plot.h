@@ -5,8 +5,9 @@
 // so a failure never leaves a truncated picture behind. A key beside the
 // picture names each coloured cluster's mass.
 #pragma once
+#include <filesystem>
+#include <functional>
 #include <string>
-
 
 #include "analyze/snapshot/scene.h"
 
@@ -31,5 +32,18 @@ struct PlotOptions {
 // InputError (one line) if the destination's directory is missing, gnuplot
 // cannot be run, or gnuplot fails (quoting its first error line).
 void render_picture(const SnapshotScene& scene, const PlotOptions& opt, const std::string& output);
+
+// What render_picture does for any picture: `write` fills the data file,
+// `make_script` returns the gnuplot script drawing it into the picture
+// (both in a temporary directory); the same errors.
+void render_with_gnuplot(const std::function<void(const std::filesystem::path& data)>& write,
+                         const std::function<std::string(const std::filesystem::path& data,
+                                                         const std::filesystem::path& picture)>& make_script,
+                         const PlotOptions& opt, const std::string& output);
+
+// A gnuplot single-quoted string (a quote is written twice).
+std::string gnuplot_quoted(const std::string& s);
+// The `set terminal` line's argument for opt.format at `width` x opt.size_px.
+std::string gnuplot_terminal(const PlotOptions& opt, int width);
 
 }  // namespace coolgas

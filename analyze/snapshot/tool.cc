@@ -4,8 +4,10 @@
 #include <filesystem>
 #include <ostream>
 
+#include "analyze/snapshot/space_time.h"
 #include "common/trajectory/frame_reader.h"
 #include "common/error.h"
+#include "common/memory.h"
 #include "common/output_file.h"
 #include "common/tsv.h"
 
@@ -54,6 +56,72 @@ SnapshotToolOptions for_dimension(const SnapshotToolOptions& o, const Trajectory
   return plane;
 }
 
+// A 1D file: every option of the 2D and 3D pictures is refused, naming the first given.
+void refuse_for_rods(const SnapshotToolOptions& o) {
+  const std::string given = o.only_3d.empty() ? o.not_1d : o.only_3d;
+  if (given.empty()) return;
+  throw InputError(o.input + ": " + given + " is not for 1D trajectories (rods): a 1D file is drawn as a space-time " +
+                   "diagram of its dumps up to --time, coloured by velocity, without --view, --thickness, --colored " +
+                   "or --max-points");
+}
+
+struct RodDumps {
+  double L = 0;  // the ring's length at the last dump
+  std::vector<SpaceTimeRow> rows;
+};
+
+// The rows are held until gnuplot runs: refused before reading when they
+// would not fit the machine's memory.
+void check_rows_fit(const Trajectory& traj, std::size_t last) {
+  const double bytes = double(last + 1) * double(traj.particles()) * sizeof(SpaceTimeRod);
+  if (bytes > physical_memory_bytes())
+    throw InputError(traj.path() + ": " + std::to_string(last + 1) + " dumps of " + std::to_string(traj.particles()) +
+                     " rods take " + bytes_text(bytes) + ", more than this machine's memory (" +
+                     bytes_text(physical_memory_bytes()) + "); give an earlier --time");
+}
+
+RodDumps read_rod_dumps(const std::string& path, std::size_t last) {
+  const Trajectory traj(path, kPosition | kVelocity | kAnyDimension);
+  check_rows_fit(traj, last);
+  RodDumps dumps;
+  Frame f;
+  for (std::size_t d = 0; d <= last; ++d) {
+    traj.read(d, f);
+    dumps.rows.push_back(space_time_row(f.time, f.position, f.velocity,
+                                        traj.aggregates() ? std::span<const double>(f.mass) : std::span<const double>()));
+    dumps.L = f.L;
+  }
+  return dumps;
+}
+
+Provenance space_time_provenance(const Trajectory& traj, const SnapshotToolOptions& o, const RodDumps& dumps) {
+  Provenance p = traj.provenance();
+  p.emplace_back("time", format_number(o.times.front()));
+  p.emplace_back("dump_time", format_number(dumps.rows.back().t));
+  p.emplace_back("view", "space-time");
+  p.emplace_back("rows", std::to_string(dumps.rows.size()) + " dumps, the first to the one nearest --time");
+  p.emplace_back("colour", "v / v_rms of each dump, blue -" + format_number(kSpaceTimeVelocityRange) + " .. grey 0 .. red +" +
+                               format_number(kSpaceTimeVelocityRange));
+  p.emplace_back("output", o.output);
+  return p;
+}
+
+void draw_space_time(const SnapshotToolOptions& o, const Trajectory& traj, PictureFormat format, std::ostream& os) {
+  refuse_for_rods(o);
+  const RodDumps dumps = read_rod_dumps(o.input, traj.dump_at(o.times.front(), o.exact_time));
+  char last[32];
+  std::snprintf(last, sizeof last, "%.4g", dumps.rows.back().t);
+  const PlotOptions plot{.title = std::filesystem::path(o.input).filename().string() + "   space-time, t up to " + last,
+                         .L = dumps.L,
+                         .size_px = o.size_px,
+                         .what = traj.aggregates() ? "aggregate" : "rod",
+                         .gnuplot = o.gnuplot,
+                         .format = format};
+  render_space_time(dumps.rows, plot, o.output);
+  TsvWriter out(os, "coolgas-snapshot", space_time_provenance(traj, o, dumps), {"t", "particles", "v_rms"});
+  for (const SpaceTimeRow& r : dumps.rows) out.row({r.t, double(r.rods.size()), r.v_rms});
+}
+
 }  // namespace
 
 void run_snapshot(const SnapshotToolOptions& o, std::ostream& os) {
@@ -64,6 +132,7 @@ void run_snapshot(const SnapshotToolOptions& o, std::ostream& os) {
   const PictureFormat format = picture_format(o.output);
   check_output_file(o.output, o.force);
   const Trajectory traj(o.input, kPosition | kAnyDimension);
+  if (traj.dimension() == 1) return draw_space_time(o, traj, format, os);
   const SnapshotToolOptions opt = for_dimension(o, traj);
   Frame frame;
   traj.read(traj.dump_at(opt.times.front(), opt.exact_time), frame);

@@ -25,7 +25,8 @@ Split split(double x, double scale, int n) {
 
 void CloudInCell::assign(FourierGrid& grid, double L, std::span<const double> positions,
                          std::span<const double> weights) {
-  const int n = grid.n(), depth = grid.depth();  // depth 1 in 2D: every z is 0, one plane
+  // depth 1 in 2D: every z is 0, one plane; height 1 too in 1D: every y is 0, one row
+  const int n = grid.n(), depth = grid.depth(), height = grid.height();
   const double scale = n / L;
   const std::size_t count = positions.size() / 3;
   // Counting sort by the lower z plane.
@@ -42,7 +43,7 @@ void CloudInCell::assign(FourierGrid& grid, double L, std::span<const double> po
                                     weights.empty() ? 1.0 : weights[p]};
   double* g = grid.real();
   for (const Point& q : sorted_) {
-    const Split x = split(q.x, scale, n), y = split(q.y, scale, n), z = split(q.z, scale, depth);
+    const Split x = split(q.x, scale, n), y = split(q.y, scale, height), z = split(q.z, scale, depth);
     const double wx[2] = {1 - x.f, x.f}, wy[2] = {1 - y.f, y.f}, wz[2] = {q.w * (1 - z.f), q.w * z.f};
     const int iy[2] = {y.lo, y.hi}, iz[2] = {z.lo, z.hi};
     for (int c = 0; c < 2; ++c)

@@ -20,7 +20,7 @@ std::vector<CorrelationBin> radial_correlation(FourierGrid& grid, double L, cons
   std::vector<double> sum(last + 1, 0.0), rsum(last + 1, 0.0), count(last + 1, 0.0);
   const double* g = grid.real();
   for (int iz = 0; iz < grid.depth(); ++iz)
-    for (int iy = 0; iy < n; ++iy)
+    for (int iy = 0; iy < grid.height(); ++iy)
       for (int ix = 0; ix < n; ++ix) {
         const long x = grid.signed_index(ix), y = grid.signed_index(iy), z = grid.signed_index(iz);
         const double r = std::sqrt(double(x * x + y * y + z * z));

@@ -8,7 +8,8 @@
 // 0 <= kx <= n/2 is complex()[kx + (n/2+1)*(iy + n*iz)], where iy, iz are
 // ky, kz mod n; the other half of k space is its complex conjugate.
 // The transform is unnormalised: forward() gives sum_x f(x) e^{-i k.x}.
-// A 2D grid (disks) is the same with one plane: n^2 points, iz = kz = 0.
+// A 2D grid (disks) is the same with one plane: n^2 points, iz = kz = 0; a
+// 1D grid (rods) with one row of that plane: n points, iy = iz = 0.
 #pragma once
 #include <fftw3.h>
 
@@ -19,17 +20,18 @@ namespace coolgas {
 
 class FourierGrid {
  public:
-  explicit FourierGrid(int n, int dimension = 3);  // n even, >= 4; dimension 3 or 2
+  explicit FourierGrid(int n, int dimension = 3);  // n even, >= 4; dimension 3, 2 or 1
   ~FourierGrid();
   FourierGrid(const FourierGrid&) = delete;
   FourierGrid& operator=(const FourierGrid&) = delete;
 
   int n() const { return n_; }
   int dimension() const { return dimension_; }
-  int depth() const { return dimension_ == 3 ? n_ : 1; }  // planes along z
+  int depth() const { return dimension_ == 3 ? n_ : 1; }   // planes along z
+  int height() const { return dimension_ >= 2 ? n_ : 1; }  // rows along y in a plane
   int padded() const { return 2 * (n_ / 2 + 1); }     // P, real numbers per x row
   int half() const { return n_ / 2 + 1; }             // complex modes per x row
-  std::int64_t modes() const { return std::int64_t(half()) * n_ * depth(); }
+  std::int64_t modes() const { return std::int64_t(half()) * height() * depth(); }
   std::int64_t real_index(int ix, int iy, int iz) const { return ix + std::int64_t(padded()) * (iy + std::int64_t(n_) * iz); }
 
   double* real() { return data_; }

@@ -50,9 +50,9 @@ std::vector<Shell> shell_average(const FourierGrid& grid, double L, const Weight
   const double dk = 2 * M_PI / L;
   for (int iz = 0; iz < grid.depth(); ++iz) {
     const long c = grid.signed_index(iz);
-    for (int iy = 0; iy < n; ++iy) {
+    for (int iy = 0; iy < grid.height(); ++iy) {
       const long b = grid.signed_index(iy);
-      const fftw_complex* row = f + std::int64_t(grid.half()) * (iy + std::int64_t(n) * iz);
+      const fftw_complex* row = f + std::int64_t(grid.half()) * (iy + std::int64_t(grid.height()) * iz);
       for (int a = 0; a < grid.half(); ++a) {
         const long m2 = long(a) * a + b * b + c * c;
         if (m2 == 0 || m2 > long(last) * last + last) continue;
@@ -119,8 +119,9 @@ std::vector<double> direct_structure_factor(double L, std::span<const double> po
     int a, b, c, shell;
   };
   std::vector<Mode> modes;
-  for (int c = 0; c <= (dimension == 3 ? max_shell : 0); ++c)  // 2D: the modes with c = 0
-    for (int b = -max_shell; b <= max_shell; ++b)
+  const int b_max = dimension >= 2 ? max_shell : 0, c_max = dimension == 3 ? max_shell : 0;  // 2D: c = 0; 1D: b = 0
+  for (int c = 0; c <= c_max; ++c)
+    for (int b = -b_max; b <= b_max; ++b)
       for (int a = -max_shell; a <= max_shell; ++a) {
         if (c == 0 && (b < 0 || (b == 0 && a <= 0))) continue;
         const int s = shell_of(long(a) * a + long(b) * b + long(c) * c);

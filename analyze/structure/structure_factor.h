@@ -1,6 +1,7 @@
 // The static structure factor of a weighted set of points in a periodic box,
 //   S(k) = |sum_j m_j e^{-i k.r_j}|^2 / sum_j m_j,   k = (2 pi / L) (a, b, c), integer a, b, c,
-// averaged over spherical shells of |k| (in 2D: k = (2 pi / L) (a, b), circles): shell s holds the modes with
+// averaged over spherical shells of |k| (in 2D: k = (2 pi / L) (a, b), circles; in 1D: k = 2 pi a / L, the
+// shell s is the mode a = s and its mirror -s): shell s holds the modes with
 // s - 1/2 <= |k| L / (2 pi) < s + 1/2, s = 1 .. n/4 (up to half the Nyquist
 // wave number k_N = pi n / L of the grid; k = 0 is left out). Beyond k_N/2
 // the correction below fails: along an axis its shot-noise residual
@@ -48,7 +49,7 @@ std::vector<Shell> shell_average(const FourierGrid& grid, double L, const Weight
 
 // The exact S(k) of the points, averaged over the same modes, for shells
 // 1 .. max_shell: O(points * modes), the check of shell_average. In 2D
-// (dimension 2; every z is 0) the modes have c = 0.
+// (dimension 2; every z is 0) the modes have c = 0, in 1D b = c = 0 too.
 std::vector<double> direct_structure_factor(double L, std::span<const double> positions,
                                             std::span<const double> weights, int max_shell, int dimension = 3);
 

@@ -26,7 +26,8 @@ const char* table_name(StructureTable t) {
 }
 
 Provenance provenance(const Trajectory& traj, const StructureOptions& o, int n, double L) {
-  const std::string points = traj.dimension() == 3 ? "^3 points" : "^2 points";
+  const int d = traj.dimension();
+  const std::string points = d == 3 ? "^3 points" : d == 2 ? "^2 points" : " points on the ring";
   Provenance p = traj.provenance();
   p.emplace_back("table", table_name(o.table));
   p.emplace_back("density", traj.aggregates() ? "aggregates weighted by their mass (ballistic aggregation): S of "

@@ -13,8 +13,8 @@ namespace coolgas {
 // standard error by the delta method (first-order expansion of R in the sample means):
 //   Var(R) = [Var(s⁴)/b⁴ - 4a Cov(s⁴, s²)/b⁵ + 4a² Var(s²)/b⁶] / N.
 // For a Maxwellian in 3D (s² ~ χ²₃ in units of T: moments 3, 15, 105, 945)
-// this is 40/(27 N); in 2D (χ²₂: 2, 8, 48, 384) it is 4/N. The velocity
-// tests check both values.
+// this is 40/(27 N); in 2D (χ²₂: 2, 8, 48, 384) it is 4/N; in 1D (χ²₁:
+// 1, 3, 15, 105) it is 24/N. The velocity tests check all three values.
 SpeedMoments speed_moments(std::span<const double> v, int dimension) {
   const std::size_t n = v.size() / 3;
   if (n < 2) throw InputError("velocity statistics need at least 2 particles, got " + std::to_string(n));
@@ -61,7 +61,7 @@ void ComponentHistogram::fill(std::span<const double> v, double v_rms, int dimen
   const double scale = 1.0 / (v_rms * width_);
   const double nb = double(count_.size());
   for (std::size_t i = 0; i < v.size(); ++i) {
-    if (i % 3 >= d) continue;  // a 2D file's vz = 0 is no sample
+    if (i % 3 >= d) continue;  // a 2D file's vz = 0 is no sample, nor a 1D file's vy and vz
     const double u = v[i] * scale + 0.5 * nb;  // bin coordinate: 0 at y = -ymax
     if (u >= 0 && u < nb) ++count_[static_cast<std::size_t>(u)];
   }

@@ -17,11 +17,12 @@ struct SpeedMoments {
 };
 
 // The Maxwellian's <v^4>/<v^2>^2 in d dimensions: (d+2)/d (5/3 in 3D, 2 in
-// 2D), since v^2/T is chi-squared with d degrees of freedom.
+// 2D, 3 in 1D: a Gaussian's kurtosis), since v^2/T is chi-squared with d
+// degrees of freedom.
 inline double maxwellian_speed_ratio(int dimension) { return double(dimension + 2) / double(dimension); }
 
 // velocities: vx0 vy0 vz0 vx1 ... (3N numbers, N >= 2; in 2D, dimension = 2,
-// every vz is 0).
+// every vz is 0; in 1D, every vy and vz).
 SpeedMoments speed_moments(std::span<const double> velocities, int dimension = 3);
 
 // Histogram of y = v_alpha / v_rms over the d components pooled, on `bins`

@@ -26,7 +26,7 @@ void check_tail_options(double tail_from, double min_count);
 const std::vector<std::string>& velocity_columns(VelocityTable table);
 
 // The statistics of `velocities` (vx0 vy0 vz0 vx1 ..., N >= 2; vz = 0 in
-// 2D) in `dimension` d; `hist` is filled with their d components scaled by v_rms.
+// 2D, vy = vz = 0 in 1D) in `dimension` d; `hist` is filled with their d components scaled by v_rms.
 VelocityStats velocity_stats(std::span<const double> velocities, ComponentHistogram& hist, double tail_from,
                              double min_count, int dimension = 3);
 

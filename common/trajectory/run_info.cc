@@ -18,7 +18,7 @@ namespace {
 // The numbers of a dataset of one (rank 1) or, when `vectors`, several
 // (rank 2) numbers per row; the row length into *per_row.
 std::vector<double> read_doubles(hid_t file, const std::string& path, const std::string& dataset, bool vectors = false,
-                                 std::size_t* per_row = nullptr) {
+                                 std::size_t* per_row = nullptr, bool* is_vector = nullptr) {
   if (!h5::exists(file, dataset)) not_a_trajectory(path, dataset);
   h5::Handle d = h5::open_dataset(file, dataset);
   const auto dims = h5::shape(d.id());
@@ -26,6 +26,7 @@ std::vector<double> read_doubles(hid_t file, const std::string& path, const std:
     throw InputError(path + ": " + dataset + " has rank " + std::to_string(dims.size()) +
                      (vectors ? ", expected a scalar or a vector per row (rank 1 or 2)" : ", expected a scalar per row (rank 1)"));
   if (per_row) *per_row = dims.size() == 2 ? std::size_t(dims[1]) : 1;
+  if (is_vector) *is_vector = dims.size() == 2;
   return h5::read_all<double>(d.id());
 }
 
@@ -54,7 +55,7 @@ ObservableRows read_observable_rows(const std::string& path, std::string_view na
   if (!h5::exists(f.id(), element)) not_a_trajectory(path, element);
   ObservableRows s;
   s.time = read_doubles(f.id(), path, layout::time_of(element));
-  s.value = read_doubles(f.id(), path, layout::value_of(element), true, &s.per_row);
+  s.value = read_doubles(f.id(), path, layout::value_of(element), true, &s.per_row, &s.vectors);
   const std::size_t k = s.per_row;
   const std::size_t rows = complete_rows(f.id(), s.time);
   if (k == 0 || s.value.size() / k < rows)

@@ -32,6 +32,7 @@ struct ObservableRows {
   std::vector<double> time;
   std::vector<double> value;
   std::size_t per_row = 1;
+  bool vectors = false;  // rank 2: a vector per row, even of one number (a 1D run's total_momentum)
 };
 
 RunInfo read_run_info(const std::string& path);

@@ -3,6 +3,7 @@
 // velocities are the source's bit for bit; ASE reads the XYZ and MDAnalysis
 // the LAMMPS dump as h5py reads the trajectory (tests/cli/read_exports.py);
 // an H5MD file written by MDAnalysis starts a run; bad input is one line.
+// A 1D file (rods) is exported as XYZ only.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -10,6 +11,8 @@
 #include <fstream>
 
 #include "common/hdf5_file.h"
+#include "common/random.h"
+#include "common/trajectory/h5md_writer.h"
 #include "tests/support/run_command.h"
 #include "tests/support/simulate_cli.h"
 
@@ -118,6 +121,35 @@ TEST(ConvertCli, AseReadsTheXyzAndMDAnalysisTheLammpsDumpAsH5pyReadsTheRun) {
     const auto m = run_command(py("lammps " + run + " " + dir + "/last.dump"));
     EXPECT_EQ(m.exit_code, 0) << m.out << m.err;
   }
+}
+
+// Rods on a ring (a 1D file from the writer: the simulator writes none yet):
+// ASE reads each XYZ frame as a cell (L, 1, 1) periodic along x only, y = z
+// = 0, positions and velocities exact; LAMMPS has no 1D mode, so a LAMMPS
+// dump is refused with one line naming the XYZ alternative.
+TEST(ConvertCli, ARodFileIsExportedAsXyzOnly) {
+  const std::string dir = test::scratch_dir("convert_rods");
+  const std::string run = dir + "/rods.h5";
+  {
+    RunParameters p;
+    p.N = 300;
+    p.L = 750.5;
+    H5mdWriter w = H5mdWriter::create(run, p, true, {}, 1);
+    Random rng(81);
+    std::vector<double> pos(3 * 300), vel(3 * 300);
+    const std::vector<std::int32_t> img(3 * 300, 0);
+    for (int f = 0; f < 3; ++f) {
+      for (double& x : pos) x = p.L * rng.uniform();
+      for (double& v : vel) v = rng.normal();
+      w.add_frame({10.0 * f, 100 * f, 0, pos.data(), img.data(), vel.data()});
+    }
+  }
+  ASSERT_EQ(run_command(bin("coolgas-convert") + " " + run + " > " + dir + "/all.xyz").exit_code, 0);
+  const auto a = run_command(py("xyz " + run + " " + dir + "/all.xyz"));
+  EXPECT_EQ(a.exit_code, 0) << a.out << a.err;
+  test::expect_one_error_line(run_command(bin("coolgas-convert") + " --format lammps " + run),
+                              "a 1D trajectory (rods) has no LAMMPS dump: LAMMPS runs in 2 or 3 dimensions; use "
+                              "--format xyz");
 }
 
 TEST(ConvertCli, AnH5mdFileWrittenByMDAnalysisStartsARun) {

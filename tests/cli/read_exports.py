@@ -4,7 +4,8 @@
 usage: read_exports.py xyz RUN.h5 FRAMES.xyz     ASE reads every frame: cell, pbc, time, positions
                                                  and velocities (exactly: the XYZ numbers round-trip),
                                                  radii = diameter/2 of the aggregates present; a 2D
-                                                 run's frames: cell (L, L, 1), pbc (T, T, F), z = 0
+                                                 run's frames: cell (L, L, 1), pbc (T, T, F), z = 0;
+                                                 a 1D run's: cell (L, 1, 1), pbc (T, F, F), y = z = 0
        read_exports.py lammps RUN.h5 DUMP DUMP   MDAnalysis (LAMMPSDUMP, convert_units=False) reads
                                                  the dump of the last frame: box, ids, positions and
                                                  velocities (float32 in MDAnalysis)
@@ -44,7 +45,7 @@ def fail(msg):
 
 
 def in_3d(v):
-    """Rows of d numbers (a 2D run: d = 2) as 3-vectors, z = 0: what 3D readers hold."""
+    """Rows of d numbers (a 2D run: d = 2; 1D: d = 1) as 3-vectors, the rest 0: what 3D readers hold."""
     return np.hstack([v, np.zeros((len(v), 3 - v.shape[1]))])
 
 

@@ -15,7 +15,7 @@ def cli_table(tmp_path, *args):
 
 
 @pytest.mark.parametrize("table, flag", [("distribution", None), ("scaled", "--scaled"), ("series", "--series")])
-@pytest.mark.parametrize("run", ["gas", "aggregates", "disks"])
+@pytest.mark.parametrize("run", ["gas", "aggregates", "disks", "rods"])
 def test_equals_the_tool(run, table, flag, request, tmp_path):
     path = request.getfixturevalue(run)
     frames = coolgas.open(path).frames

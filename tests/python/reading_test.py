@@ -52,7 +52,23 @@ def test_a_2d_run_reads_as_2d(disks, gas):
     assert sizes["mass"].sum() == 3000 and (np.bincount(labels) == sizes["mass"].to_numpy()).all()
 
 
-@pytest.mark.parametrize("run", ["gas", "disks"])
+def test_a_1d_file_reads_as_1d(rods):
+    run = coolgas.open(rods)
+    assert run.dimension == 1 and run.L == 3000
+    fr = run.frames[-1]
+    n = run.parameters["N"]
+    assert fr.dimension == 1 and fr.positions.shape == (n, 1) and fr.velocities.shape == (n, 1)
+    assert fr.images.shape == (n, 1) and list(fr.box) == [3000]
+    obs = run.observables
+    assert "total_momentum_x" in obs and "total_momentum_y" not in obs
+    labels, sizes = coolgas.label_clusters(fr)  # unit segments of the ring
+    assert sizes["mass"].sum() == n and (np.bincount(labels) == sizes["mass"].to_numpy()).all()
+    assert len(sizes) > 100  # rods at density n/L ~ 0.5 make many clusters
+    with pytest.raises(coolgas.InputError, match=r"\(N, 1\) for rods, got 2 dimensions \(N, 4\)"):
+        coolgas.label_clusters(np.zeros((5, 4)), L=10)
+
+
+@pytest.mark.parametrize("run", ["gas", "disks", "rods"])
 def test_frames_are_the_files_dumps(run, request):
     path = request.getfixturevalue(run)
     frames = coolgas.open(path).frames

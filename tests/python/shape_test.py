@@ -12,7 +12,7 @@ FLAGS = {"mass_radius": [], "series": ["--series"], "clusters": ["--clusters", "
 
 
 @pytest.mark.parametrize("table", ["mass_radius", "series", "clusters"])
-@pytest.mark.parametrize("run", ["gas", "aggregates", "disks"])
+@pytest.mark.parametrize("run", ["gas", "aggregates", "disks", "rods"])
 def test_equals_the_tool(run, table, request, tmp_path):
     assert_the_tool_per_dump(request.getfixturevalue(run), "shape",
                              ["--fit-mass", "2:", "--bins-per-decade", 6, *FLAGS[table]],

@@ -19,7 +19,7 @@ def cli_table(tmp_path, *args):
 
 
 @pytest.mark.parametrize("table", ["spectrum", "series", "correlation"])
-@pytest.mark.parametrize("run", ["gas", "aggregates", "disks"])
+@pytest.mark.parametrize("run", ["gas", "aggregates", "disks", "rods"])
 def test_equals_the_tool(run, table, request, tmp_path):
     assert_the_tool_per_dump(request.getfixturevalue(run), "structure",
                              ["--direct-shells", 2, "--peak-fraction", 0.15, *FLAGS[table]],

@@ -10,7 +10,7 @@ from conftest import tool
 
 
 @pytest.mark.parametrize("table", ["Phi", "tail", "series"])
-@pytest.mark.parametrize("run", ["gas", "aggregates", "disks"])
+@pytest.mark.parametrize("run", ["gas", "aggregates", "disks", "rods"])
 def test_equals_the_tool(run, table, request, tmp_path):
     path = request.getfixturevalue(run)
     frames = coolgas.open(path).frames

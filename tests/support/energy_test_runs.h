@@ -24,10 +24,11 @@ inline RunParameters paper_parameters(double L, std::int64_t seed) {
   return p;
 }
 
-// Writes E(t) = energy(t) at the given times (increasing) into a new file.
+// Writes E(t) = energy(t) at the given times (increasing) into a new file
+// of a run in `dimension` d.
 inline void write_energy_run(const std::string& path, const RunParameters& p, const std::vector<double>& times,
-                             const std::function<double(double)>& energy) {
-  H5mdWriter w = H5mdWriter::create(path, p, true);
+                             const std::function<double(double)>& energy, int dimension = 3) {
+  H5mdWriter w = H5mdWriter::create(path, p, true, {}, dimension);
   for (double t : times) w.add_observables({t, 0, 0, energy(t), {0, 0, 0}});
   w.flush();
 }

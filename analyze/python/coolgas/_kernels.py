@@ -27,7 +27,9 @@ def label_clusters(positions, L=None):
     per cluster in that order: cluster, mass (particles), first_cell (the
     smallest flat cell index i + n(j + n k), n = floor(L)). Accepts a Frame.
     An (N, 2) array is disks: floor(L)^2 unit squares sharing an edge; so
-    in every kernel here, an (N, 2) positions or velocities array is 2D."""
+    in every kernel here, an (N, 2) positions or velocities array is 2D. An
+    (N, 1) array is rods on a ring: floor(L) unit segments, neighbours left
+    and right; so in every kernel, an (N, 1) array is 1D."""
     positions, L, _, _ = _frame_args(positions, L, None)
     labels, mass, first_cell, _ = _core.label_clusters(positions, float(L))
     sizes = pd.DataFrame({"cluster": np.arange(len(mass)), "mass": mass, "first_cell": first_cell})

@@ -30,7 +30,8 @@ class Frame:
     aggregates present (ids, masses, diameters), for the gas every particle
     (ids 0..N-1, masses and diameters None: unit spheres). A 2D file (disks,
     dimension 2) has two columns per vector: (n, 2) arrays, which the
-    analysis kernels (coolgas.clusters, velocity, structure, shape) read as 2D."""
+    analysis kernels (coolgas.clusters, velocity, structure, shape) read as
+    2D; a 1D file (rods on a ring, dimension 1) one: (n, 1) arrays, read as 1D."""
     index: int
     t: float
     L: float
@@ -46,12 +47,12 @@ class Frame:
 
     @property
     def dimension(self):
-        """d: 3, or 2 for disks (the columns of positions)."""
+        """d: 3, 2 for disks or 1 for rods (the columns of positions)."""
         return self.positions.shape[1]
 
     @property
     def box(self):
-        """The box edges (L, L, L), or (L, L) in 2D."""
+        """The box edges (L, L, L), (L, L) in 2D, (L,) in 1D."""
         return np.full(self.dimension, self.L)
 
 
@@ -150,7 +151,7 @@ class Run:
 
     @property
     def dimension(self):
-        """The box's dimension d: 3, or 2 for disks (system.dimension = 2)."""
+        """The box's dimension d: 3, 2 for disks (system.dimension = 2), 1 for rods."""
         if self.is_coolgas:
             return _core.Trajectory(self.path).dimension
         return self.frames[0].dimension
@@ -159,7 +160,7 @@ class Run:
     def observables(self):
         """Every /observables element up to the last complete dump, as a
         DataFrame indexed by t; a vector element (total_momentum) is d
-        columns name_x, name_y(, name_z). Elements recorded at other times
+        columns name_x(, name_y, name_z). Elements recorded at other times
         meet on the union of the times (NaN where one has no row)."""
         columns = []
         for name in _core.observable_names(self.path):
@@ -168,7 +169,7 @@ class Run:
                 columns.append(pd.Series(v, index=pd.Index(t, name="t"), name=name))
             else:
                 for c in range(v.shape[1]):
-                    suffix = "xyz"[c] if v.shape[1] in (2, 3) else str(c)
+                    suffix = "xyz"[c] if v.shape[1] in (1, 2, 3) else str(c)
                     columns.append(pd.Series(v[:, c], index=pd.Index(t, name="t"), name=f"{name}_{suffix}"))
         if not columns:
             return pd.DataFrame(index=pd.Index([], name="t"))

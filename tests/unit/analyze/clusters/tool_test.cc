@@ -126,6 +126,35 @@ TEST(MassHistogram, BinsConserveClustersAndMass) {
   EXPECT_EQ(h.moments().clusters, 0);
 }
 
+// A 1D file (rods on a ring of L = 10.5: 10 segments of 1.05): the rods
+// 0.2, 0.7, 1.5 and 10.4 make one cluster of 4 across the ends, 5.5 and 6.0
+// one of 2, 3.5 one of 1; densities are per unit length, M1 = N/L.
+TEST(ClusterTool, A1DFileHasSegmentsAndDensitiesPerLength) {
+  const std::string path = test::scratch_dir("clusters_rods") + "/run.h5";
+  {
+    RunParameters p;
+    p.N = 7;
+    p.L = 10.5;
+    H5mdWriter w = H5mdWriter::create(path, p, false, {}, 1);
+    const double x[21] = {0.2, 0, 0, 0.7, 0, 0, 1.5, 0, 0, 10.4, 0, 0, 5.5, 0, 0, 6.0, 0, 0, 3.5, 0, 0};
+    const std::int32_t img[21] = {};
+    const double vel[21] = {};
+    w.add_frame({0.0, 0, 0, x, img, vel});
+  }
+  ClustersOptions opt;
+  opt.input = path;
+  opt.series = true;
+  const Table t = run(opt);
+  EXPECT_EQ(t.get("dimension"), "1");
+  EXPECT_EQ(t.get("cells"), "floor(L) segments of length L/floor(L); left and right neighbours; periodic");
+  ASSERT_EQ(t.rows.size(), 1u);
+  const auto& r = t.rows[0];
+  EXPECT_DOUBLE_EQ(r[t.column("M0")], 3 / 10.5);
+  EXPECT_DOUBLE_EQ(r[t.column("M1")], 7 / 10.5);
+  EXPECT_DOUBLE_EQ(r[t.column("M2")], (16 + 4 + 1) / 10.5);
+  EXPECT_EQ(r[t.column("M_max")], 4);
+}
+
 TEST(ClusterTool, RejectsFilesThatAreNotTrajectories) {
   const std::string dir = test::scratch_dir("clusters_bad");
   ClustersOptions opt;

@@ -5,12 +5,14 @@
 // (Pathak, Jabeen, Das, Rajesh 2014, Fig. 1).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "analyze/collapse/curves.h"
 #include "analyze/collapse/optimize.h"
 #include "analyze/collapse/quality.h"
 #include "analyze/collapse/tail.h"
+#include "analyze/collapse/table.h"
 #include "common/error.h"
 #include "tests/support/fit_test_data.h"
 
@@ -91,6 +93,24 @@ TEST(CollapseCurves, TableWithoutLIsRefused) {
   Table t = synthetic_table(16, 0);
   t.provenance = {{"tool", "coolgas-fit"}};
   EXPECT_THROW(make_scaling_curve(t, {}, {}), InputError);
+}
+
+// A 1D table (its '# dimension: 1' line) beside 3D ones is refused with one
+// line naming both tables and their dimensions; 1D tables alone collapse,
+// and the result says its dimension.
+TEST(CollapseTables, OneDimensionalTablesAreNotMixedWithOthers) {
+  std::vector<Table> tables{synthetic_table(16, 0), synthetic_table(32, 0)};
+  tables[1].provenance.emplace_back("dimension", "1");
+  try {
+    collapse_tables(tables, CollapseOptions{});
+    FAIL() << "a 1D and a 3D table were collapsed together";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("16.tsv is 3D, 32.tsv is 1D"), std::string::npos) << e.what();
+  }
+  tables[0].provenance.emplace_back("dimension", "1");
+  const CollapseResult r = collapse_tables(tables, CollapseOptions{});
+  EXPECT_NE(std::find(r.provenance.begin(), r.provenance.end(), std::pair<std::string, std::string>{"dimension", "1"}),
+            r.provenance.end());
 }
 
 }  // namespace

@@ -50,6 +50,20 @@ TEST(ScalingWindow, InTwoDimensionsEndsAtTheTwoDimensionalCrossover) {
   EXPECT_THROW(scaling_window(t, FitColumns{}), InputError);  // no dimension coolgas writes
 }
 
+// A 1D run's table ('# dimension: 1'): the same formula, z = (1+2)/2 = 3/2,
+// so the end is 0.1 L^(3/2) = 12.65 for L = 40 (x = t/L^z of Ben-Naim et
+// al.'s 1D cooling gas), and the rule names it.
+TEST(ScalingWindow, InOneDimensionEndsAtTheOneDimensionalCrossover) {
+  const auto E = [](double t) { return t < 1 ? 1.0 : std::pow(t, -1.0); };
+  Table t = energy_table(E, 40.0);
+  t.provenance.emplace_back("dimension", "1");
+  const ChosenWindow c = scaling_window(t, FitColumns{});
+  EXPECT_DOUBLE_EQ(*c.window.lo, 1);
+  EXPECT_NEAR(*c.window.hi, 0.1 * std::pow(40.0, 1.5), 1e-12);
+  EXPECT_EQ(crossover_z(1), 1.5);
+  EXPECT_NE(c.rule.find("0.1 L^(3/2),"), std::string::npos) << c.rule;
+}
+
 // Flat, Haff's t^-2 from 10 to 100, then t^-1.2: the secant from 10^(39/20) = 89.1
 // is (2 ln(100/89.1) + 1.2 ln(158.5/100))/ln(1.778) = 1.36 <= 3/2, from 10^(38/20)
 // it is 1.52: the start is 10^(39/20), past Haff's law.

@@ -122,6 +122,27 @@ TEST(EnergyEnsemble, ViscoelasticRunsWithDifferentBAreRefusedNamingB) {
   EXPECT_EQ(table.str().find("# r0:"), std::string::npos) << table.str();
 }
 
+// A 1D run (rods on a ring) averages like any other; its table says
+// '# dimension: 1', and a 1D run beside a 2D one of the same parameters is
+// refused naming the dimensions.
+TEST(EnergyEnsemble, OneDimensionalRunsSayTheirDimensionAndAreNotMixed) {
+  const std::string dir = test::scratch_dir("energy_1d");
+  const auto E = [](double t) { return 0.005 / (1 + t); };  // (d/2) T0 at t = 0 for d = 1, T0 = 0.01
+  test::write_energy_run(dir + "/rods.h5", test::paper_parameters(32, 1), {0, 1, 10}, E, 1);
+  test::write_energy_run(dir + "/disks.h5", test::paper_parameters(32, 2), {0, 1, 10}, E, 2);
+  std::ostringstream table;
+  write_energy_table({{dir + "/rods.h5"}, 20}, table);
+  EXPECT_NE(table.str().find("# dimension: 1\n"), std::string::npos) << table.str();
+  const std::vector<EnergyRun> runs{load_energy_run(dir + "/rods.h5"), load_energy_run(dir + "/disks.h5")};
+  EXPECT_EQ(runs[0].info.dimension, 1);
+  try {
+    require_same_physics(runs);
+    FAIL() << "a 1D and a 2D run were averaged";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("dimension = 1 vs 2"), std::string::npos) << e.what();
+  }
+}
+
 TEST(EnergyEnsemble, NonPositiveEnergyIsRefused) {
   const std::string path = test::scratch_dir("energy_zero") + "/run.h5";
   test::write_energy_run(path, test::paper_parameters(32, 1), {0, 1, 2}, [](double t) { return t < 2 ? 1.0 : 0.0; });

@@ -1,6 +1,7 @@
 // The velocity tool end to end on a file from the real writer: one dump at
 // t = 5 with the given velocities (3 numbers per particle; a 2D file, of
-// `dimension` 2, keeps vx and vy), and coolgas-velocity's series table of it.
+// `dimension` 2, keeps vx and vy, a 1D file vx), and coolgas-velocity's
+// series table of it.
 #pragma once
 #include <sstream>
 #include <string>

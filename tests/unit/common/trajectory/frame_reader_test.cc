@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "common/error.h"
 #include "common/trajectory/h5md_writer.h"
 #include "common/hdf5_file.h"
@@ -98,6 +100,45 @@ TEST(Trajectory, IgnoresAFrameWhoseBurstWasInterrupted) {
     h5::append_row(v.id(), h5::Type::kFloat64, pos);
   }
   EXPECT_EQ(Trajectory(path, kPosition).dump_times(), (std::vector<double>{0, 10}));
+}
+
+// A 1D file (rods on a ring: one number per vector, box edges (F, 1, 1)):
+// a reader that opts in with kAnyDimension gets x with y = z = 0 and the
+// ring's length as L, its provenance says '# dimension: 1'; any other
+// reader is refused with a line naming the dimension.
+TEST(Trajectory, ReadsA1DFileWidenedWithZerosWhenAsked) {
+  const std::string path = test::scratch_dir("frame_reader_1d") + "/rods.h5";
+  {
+    RunParameters p;
+    p.N = kN;
+    p.L = 12;
+    H5mdWriter w = H5mdWriter::create(path, p, false, {}, 1);
+    double pos[3 * kN], vel[3 * kN];
+    std::int32_t img[3 * kN];
+    for (int i = 0; i < 3 * kN; ++i) pos[i] = 0.25 * i, vel[i] = -i, img[i] = i;
+    w.add_frame({3.0, 7, 0, pos, img, vel});
+  }
+  const Trajectory traj(path, kPosition | kVelocity | kImage | kAnyDimension);
+  EXPECT_EQ(traj.dimension(), 1);
+  Frame f;
+  traj.read(0, f);
+  EXPECT_EQ(f.L, 12);
+  ASSERT_EQ(f.position.size(), 3u * kN);
+  for (int i = 0; i < kN; ++i) {  // the writer keeps component 0 of each 3-vector
+    EXPECT_EQ(f.position[3 * i], 0.25 * (3 * i));
+    EXPECT_EQ(f.velocity[3 * i], -(3 * i));
+    EXPECT_EQ(f.image[3 * i], 3 * i);
+    for (int k = 1; k < 3; ++k) EXPECT_EQ(f.position[3 * i + k], 0) << i << " " << k;
+    for (int k = 1; k < 3; ++k) EXPECT_EQ(f.velocity[3 * i + k], 0) << i << " " << k;
+  }
+  const Provenance p = traj.provenance();
+  EXPECT_NE(std::find(p.begin(), p.end(), std::pair<std::string, std::string>{"dimension", "1"}), p.end());
+  try {
+    Trajectory refused(path, kPosition);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("a 1D trajectory (box/dimension = 1)"), std::string::npos) << e.what();
+  }
 }
 
 TEST(Trajectory, NamesTheFileAndTheMissingDataset) {
