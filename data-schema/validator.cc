@@ -47,7 +47,8 @@ class Checker {
     read_model();
     read_completion();
     for (const GroupSpec& g : profile_.groups) check_group(g);
-    d_ = layout::dimension_of(file_) == 2 ? 2 : 3;  // the attribute check reports any other value
+    d_ = layout::dimension_of(file_);
+    if (d_ < 1 || d_ > 3) d_ = 3;  // the attribute check reports any other value
     for (const AttributeSpec& a : profile_.attributes) check_attribute(a);
     read_box_parameters();
     for (const ElementSpec& e : profile_.elements) guarded(e.path, [&] { check_element(e); });
@@ -278,7 +279,7 @@ class Checker {
     Frame frame;
     for (std::size_t dump = 0; dump < trajectory.dump_times().size(); ++dump) {
       trajectory.read(dump, frame);
-      const Finding f = check_no_overlaps(frame.position, frame.diameter, frame.id, frame.L);
+      const Finding f = check_no_overlaps(frame.position, frame.diameter, frame.id, frame.L, d_);
       if (f) problem(path_of(layout::kPosition, "value"), "dump " + std::to_string(dump) + " (t = " +
                                                                number_text(frame.time) + "): " + *f);
     }

@@ -126,13 +126,14 @@ Finding check_box_matrix(hid_t dataset, double L, std::string_view L_source, con
   const auto dims = h5::shape(dataset);
   Offences bad;
   for_each_block(dataset, scan, [&](hsize_t first, std::span<const double> v) {
-    const hsize_t d = dims.back();  // 3, or 2 for a 2D box
+    const hsize_t d = dims.back();  // 3, or 2 for a 2D box, 1 for a ring
     for (std::size_t i = 0; i < v.size(); ++i) {
       const hsize_t k = (first + i) % (d * d);
       const double want = k % (d + 1) == 0 ? L : 0.0;  // the diagonal of a row-major 3x3 is 0, 4, 8 (2x2: 0, 3)
       if (v[i] != want)
         bad.add([&] {
-          return at(dims, first + i, v[i]) + " but the box is " + (d == 2 ? "diag(L, L)" : "diag(L, L, L)") +
+          return at(dims, first + i, v[i]) + " but the box is " +
+                 (d == 1 ? "(L)" : (d == 2 ? "diag(L, L)" : "diag(L, L, L)")) +
                  " with L = " + number_text(L) + " from " + std::string(L_source);
         });
     }
@@ -203,21 +204,32 @@ void test_pair(const Spheres& s, std::size_t i, std::size_t j, Offences& found) 
   });
 }
 
+// Cells along an axis: n on the box's axes, 1 on those a lower dimension
+// leaves at 0 (the plane of disks, the line of rods).
+int cells_along(int axis, int n, int dimension) { return axis < dimension ? n : 1; }
+
 // The small spheres (no wider than `width`, at least 3 cells of it per
-// side) sorted into cells, each pair in neighbouring cells tested once.
-void small_pairs(const Spheres& s, const std::vector<std::size_t>& small, double width, Offences& found) {
-  const int n = int(std::min(std::floor(s.L / width), std::ceil(std::cbrt(double(small.size()))) + 1));
+// side) sorted into cells, each pair in neighbouring cells tested once. In
+// 1D the cells are as many as the rods (not the cube root of them), so the
+// work stays O(n).
+void small_pairs(const Spheres& s, const std::vector<std::size_t>& small, double width, Offences& found,
+                 int dimension) {
+  const double per_side = dimension == 1 ? double(small.size()) : std::ceil(std::cbrt(double(small.size())));
+  const int n = int(std::min({std::floor(s.L / width), per_side + 1, 1e9}));
   if (n < 3) {  // too few cells for distinct neighbours: every pair
     for (std::size_t a = 0; a < small.size(); ++a)
       for (std::size_t b = a + 1; b < small.size(); ++b) test_pair(s, small[a], small[b], found);
     return;
   }
   const double w = s.L / n;
+  const int ny = cells_along(1, n, dimension), nz = cells_along(2, n, dimension);
   auto coord = [&](std::size_t i, int k) {
-    return std::clamp(int(std::floor(s.r[3 * i + std::size_t(k)] / w)), 0, n - 1);
+    return std::clamp(int(std::floor(s.r[3 * i + std::size_t(k)] / w)), 0, cells_along(k, n, dimension) - 1);
   };
-  auto cell_of = [&](int x, int y, int z) { return (std::size_t(z) * std::size_t(n) + std::size_t(y)) * std::size_t(n) + std::size_t(x); };
-  std::vector<std::size_t> start(std::size_t(n) * std::size_t(n) * std::size_t(n) + 1, 0), order(small.size());
+  auto cell_of = [&](int x, int y, int z) {
+    return (std::size_t(z) * std::size_t(ny) + std::size_t(y)) * std::size_t(n) + std::size_t(x);
+  };
+  std::vector<std::size_t> start(std::size_t(n) * std::size_t(ny) * std::size_t(nz) + 1, 0), order(small.size());
   for (std::size_t i : small) ++start[cell_of(coord(i, 0), coord(i, 1), coord(i, 2)) + 1];
   for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
   std::vector<std::size_t> fill(start.begin(), start.end() - 1);
@@ -226,7 +238,9 @@ void small_pairs(const Spheres& s, const std::vector<std::size_t>& small, double
     const std::size_t i = order[a];
     const int cx = coord(i, 0), cy = coord(i, 1), cz = coord(i, 2);
     for (int o = 0; o < 27; ++o) {
-      const std::size_t c = cell_of((cx + o % 3 - 1 + n) % n, (cy + o / 3 % 3 - 1 + n) % n, (cz + o / 9 - 1 + n) % n);
+      const int oy = o / 3 % 3 - 1, oz = o / 9 - 1;
+      if ((ny == 1 && oy != 0) || (nz == 1 && oz != 0)) continue;  // one cell across: visited once
+      const std::size_t c = cell_of((cx + o % 3 - 1 + n) % n, (cy + oy + ny) % ny, (cz + oz + nz) % nz);
       for (std::size_t b = start[c]; b < start[c + 1]; ++b)
         if (order[b] > i) test_pair(s, i, order[b], found);
     }
@@ -236,7 +250,7 @@ void small_pairs(const Spheres& s, const std::vector<std::size_t>& small, double
 }  // namespace
 
 Finding check_no_overlaps(std::span<const double> position, std::span<const double> diameter,
-                          std::span<const std::int32_t> id, double L) {
+                          std::span<const std::int32_t> id, double L, int dimension) {
   const Spheres s{position, diameter, id, L};
   std::vector<std::size_t> small, large;
   double width = 0;
@@ -249,7 +263,7 @@ Finding check_no_overlaps(std::span<const double> position, std::span<const doub
     }
   }
   Offences found;
-  if (!small.empty()) small_pairs(s, small, std::max(width, L * 1e-6), found);
+  if (!small.empty()) small_pairs(s, small, std::max(width, L * 1e-6), found, dimension);
   // Spheres wider than L/4 fill a sixtieth of the box each: there are few.
   for (std::size_t a = 0; a < large.size(); ++a)
     for (std::size_t j = 0; j < s.size(); ++j)

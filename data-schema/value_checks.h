@@ -47,9 +47,10 @@ Finding check_equal(hid_t dataset, hid_t reference, std::string_view reference_p
 // `diameter` one per sphere (empty: unit spheres); `id` names them in the
 // message (empty: their index). Found with a cell list as wide as the
 // widest sphere no wider than L/4 (each checked against its 27 cells), the
-// few wider ones against every sphere: O(n) for a gas.
+// few wider ones against every sphere: O(n) for a gas. `dimension` 2 or 1:
+// disks (z = 0) or rods (y = z = 0), the cells then one layer or one row.
 inline constexpr double kOverlapTolerance = 1e-9;
 Finding check_no_overlaps(std::span<const double> position, std::span<const double> diameter,
-                          std::span<const std::int32_t> id, double L);
+                          std::span<const std::int32_t> id, double L, int dimension = 3);
 
 }  // namespace coolgas::schema

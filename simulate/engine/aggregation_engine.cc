@@ -39,7 +39,7 @@ AggregateState AggregateState::unit_spheres(std::size_t n) {
 AggregationEngine::AggregationEngine(Particles particles, AggregateState a, double now, const EngineCounters& counters,
                                      int dimension)
     : L_(particles.L), dim_(dimension), now_(now), c_(counters) {
-  if (dim_ != 2 && dim_ != 3) throw std::invalid_argument("aggregation runs in dimension 2 or 3");
+  if (dim_ < 1 || dim_ > 3) throw std::invalid_argument("aggregation runs in dimension 1, 2 or 3");
   const std::size_t n = particles.size();
   m_.resize(n);
   for (std::size_t i = 0; i < n; ++i) m_[i] = {particles.r[i], particles.v[i], particles.t[i], 0, -1};
@@ -68,12 +68,12 @@ AggregationEngine::AggregationEngine(const StateReader& in) {
   alive_ = std::size_t(s.alive);
   too_large_ = s.too_large != 0;
   c_ = s.counters;
-  dim_ = s.planar == 1 ? 2 : 3;
+  dim_ = 3 - s.planar;
   check_scalars(in, "aggregation/", L_, now_, c_);
   if ((s.too_large != 0 && s.too_large != 1) || (s.has_grid != 0 && s.has_grid != 1) ||
-      (s.planar != 0 && s.planar != 1) || (s.block != 1 && s.block != kBlock))
+      (s.planar < 0 || s.planar > 2) || (s.block != 1 && s.block != kBlock))
     in.fail("aggregation/scalars: flags " + std::to_string(s.too_large) + ", " + std::to_string(s.has_grid) + ", " +
-            std::to_string(s.planar) + " and block " + std::to_string(s.block) + "; must be 0 or 1, and 1 or " +
+            std::to_string(s.planar) + " and block " + std::to_string(s.block) + "; must be 0 or 1 (planar: 0 to 2), and 1 or " +
             std::to_string(kBlock));
   m_ = in.get<Motion>("aggregation/motion");
   image_ = in.get<Image>("aggregation/image");
@@ -151,7 +151,7 @@ void AggregationEngine::check_listed(const StateReader& in, const std::vector<st
 
 void AggregationEngine::save(StateWriter& out) const {
   out.put_value("aggregation/scalars", AggregationScalars{L_, now_, dmax_, grid_request_, std::int64_t(alive_),
-                                                          too_large_, grid_ != nullptr, large_.block(), dim_ == 2, c_});
+                                                          too_large_, grid_ != nullptr, large_.block(), 3 - dim_, c_});
   out.put("aggregation/motion", m_);
   out.put("aggregation/image", image_);
   out.put("aggregation/mass", mass_);
@@ -233,8 +233,10 @@ bool AggregationEngine::rebuild_grid(int* follow) {
   }
   too_large_ = 2.0 * dmax_ >= L_;
   if (too_large_) return false;
-  const double per_aggregate = (dim_ == 3 ? L_ * L_ * L_ : L_ * L_) / double(std::max<std::size_t>(alive_, 1));
-  const double spacing = dim_ == 3 ? std::cbrt(per_aggregate) : std::sqrt(per_aggregate);
+  const double per_aggregate =
+      (dim_ == 3 ? L_ * L_ * L_ : (dim_ == 2 ? L_ * L_ : L_)) / double(std::max<std::size_t>(alive_, 1));
+  const double spacing =
+      dim_ == 3 ? std::cbrt(per_aggregate) : (dim_ == 2 ? std::sqrt(per_aggregate) : per_aggregate);
   const double widest = L_ / 3.0 / (1.0 + 1e-6);  // three cells per side, with CellGrid's own margin
   const double wanted = std::min(spacing * kSpacingFactor, widest);
   const int fine = int(std::floor(L_ / (wanted * (1.0 + 1e-6))));
@@ -309,7 +311,9 @@ void AggregationEngine::predict_all() {
 template <class F>
 void AggregationEngine::for_each_cell_in_reach(int i, int reach, F&& f) const {
   const CellCoord c = grid_->coord(fine_cell(i));
-  if (dim_ == 2) return for_each_cell_in_reach_2d(c, reach, f);
+  // Expected 3D: the hint keeps the 3D walk's code as short as before rods
+  // (a plain dim_ != 3 test reordered its blocks and grew it).
+  if (__builtin_expect(dim_ != 3, 0)) return for_each_cell_in_reach_2d(c, reach, f);
   if (reach == 1) {
     for_each_neighbour_cell(grid_->cells_per_side(), L_, c, [&](const NeighbourCell& nb) { f(nb.cell, nb.shift); });
   } else {
@@ -317,11 +321,13 @@ void AggregationEngine::for_each_cell_in_reach(int i, int reach, F&& f) const {
   }
 }
 
-// The same on the one layer of a 2D grid; out of line, so that the 3D walk
-// above compiles as it did before disks (W3: tests/bench/README.md).
+// The same on the one layer of a 2D grid (or the one row of a 1D one); out of
+// line, so that the 3D walk above compiles as it did before disks (W3:
+// tests/bench/README.md).
 template <class F>
 void AggregationEngine::for_each_cell_in_reach_2d(const CellCoord& c, int reach, F& f) const {
   static constexpr int kLo[3] = {-1, -1, 0}, kHi[3] = {1, 1, 0};
+  if (dim_ == 1) return for_each_cell_in_reach_1d(c, reach, f);
   if (reach == 1) {
     for_each_neighbour_cell(grid_->cells_per_side(), L_, c, kLo, kHi,
                             [&](const NeighbourCell& nb) { f(nb.cell, nb.shift); });
@@ -330,8 +336,19 @@ void AggregationEngine::for_each_cell_in_reach_2d(const CellCoord& c, int reach,
   }
 }
 
+// The cells within reach along the one row of a 1D ring.
+template <class F>
+void AggregationEngine::for_each_cell_in_reach_1d(const CellCoord& c, int reach, F& f) const {
+  for (int o = -reach; o <= reach; ++o) {
+    const AxisStep x = axis_step(c.x, o, grid_->cells_per_side(), L_);
+    f(CellCoord{x.cell, 0, 0}, Vec3{x.shift, 0.0, 0.0});
+  }
+}
+
 // Calls f(j, shift) for every large aggregate j (not i) at every periodic
-// image its pair's reach allows.
+// image its pair's reach allows. On a 1D ring the y offsets are those of one
+// row: a reach of a whole grid side adds the images at y = ±L, which no
+// contact (< L/2) can reach; left in, so that the 3D search is as before.
 template <class F>
 void AggregationEngine::for_each_large_image(int i, F&& f) const {
   const int n = grid_->cells_per_side();
@@ -445,7 +462,7 @@ int AggregationEngine::merge(int a, int b) {
   m_[keep] = merged;
   image_[keep] = frame;
   mass_[keep] = M;
-  diam_[keep] = dim_ == 3 ? std::cbrt(da * da * da + db * db * db) : std::sqrt(da * da + db * db);
+  diam_[keep] = dim_ == 3 ? std::cbrt(da * da * da + db * db * db) : (dim_ == 2 ? std::sqrt(da * da + db * db) : da + db);
   wrap_into_box(m_[keep].r, image_[keep], L_);
   place(keep, grid_->cell_of(m_[keep].r.x, m_[keep].r.y, m_[keep].r.z));
   --alive_;

@@ -2,7 +2,12 @@
 // aggregates that touch become one, at their centre of mass, with the summed
 // mass and volume (diameter (d1³ + d2³)^{1/3}) and the momentum-conserving
 // velocity. In 2D (disks in a periodic square, z and v_z exactly 0 as in
-// Engine<Rule, 2>) areas add: diameter (d1² + d2²)^{1/2}. The dimension is a
+// Engine<Rule, 2>) areas add: diameter (d1² + d2²)^{1/2}; in 1D (rods on a
+// ring, y = z = 0) lengths add: diameter d1 + d2, the mass staying
+// proportional to the length. Two touching rods span exactly [x1 - d1/2,
+// x2 + d2/2], and their merged rod, centred at the centre of mass, spans the
+// same: a 1D merge never overlaps a third rod, so chains arise only from
+// rods that touch at the same instant. The dimension is a
 // member, not a template parameter: this engine's cost is its searches over
 // aggregates of many sizes, not a hot loop a branch would slow. The new aggregate may overlap others: those merge too, at the
 // same instant, until no pair overlaps (chain aggregation), across periodic
@@ -64,7 +69,8 @@ struct AggregateState {
 struct AggregationScalars {
   double L, now, dmax, grid_request;  // grid_request: the widest aggregate a fine cell lists
   std::int64_t alive;
-  std::int32_t too_large, has_grid, block, planar = 0;  // planar: 1 for disks (2D); 0 in every 3D checkpoint
+  // planar: 3 - dimension: 1 for disks (2D), 2 for rods (1D); 0 in every 3D checkpoint
+  std::int32_t too_large, has_grid, block, planar = 0;
   EngineCounters counters;
 };
 
@@ -76,7 +82,7 @@ class AggregationEngine final : public EngineBase {
   static constexpr double kCellsPerAggregateLimit = 4.0;
 
   // Aggregates as they are at time `now` (positions valid at now), in
-  // `dimension` 3 (spheres) or 2 (disks, z = 0).
+  // `dimension` 3 (spheres), 2 (disks, z = 0) or 1 (rods, y = z = 0).
   AggregationEngine(Particles particles, AggregateState aggregates, double now, const EngineCounters& counters = {},
                     int dimension = 3);
   // The engine whose exact state save() wrote.
@@ -124,6 +130,8 @@ class AggregationEngine final : public EngineBase {
   void for_each_cell_in_reach(int i, int reach, F&& f) const;
   template <class F>
   [[gnu::noinline]] void for_each_cell_in_reach_2d(const CellCoord& c, int reach, F& f) const;
+  template <class F>
+  [[gnu::noinline]] void for_each_cell_in_reach_1d(const CellCoord& c, int reach, F& f) const;
   [[noreturn]] void throw_too_large() const;
   void check_aggregates(const StateReader& in, std::int64_t alive) const;
   void check_listed(const StateReader& in, const std::vector<std::int32_t>& fine) const;
@@ -146,7 +154,7 @@ class AggregationEngine final : public EngineBase {
   Vec3 separation(int a, int b) const;  // r_b - r_a at now_, minimum image
 
   double L_;
-  int dim_ = 3;  // 3, or 2: one layer of cells, areas add in a merge
+  int dim_ = 3;  // 3, or 2: one layer of cells, areas add in a merge; or 1: one row, lengths add
   std::vector<Motion> m_;
   std::vector<Image> image_;
   std::vector<double> mass_, diam_;

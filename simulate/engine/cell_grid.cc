@@ -16,8 +16,9 @@ namespace {
 constexpr double kWidthMargin = 1.0 + 1e-9;
 
 // The head blocks: 4 cells along x, 2 along y and z, 16 heads of 4 bytes, one
-// cache line (in 2D, 4 along x and y). A block's cells are x fastest, then y,
-// then z; blocks are in the same order, over sides padded to whole blocks.
+// cache line (in 2D, 4 along x and y; in 1D, 16 along x). A block's cells
+// are x fastest, then y, then z; blocks are in the same order, over sides
+// padded to whole blocks.
 constexpr int kHeadBlockX = 4, kHeadBlock = 16;
 
 int blocks(int n, int width) { return (n + width - 1) / width; }
@@ -61,6 +62,7 @@ std::string check_box_fits_grid(double L, double min_width) {
 std::int64_t CellGrid::cells_for(double L, double min_width, int dimension) {
   if (!(std::isfinite(L) && min_width > 0) || !check_box_fits_grid(L, min_width).empty()) return 0;
   const double side = std::floor(L / (min_width * kWidthMargin));
+  if (dimension == 1) return side > 2e9 ? -1 : std::int64_t(side);
   if (dimension == 2) return side > 4.6e4 ? -1 : std::int64_t(side) * std::int64_t(side);
   if (side > 2e3) return -1;  // beyond 32-bit cell indices: no checkpoint can match
   return std::int64_t(side) * std::int64_t(side) * std::int64_t(side);
@@ -69,21 +71,26 @@ std::int64_t CellGrid::cells_for(double L, double min_width, int dimension) {
 CellGrid::CellGrid(double L, double min_width, std::size_t n, int dimension) {
   const std::string err = check_box_fits_grid(L, min_width);
   if (!err.empty()) throw std::invalid_argument(err);
-  if (dimension != 2 && dimension != 3) throw std::invalid_argument("a cell grid has dimension 2 or 3");
-  n_ = static_cast<int>(std::floor(L / (min_width * kWidthMargin)));
+  if (dimension < 1 || dimension > 3) throw std::invalid_argument("a cell grid has dimension 1, 2 or 3");
+  const double side = std::floor(L / (min_width * kWidthMargin));
+  if (side > double(std::numeric_limits<std::int32_t>::max() - kHeadBlock))
+    throw std::invalid_argument("the cell grid's cells do not fit 32-bit indices");
+  n_ = static_cast<int>(side);
   layers_ = dimension == 3 ? n_ : 1;
   inv_n_ = 1.0 / n_;
   w_ = L / n_;
-  const int block_y = dimension == 3 ? 2 : 4, block_z = dimension == 3 ? 2 : 1;
-  const std::int64_t bx = blocks(n_, kHeadBlockX), by = blocks(n_, block_y), bz = blocks(layers_, block_z);
+  const int block_x = dimension == 1 ? kHeadBlock : kHeadBlockX;
+  const int block_y = dimension == 3 ? 2 : (dimension == 2 ? 4 : 1), block_z = dimension == 3 ? 2 : 1;
+  const int rows = dimension >= 2 ? n_ : 1;
+  const std::int64_t bx = blocks(n_, block_x), by = blocks(rows, block_y), bz = blocks(layers_, block_z);
   if (bx * by * bz * kHeadBlock > std::numeric_limits<std::int32_t>::max()) {
     std::ostringstream s;
     s << "the cell grid's " << n_ << "^" << dimension << " cells do not fit 32-bit indices";
     throw std::invalid_argument(s.str());
   }
-  slot_x_ = slot_terms(n_, kHeadBlockX, kHeadBlock, 1);
-  slot_y_ = slot_terms(n_, block_y, bx * kHeadBlock, kHeadBlockX);
-  slot_z_ = slot_terms(layers_, block_z, bx * by * kHeadBlock, kHeadBlockX * block_y);
+  slot_x_ = slot_terms(n_, block_x, kHeadBlock, 1);
+  slot_y_ = slot_terms(rows, block_y, bx * kHeadBlock, block_x);
+  slot_z_ = slot_terms(layers_, block_z, bx * by * kHeadBlock, block_x * block_y);
   head_.assign(static_cast<std::size_t>(bx * by * bz * kHeadBlock), -1);
   own_next_.assign(n, -1);
   next_ = own_next_.data();
@@ -93,7 +100,7 @@ CellGrid::CellGrid(double L, double min_width, std::size_t n, int dimension) {
 
 int CellGrid::cell_of(double x, double y, double z) const {
   auto c = [this](double u, int n) { return std::clamp(static_cast<int>(std::floor(u / w_)), 0, n - 1); };
-  return index({c(x, n_), c(y, n_), c(z, layers_)});
+  return index({c(x, n_), c(y, rows()), c(z, layers_)});
 }
 
 void CellGrid::insert(int p, int cell) {

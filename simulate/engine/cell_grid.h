@@ -1,15 +1,16 @@
 // The cell grid: the periodic box cut into ncell³ cubic cells at least one
-// diameter wide (ncell² square ones for disks in 2D: one layer, z = 0), each
+// diameter wide (ncell² square ones for disks in 2D: one layer, z = 0; a
+// row of ncell for rods on a ring in 1D: y = z = 0), each
 // holding a doubly linked list of the particles whose centres it contains.
 // Two spheres can only touch if their cells are neighbours (the 27 cells
-// around, periodic; 9 in 2D), so collision searches look only there. A particle's cell is logical: it changes only at a cell-crossing
+// around, periodic; 9 in 2D, 3 in 1D), so collision searches look only there. A particle's cell is logical: it changes only at a cell-crossing
 // event, never by reading the position, so round-off cannot lose a particle.
 // The forward links of the lists may live inside the caller's particle
 // records (bind_next_links), so that walking a cell touches one cache line
 // per particle. The list heads are stored in blocks of 4 x 2 x 2 cells, one
 // cache line each (slot()): the 27 cells around one then span 6 lines on
 // average instead of 9 rows of 3, and the 9 beyond a face 3.3 instead of 5.3
-// (in 2D, blocks of 4 x 4 cells).
+// (in 2D, blocks of 4 x 4 cells; in 1D, runs of 16).
 // Cells keep their plain index (z n + y) n + x everywhere else, checkpoints
 // included.
 #pragma once
@@ -29,14 +30,18 @@ struct CellCoord {
 class CellGrid {
  public:
   // Cells of side >= min_width (the largest diameter) in a box of side L, for
-  // n particles, in `dimension` 3 (a cube) or 2 (a square: one layer of cells).
+  // n particles, in `dimension` 3 (a cube), 2 (a square: one layer of cells)
+  // or 1 (a ring: one row of cells).
   CellGrid(double L, double min_width, std::size_t n, int dimension = 3);
   CellGrid() = default;  // no cells: a placeholder to assign to, or to free a grid
 
   int cells_per_side() const { return n_; }
-  int layers() const { return layers_; }  // cells along z: n in 3D, 1 in 2D
+  int layers() const { return layers_; }  // cells along z: n in 3D, 1 in 2D and 1D
+  // Cells along y: n in 3D and 2D, 1 in 1D (one term of slot() per row; no
+  // member of its own, so the 3D engine's layout is what it was).
+  int rows() const { return static_cast<int>(slot_y_.size()); }
   double width() const { return w_; }
-  std::int64_t cell_count() const { return std::int64_t(n_) * n_ * layers_; }
+  std::int64_t cell_count() const { return std::int64_t(n_) * rows() * layers_; }
 
   int index(const CellCoord& c) const { return (c.z * n_ + c.y) * n_ + c.x; }
   // Integer division by n done in floating point (a multiplication, not an
@@ -143,7 +148,8 @@ void for_each_neighbour_cell(int n, double L, const CellCoord& c, F&& f) {
 }
 
 // The same walk, specialised for the engine's partner search in dimension D
-// (in 2D the offsets along z are 0 and the one layer never wraps): writes the
+// (in 2D the offsets along z are 0 and the one layer never wraps; in 1D
+// those along y too, and only x wraps): writes the
 // cells' head slots (CellGrid::slot) to `slots` and returns how many. An
 // interior cell (~90 % of them) needs no shifts, and `shifts` is left
 // untouched (wraps = false); otherwise shifts[k] holds the shift of the k-th
@@ -154,7 +160,8 @@ inline int neighbour_slots(const CellGrid& grid, double L, const CellCoord& c, c
   const int n = grid.cells_per_side();
   int k = 0;
   if constexpr (D == 3) wraps = !(c.x > 0 && c.y > 0 && c.z > 0 && c.x < n - 1 && c.y < n - 1 && c.z < n - 1);
-  else wraps = !(c.x > 0 && c.y > 0 && c.x < n - 1 && c.y < n - 1);
+  else if constexpr (D == 2) wraps = !(c.x > 0 && c.y > 0 && c.x < n - 1 && c.y < n - 1);
+  else wraps = !(c.x > 0 && c.x < n - 1);
   if (!wraps) {
     for (int oz = lo[2]; oz <= hi[2]; ++oz)
       for (int oy = lo[1]; oy <= hi[1]; ++oy)
@@ -185,7 +192,7 @@ CellExit first_cell_exit(const CellGrid& grid, int cell, const Vec3& r, const Ve
 int cell_across_face(const CellGrid& grid, int cell, int face, double L, Vec3& r, Image& image);
 
 // The smallest box the grid supports: three cells of the given width, so that
-// the 27 neighbours of a cell are 27 distinct cells.
+// the 27 neighbours of a cell are 27 distinct cells (3 in 1D).
 std::string check_box_fits_grid(double L, double min_width);
 
 }  // namespace coolgas

@@ -14,11 +14,11 @@ namespace coolgas {
 
 namespace {
 // Offsets -1..1 along each axis of D: all 27 cells around (9 in 2D, whose
-// one layer has z offset 0).
+// one layer has z offset 0; 3 in 1D, whose one row has y offset 0 too).
 template <int D>
-constexpr int kAroundLo[3] = {-1, -1, D == 3 ? -1 : 0};
+constexpr int kAroundLo[3] = {-1, D >= 2 ? -1 : 0, D == 3 ? -1 : 0};
 template <int D>
-constexpr int kAroundHi[3] = {1, 1, D == 3 ? 1 : 0};
+constexpr int kAroundHi[3] = {1, D >= 2 ? 1 : 0, D == 3 ? 1 : 0};
 // Inelastic collapse shows as one particle colliding again and again while
 // simulated time stops advancing: rule.collapse_limit() collisions in a row,
 // each less than kStallGap (relative to 1 + t) after the particle's previous
@@ -49,8 +49,17 @@ constexpr std::int64_t kCollisionsPerParticlePerRebuild = 200;
 // In 2D the same rule, with the box's area: disks below phi = 0.049.
 constexpr double kDiluteCellsPerParticle = 16;
 
+// Rods (D = 1) get cells one mean spacing L/N wide at every density: a free
+// flight there is (1 - phi)/phi diameters long (several at phi = 0.2, where
+// a sphere's is under one), so one-diameter cells would make each flight
+// cross several cells, each crossing an event; with one rod per cell on
+// average a flight crosses about one, and a search still meets ~3 rods.
 template <int D>
 double cell_width(double L, std::size_t n) {
+  if constexpr (D == 1) {
+    const double most = L / 3.0 / (1.0 + 1e-6);  // three cells, with CellGrid's margin
+    return std::max(1.0, std::min(L / double(std::max<std::size_t>(n, 1)), most));
+  }
   const double volume = D == 3 ? L * L * L : L * L, particles = double(std::max<std::size_t>(n, 1));
   if (volume <= kDiluteCellsPerParticle * particles) return 1.0;
   const double most = L / 3.0 / (1.0 + 1e-6);  // three cells per side, with CellGrid's margin
@@ -370,7 +379,7 @@ Event Engine<Rule, D>::finish_event(int i, const Search& s) {
 // unchanged; returns its next event. Its kept collision is still the
 // earliest with the particles that were its neighbours if that partner has
 // not collided since (any other that has collided has searched again itself,
-// and found i if due); only the layer of 9 cells (3 in 2D) beyond the new cell has to
+// and found i if due); only the layer of 9 cells (3 in 2D, 1 in 1D) beyond the new cell has to
 // be searched. That search is started first, so its loads are in flight
 // while the grid is updated and the partner checked.
 template <class Rule, int D>
@@ -380,7 +389,7 @@ Event Engine<Rule, D>::cross(int i, int face) {
   advance(i);
   const int to = cell_across_face(grid_, grid_.cell(i), face, L_, m_[i].r, image_[i]);
   const int d = face / 2, side = face % 2 == 1 ? 1 : -1;
-  int lo[3] = {-1, -1, kAroundLo<D>[2]}, hi[3] = {1, 1, kAroundHi<D>[2]};
+  int lo[3] = {-1, kAroundLo<D>[1], kAroundLo<D>[2]}, hi[3] = {1, kAroundHi<D>[1], kAroundHi<D>[2]};
   lo[d] = hi[d] = side;
   Search s;
   start_search(to, lo, hi, s);
@@ -529,5 +538,8 @@ template class Engine<ViscoelasticRule>;
 template class Engine<ElasticRule, 2>;
 template class Engine<ConstantRestitutionRule, 2>;
 template class Engine<ViscoelasticRule, 2>;
+template class Engine<ElasticRule, 1>;
+template class Engine<ConstantRestitutionRule, 1>;
+template class Engine<ViscoelasticRule, 1>;
 
 }  // namespace coolgas

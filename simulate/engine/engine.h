@@ -31,7 +31,10 @@
 //     an exact 0); the grid is one layer of cells and a search walks the 9
 //     cells around instead of 27. The record is one cache line either way, so
 //     dropping z would save no memory traffic, and the 3D engine's code is
-//     the same as before D existed.
+//     the same as before D existed. D = 1 is hard rods on a periodic ring
+//     the same way: y, z, v_y and v_z exactly 0, one row of cells, the 3
+//     cells around searched (rods never pass each other, so a rod's
+//     partners are its two ring neighbours, which the cells find).
 //
 // The runner sees the engine through EngineBase (engine_base.h);
 // make_engine() picks the instantiation once, at start-up.
@@ -80,7 +83,7 @@ struct TimeWatch {
 
 template <class Rule, int D = 3>
 class Engine final : public EngineBase {
-  static_assert(D == 2 || D == 3, "the engine simulates disks (D = 2) or spheres (D = 3)");
+  static_assert(D >= 1 && D <= 3, "the engine simulates rods (D = 1), disks (D = 2) or spheres (D = 3)");
 
  public:
   // Particles are taken as they are at time `now` (positions valid at now).

@@ -28,10 +28,11 @@ class LargeAggregateIndex {
  public:
   LargeAggregateIndex() = default;
   // For a fine grid of n_fine³ cells (a multiple of block per side; in 2D
-  // n_fine² cells, one layer) and n aggregate slots.
+  // n_fine² cells, one layer; in 1D n_fine, one row) and n aggregate slots.
   LargeAggregateIndex(int n_fine, int block, std::size_t n, int dimension = 3)
       : block_(block),
         n_(n_fine / block),
+        rows_(dimension >= 2 ? n_ : 1),
         layers_(dimension == 3 ? n_ : 1),
         inv_fine_(1.0 / n_fine),
         fine_(n, -1),
@@ -55,7 +56,7 @@ class LargeAggregateIndex {
     class_[std::size_t(i)] = size_class;
     if (size_class >= classes()) levels_.resize(std::size_t(size_class) + 1);
     auto& level = levels_[std::size_t(size_class)];
-    if (level.empty()) level.assign(std::size_t(n_) * std::size_t(n_) * std::size_t(layers_), -1);
+    if (level.empty()) level.assign(std::size_t(n_) * std::size_t(rows_) * std::size_t(layers_), -1);
     std::int32_t* at = &level[coarse_of(fine)];  // the link that will point to i
     while (*at >= 0 && *at < i) at = &link(*at);
     link(i) = *at;
@@ -92,7 +93,10 @@ class LargeAggregateIndex {
       lo[d] = floor_div(cc[d] - reach, block_);
       count[d] = std::min(floor_div(cc[d] + reach, block_) - lo[d] + 1, n_);
     }
-    if (layers_ == 1) lo[2] = 0, count[2] = 1;  // 2D: the one layer
+    if (layers_ == 1) {  // 2D: the one layer; 1D: the one row of it
+      lo[2] = 0, count[2] = 1;
+      if (rows_ == 1) lo[1] = 0, count[1] = 1;
+    }
     for (int z = 0; z < count[2]; ++z) {
       const std::size_t cz = std::size_t(wrap(lo[2] + z));
       for (int y = 0; y < count[1]; ++y) {
@@ -127,7 +131,7 @@ class LargeAggregateIndex {
     return (std::size_t(c.z) * std::size_t(n_) + std::size_t(c.y)) * std::size_t(n_) + std::size_t(c.x);
   }
 
-  int block_ = 1, n_ = 1, layers_ = 1;  // layers_: coarse cells along z (n_, or 1 in 2D)
+  int block_ = 1, n_ = 1, rows_ = 1, layers_ = 1;  // coarse cells along y (n_, or 1 in 1D) and z (n_, or 1 in 2D, 1D)
   double inv_fine_ = 1;
   std::size_t count_ = 0;
   std::vector<std::int32_t> fine_, class_;  // each slot's fine cell and class, -1 if not listed

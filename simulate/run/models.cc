@@ -19,11 +19,13 @@ template <class Rule, Rule (*rule_of)(const Scene&)>
 std::unique_ptr<EngineBase> make_rule_engine(const Scene& s, Particles p, double now, const EngineCounters& c,
                                              const AggregateState*) {
   if (s.dimension == 2) return std::make_unique<Engine<Rule, 2>>(std::move(p), rule_of(s), now, c);
+  if (s.dimension == 1) return std::make_unique<Engine<Rule, 1>>(std::move(p), rule_of(s), now, c);
   return std::make_unique<Engine<Rule>>(std::move(p), rule_of(s), now, c);
 }
 template <class Rule, Rule (*rule_of)(const Scene&)>
 std::unique_ptr<EngineBase> restore_rule_engine(const Scene& s, const StateReader& state) {
   if (s.dimension == 2) return std::make_unique<Engine<Rule, 2>>(rule_of(s), state);
+  if (s.dimension == 1) return std::make_unique<Engine<Rule, 1>>(rule_of(s), state);
   return std::make_unique<Engine<Rule>>(rule_of(s), state);
 }
 
@@ -32,7 +34,7 @@ std::unique_ptr<EngineBase> make_aggregation(const Scene& s, Particles p, double
   AggregateState a = aggregates ? *aggregates : AggregateState::unit_spheres(p.size());
   return std::make_unique<AggregationEngine>(std::move(p), std::move(a), now, c, s.dimension);
 }
-// The checkpoint says its dimension; a scene of the other one is refused.
+// The checkpoint says its dimension; a scene of another one is refused.
 std::unique_ptr<EngineBase> restore_aggregation(const Scene& s, const StateReader& state) {
   auto e = std::make_unique<AggregationEngine>(state);
   if (e->dimension() != s.dimension)

@@ -21,7 +21,8 @@ ResumePoint read_resume_point(const std::string& path) {
     rp.particles.t[i] = f.time;
   }
   if (f.aggregates) rp.aggregates = AggregateState{std::move(f.mass), std::move(f.diameter), std::move(f.id)};
-  check_configuration(rp.particles, rp.aggregates ? &*rp.aggregates : nullptr, "cannot resume from '" + path + "'");
+  check_configuration(rp.particles, rp.aggregates ? &*rp.aggregates : nullptr, "cannot resume from '" + path + "'",
+                      f.dimension);
   return rp;
 }
 

@@ -60,8 +60,8 @@ const std::vector<SceneKey>& scene_keys() {
       // Written to TOML only when not 3, so that a 3D scene's text (and with
       // it a 3D run's file) is what it was before the key existed.
       {.key = "system.dimension", .type = KeyType::kInteger, .need = KeyNeed::kOptional,
-       .help = "2 (hard disks in a periodic square; phi is then the area fraction) or 3 (spheres in a periodic "
-               "cube); absent: 3",
+       .help = "1 (hard rods on a periodic ring; phi is then the line fraction), 2 (hard disks in a periodic "
+               "square; phi is then the area fraction) or 3 (spheres in a periodic cube); absent: 3",
        .lo = 1, .hi = 3,
        .set = [](Scene& s, const SceneValue& v) { s.dimension = int(std::get<std::int64_t>(v)); },
        .toml = [](const Scene& s) { return s.dimension == 3 ? std::string() : std::to_string(s.dimension); }},
@@ -74,9 +74,9 @@ const std::vector<SceneKey>& scene_keys() {
        .set = [](Scene& s, const SceneValue& v) { s.L = std::get<double>(v); },
        .toml = [](const Scene& s) { return toml_float(s.L); }},
       {.key = "system.phi", .type = KeyType::kFloat, .need = KeyNeed::kSize,
-       .help = "volume fraction N*pi/(6 L^3) (2D: area fraction N*pi/(4 L^2)); at most 0.36 for init = \"random\" "
-               "(2D: 0.45), 0.7404 for \"fcc\"",
-       .lo = 0, .hi = kMaxFccPhi, .lo_open = true,
+       .help = "volume fraction N*pi/(6 L^3) (2D: area fraction N*pi/(4 L^2); 1D: line fraction N/L); at most "
+               "0.36 for init = \"random\" (2D: 0.45; 1D: below 1), 0.7404 for \"fcc\"",
+       .lo = 0, .hi = 1, .lo_open = true, .hi_open = true,
        .set = [](Scene& s, const SceneValue& v) { s.phi = std::get<double>(v); },
        .toml = [](const Scene& s) { return toml_float(s.phi); }},
       {.key = "system.seed", .type = KeyType::kInteger, .need = KeyNeed::kDefault,
@@ -548,16 +548,32 @@ void set_size(Scene& s, const KeyValues& kv, const std::set<std::string>& overri
   const double phi_of = covered_fraction(double(s.N), s.L, s.dimension);
   if (hasN && hasL && hasPhi && std::fabs(phi_of - s.phi) > 1e-9 * s.phi)
     throw InputError("system.N, system.L and system.phi disagree: " +
-                     std::string(s.dimension == 3 ? "N pi/(6 L^3)" : "N pi/(4 L^2)") + " = " + format_number(phi_of) +
+                     std::string(s.dimension == 3 ? "N pi/(6 L^3)" : (s.dimension == 2 ? "N pi/(4 L^2)" : "N/L")) +
+                     " = " + format_number(phi_of) +
                      " but phi = " + format_number(s.phi) + "; give only two of them");
   s.phi = phi_of;
   s.size_note = size_note(given, s, keys, kv, overridden);
 }
 
+// What 1D does not offer, each refused with its own line. Rods cover the
+// whole ring at phi = 1; below it the exact equilibrium placement
+// (simulate/start/rod_placement.h) reaches any density.
+void check_rods(const Scene& s) {
+  if (s.init == InitialPositions::kFcc)
+    throw InputError("system.init = \"fcc\" is a 3D lattice; in system.dimension = 1 use \"random\" (any phi < 1)");
+  if (s.init == InitialPositions::kFile)
+    throw InputError("system.init = \"file\" is not supported yet in system.dimension = 1; use \"random\"");
+  if (!(s.phi < 1))
+    out_of_range("system.phi", s.phi,
+                 "unit rods (system.dimension = 1) cover the ring of length L = " + format_number(s.L) +
+                     " at N = L; need N < L");
+}
+
 // What 2D does not offer yet, each refused with its own line.
 void check_dimension(const Scene& s) {
-  if (s.dimension == 1)
-    throw InputError("system.dimension = 1 (hard rods on a ring) is not supported yet; use 2 (disks) or 3 (spheres)");
+  if (s.dimension == 1) return check_rods(s);
+  if (s.phi > kMaxFccPhi)  // the key allows up to 1, for rods
+    out_of_range("system.phi", s.phi, "must be a finite number in (0, 0.7404] (spheres and disks; below 1 for rods)");
   if (s.dimension == 3) return;
   if (s.init == InitialPositions::kFcc)
     throw InputError("system.init = \"fcc\" is a 3D lattice; in system.dimension = 2 use \"random\" (phi <= 0.45)");
@@ -571,7 +587,7 @@ void check_dimension(const Scene& s) {
 // Limits that involve more than one key.
 void check_relations(const Scene& s) {
   check_dimension(s);
-  if (s.dimension == 2) return;
+  if (s.dimension != 3) return;
   if (s.init == InitialPositions::kRandom && s.phi > kMaxRandomPhi)
     out_of_range("system.phi", s.phi,
                  "random sequential addition reaches phi <= 0.36; use system.init = \"fcc\" (up to 0.74)");

@@ -22,10 +22,10 @@ enum class CollisionModel { kElastic, kInelastic, kViscoelastic, kAggregation };
 
 struct Scene {
   // system
-  int dimension = 3;  // 3: spheres in a periodic cube; 2: disks in a periodic square
+  int dimension = 3;  // 3: spheres in a periodic cube; 2: disks in a periodic square; 1: rods on a ring
   std::int64_t N = 0;
   double L = 0;    // box side, diameters
-  double phi = 0;  // volume fraction N π / (6 L³) (2D: area fraction N π / (4 L²); box_geometry.h)
+  double phi = 0;  // volume fraction N π / (6 L³) (2D: area fraction N π / (4 L²); 1D: N / L; box_geometry.h)
   std::int64_t seed = 1;
   InitialPositions init = InitialPositions::kRandom;
   // Elastic dynamics run before t = 0 to turn the packing into an equilibrium

@@ -12,6 +12,7 @@
 #include "simulate/start/enskog.h"
 #include "common/random.h"
 #include "simulate/run/box_geometry.h"
+#include "simulate/start/rod_placement.h"
 #include "simulate/start/rsa_disks.h"
 #include "simulate/start/rsa_voxels.h"
 
@@ -55,7 +56,8 @@ std::string percent(double part, double whole) {
 // With unit masses every product and quotient by a mass is exact, so the
 // velocities are those of the plain unit-sphere formula, bit for bit.
 // The temperature is the kinetic energy over the dimension's D/2 per
-// particle, so in 2D the sum of squares is scaled to 2 N T0, not 3 N T0.
+// particle, so in 2D the sum of squares is scaled to 2 N T0, not 3 N T0
+// (in 1D to N T0).
 void draw_velocities(Particles& p, double T0, Random& rng, const std::vector<double>* mass, int dimension) {
   const auto m = [&](std::size_t i) { return mass ? (*mass)[i] : 1.0; };
   Vec3 momentum;
@@ -63,7 +65,8 @@ void draw_velocities(Particles& p, double T0, Random& rng, const std::vector<dou
   for (std::size_t i = 0; i < p.size(); ++i) {
     Vec3& v = p.v[i];
     if (dimension == 3) v = {rng.normal(), rng.normal(), rng.normal()};
-    else v = {rng.normal(), rng.normal(), 0.0};
+    else if (dimension == 2) v = {rng.normal(), rng.normal(), 0.0};
+    else v = {rng.normal(), 0.0, 0.0};
     const double root = mass ? std::sqrt(m(i)) : 1.0;
     for (int d = 0; d < 3; ++d) {
       v[d] /= root;
@@ -104,6 +107,13 @@ std::vector<Vec3> equilibrated(Particles p, double duration, InterruptFlag inter
   return melt.release_positions();
 }
 
+template <class Say>
+std::vector<Vec3> equilibrated_in(int dimension, Particles p, double duration, InterruptFlag interrupt, const Say& say) {
+  if (dimension == 3) return equilibrated<3>(std::move(p), duration, interrupt, say);
+  if (dimension == 2) return equilibrated<2>(std::move(p), duration, interrupt, say);
+  return equilibrated<1>(std::move(p), duration, interrupt, say);
+}
+
 }  // namespace
 
 double initial_temperature(const Scene& s) {
@@ -116,7 +126,7 @@ Particles initial_state(const Scene& s, InterruptFlag interrupt, const SetupRepo
     if (report) report(line, phase);
   };
   say("placing " + std::to_string(s.N) + (s.init == InitialPositions::kRandom ? " particles at random" : " particles on FCC") +
-          (s.dimension == 2 ? " in 2D" : ""),
+          (s.dimension == 3 ? "" : " in " + std::to_string(s.dimension) + "D"),
       true);
   Particles p;
   p.L = s.L;
@@ -129,7 +139,8 @@ Particles initial_state(const Scene& s, InterruptFlag interrupt, const SetupRepo
             "), phi = " + four_digits(covered_fraction(double(n), s.L, s.dimension)) + " of " + four_digits(s.phi),
         false);
   };
-  if (s.dimension == 2) place_random_disks(p, s.N, rng, interrupt, placed);  // the scene allows no other 2D start
+  if (s.dimension == 1) place_rods(p, s.N, rng, interrupt, placed);  // the scene allows no other 1D start
+  else if (s.dimension == 2) place_random_disks(p, s.N, rng, interrupt, placed);  // nor 2D
   else if (s.init == InitialPositions::kRandom) place_random_sequential(p, s.N, rng, interrupt, placed);
   else place_fcc(p, s.N, rng);
   p.resize(std::size_t(s.N));
@@ -137,8 +148,7 @@ Particles initial_state(const Scene& s, InterruptFlag interrupt, const SetupRepo
   draw_velocities(p, T0, rng, nullptr, s.dimension);
   if (s.equilibrate > 0) {
     say("equilibrating: " + format_number(s.equilibrate) + " elastic collision times", true);
-    std::vector<Vec3> relaxed = s.dimension == 3 ? equilibrated<3>(std::move(p), s.equilibrate, interrupt, say)
-                                                 : equilibrated<2>(std::move(p), s.equilibrate, interrupt, say);
+    std::vector<Vec3> relaxed = equilibrated_in(s.dimension, std::move(p), s.equilibrate, interrupt, say);
     p = Particles();
     p.L = s.L;
     p.resize(relaxed.size());

@@ -1,5 +1,6 @@
 // The initial state: N non-overlapping unit spheres placed at random (or on
-// an FCC lattice; disks at random in 2D, with z = 0), relaxed into an equilibrium fluid by a short elastic run
+// an FCC lattice; disks at random in 2D, with z = 0; rods in their exact
+// equilibrium configuration in 1D, rod_placement.h), relaxed into an equilibrium fluid by a short elastic run
 // (system.equilibrate), then given fresh Maxwellian velocities with zero total
 // momentum and temperature exactly T0, so that the initial mean collision
 // time is the time unit. Same scene and seed, same state, bit for bit.
@@ -30,7 +31,8 @@ double initial_temperature(const Scene& scene);
 
 // Maxwellian velocities at temperature T0 (per component: m <v_x^2> = T0 in
 // every dimension), total momentum removed and rescaled to T0 exactly;
-// `mass` null for unit masses. In 2D only x and y are drawn; v_z is 0.
+// `mass` null for unit masses. In 2D only x and y are drawn, v_z is 0; in 1D
+// only x.
 void draw_velocities(Particles& p, double T0, Random& rng, const std::vector<double>* mass = nullptr,
                      int dimension = 3);
 

@@ -5,6 +5,7 @@
 // each from the Gaussian start for 50 collisions per particle, and
 //   W5  elastic,               N = 10^6,   phi = 0.208, 20 collisions per particle
 //   W5D2 as W5 with hard disks (system.dimension = 2), area fraction 0.208
+//   W5D1 as W5 with hard rods on a ring (system.dimension = 1), line fraction 0.208
 //   W7  the paper's gas, r0 = 0.1, delta = 1e-4, N = 8x10^6, phi = 0.208, 5 collisions
 //       per particle from a clustered state: the L = 68 gas (N = 125000) run
 //       from its Gaussian start to t = 1000, tiled 4x4x4 (a valid periodic
@@ -15,7 +16,7 @@
 // Rates are given per second of wall time and per second of this process's
 // CPU time: on an idle machine they agree; on a shared one the CPU figure is
 // the engine's own speed.
-// usage: engine_bench [W1|W2|all|W5|W5D2|W7] [N] [collisions_per_particle] [repeats] [checkpoint_seconds]
+// usage: engine_bench [W1|W2|all|W5|W5D2|W5D1|W7] [N] [collisions_per_particle] [repeats] [checkpoint_seconds]
 // (W5 and W7 take their own N and collisions per particle unless given;
 // W7's N must be 64 times a tiled state's)
 // (repeats: runs of each workload, then a line with the best, median and worst;
@@ -226,11 +227,19 @@ coolgas::Scene disk_workload(std::int64_t n) {
   return s;
 }
 
+// W5's gas as hard rods: the same N and covered fraction on a ring.
+coolgas::Scene rod_workload(std::int64_t n) {
+  coolgas::Scene s = workload(false, n);
+  s.dimension = 1;
+  s.L = double(n) / s.phi;
+  return s;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   const std::string which = argc > 1 ? argv[1] : "all";
-  const bool w5 = which == "W5" || which == "W5D2", w7 = which == "W7";
+  const bool w5 = which == "W5" || which == "W5D2" || which == "W5D1", w7 = which == "W7";
   const std::int64_t n = argc > 2 ? std::atoll(argv[2]) : w5 ? 1000000 : w7 ? 8000000 : 108000;
   const double per = argc > 3 ? std::atof(argv[3]) : w5 ? 20 : w7 ? 5 : 50;
   const int times = argc > 4 ? std::atoi(argv[4]) : 1;
@@ -244,6 +253,13 @@ int main(int argc, char** argv) {
     repeat<coolgas::ElasticRule>(
         "W5D2", s,
         [&] { return std::make_unique<coolgas::Engine<coolgas::ElasticRule, 2>>(coolgas::initial_state(s), coolgas::ElasticRule{}, 0.0); },
+        per, times);
+  }
+  if (which == "W5D1") {
+    const coolgas::Scene s = rod_workload(n);
+    repeat<coolgas::ElasticRule>(
+        "W5D1", s,
+        [&] { return std::make_unique<coolgas::Engine<coolgas::ElasticRule, 1>>(coolgas::initial_state(s), coolgas::ElasticRule{}, 0.0); },
         per, times);
   }
   if (w7) {

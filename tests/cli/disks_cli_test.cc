@@ -89,7 +89,7 @@ TEST(DisksCliScene, BadDimensionsAreOneLineEach) {
   const std::string base = scene + " -o " + out + " --set system.dimension=2 ";
   const std::string plain = scene + " -o " + out + " ";
   test::expect_simulate_refused(plain + "--set system.dimension=4", "system.dimension = 4 is out of range", out);
-  test::expect_simulate_refused(plain + "--set system.dimension=1", "not supported yet", out);
+  test::expect_simulate_refused(plain + "--set system.dimension=0", "system.dimension = 0 is out of range", out);
   test::expect_simulate_refused(plain + "--set system.dimension=2.5", "system.dimension must be an integer", out);
   test::expect_simulate_refused(base + "--set system.init=fcc", "3D lattice", out);
   test::expect_simulate_refused(base + "--set system.phi=0.5", "reaches phi <= 0.45", out);

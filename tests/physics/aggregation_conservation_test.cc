@@ -79,5 +79,52 @@ TEST(AggregationConservation, DisksKeepMassAndAreaAndLeaveNoOverlap) {
   for (int d = 0; d < 3; ++d) EXPECT_NEAR(p[d], p0[d], 1e-10) << d;
 }
 
+// Rods: lengths add, so every aggregate's length equals its mass exactly
+// (integer-valued doubles), and a merged rod spans exactly the two it
+// replaces. Run until nothing is left to happen: every pair of aggregates on
+// a ring meets unless they move alike, so the run ends with one aggregate,
+// after exactly N - 1 merges (it never reaches L/2: the rods cover 0.3 L),
+// with the mass N and the momentum (zero: the start removes it) kept.
+TEST(AggregationConservation, RodsMergeIntoOneKeepingMassLengthAndMomentum) {
+  const std::int64_t n = 2000;
+  Scene s = test::rod_scene(n, 0.3, 23);
+  s.model = CollisionModel::kAggregation;
+  s.equilibrate = 0;
+  auto e = make_engine(s, initial_state(s), 0.0);
+  const Vec3 p0 = e->observables().momentum;
+  double energy = e->observables().kinetic_energy, speeds = 0;
+  for (const Vec3& v : e->frame().velocity) speeds += std::abs(v.x);
+  bool checked_midway = false;
+  while (e->now() < 1e12 && e->counters().collisions < n - 1) {
+    e->run_until(e->now() * 2 + 1, std::int64_t(1) << 40, nullptr);
+    ASSERT_LE(e->observables().kinetic_energy, energy * (1 + 1e-13)) << "t = " << e->now();
+    energy = e->observables().kinetic_energy;
+    if (checked_midway || e->counters().collisions < n / 2) continue;
+    const EngineFrame f = e->frame();
+    EXPECT_LT(test::largest_overlap(f.position, e->box(), f.diameter), 1e-9 * e->box());
+    checked_midway = true;
+  }
+  e->run_until(e->now() * 2 + 1, std::int64_t(1) << 40, nullptr);  // nothing left to happen
+  EXPECT_EQ(e->counters().collisions, n - 1);
+  const EngineFrame f = e->frame();
+  double mass = 0;
+  std::int64_t present = 0;
+  for (std::size_t i = 0; i < e->size(); ++i) {
+    mass += f.mass[i];
+    present += f.id[i] >= 0;
+    if (f.id[i] < 0) continue;
+    EXPECT_EQ(f.diameter[i], f.mass[i]) << i;
+    EXPECT_EQ(f.position[i].y, 0.0) << i;
+    EXPECT_EQ(f.position[i].z, 0.0) << i;
+  }
+  EXPECT_EQ(present, 1);
+  EXPECT_EQ(mass, double(n));
+  EXPECT_TRUE(checked_midway);
+  const Vec3 p = e->observables().momentum;
+  EXPECT_NEAR(p.x, p0.x, 1e-12 * speeds);
+  EXPECT_EQ(p.y, 0.0);
+  EXPECT_EQ(p.z, 0.0);
+}
+
 }  // namespace
 }  // namespace coolgas

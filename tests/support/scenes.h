@@ -24,11 +24,13 @@ inline Scene inelastic_scene(std::int64_t N, double phi, double r0, double delta
   return s;
 }
 
-// The scene in `dimension` (3, or 2: hard disks), with the same N and phi:
-// the box side follows (in 2D phi is the area fraction N pi / (4 L^2)).
+// The scene in `dimension` (3, 2: hard disks, or 1: hard rods), with the
+// same N and phi: the box side follows (in 2D phi is the area fraction
+// N pi / (4 L^2), in 1D the line fraction N / L).
 inline Scene in_dimension(Scene s, int dimension) {
   s.dimension = dimension;
   if (dimension == 2) s.L = std::sqrt(double(s.N) * M_PI / (4.0 * s.phi));
+  if (dimension == 1) s.L = double(s.N) / s.phi;
   return s;
 }
 
@@ -38,6 +40,14 @@ inline Scene disk_scene(std::int64_t N, double phi, std::int64_t seed = 1) {
 
 inline Scene inelastic_disk_scene(std::int64_t N, double phi, double r0, double delta, std::int64_t seed = 1) {
   return in_dimension(inelastic_scene(N, phi, r0, delta, seed), 2);
+}
+
+inline Scene rod_scene(std::int64_t N, double phi, std::int64_t seed = 1) {
+  return in_dimension(elastic_scene(N, phi, seed), 1);
+}
+
+inline Scene inelastic_rod_scene(std::int64_t N, double phi, double r0, double delta, std::int64_t seed = 1) {
+  return in_dimension(inelastic_scene(N, phi, r0, delta, seed), 1);
 }
 
 }  // namespace coolgas::test
