@@ -123,7 +123,8 @@ TEST(ConvertCli, AseReadsTheXyzAndMDAnalysisTheLammpsDumpAsH5pyReadsTheRun) {
   }
 }
 
-// Rods on a ring (a 1D file from the writer: the simulator writes none yet):
+// Rods on a ring (a 1D file from the writer; a simulated one:
+// tests/cli/rod_tools_cli_test.cc):
 // ASE reads each XYZ frame as a cell (L, 1, 1) periodic along x only, y = z
 // = 0, positions and velocities exact; LAMMPS has no 1D mode, so a LAMMPS
 // dump is refused with one line naming the XYZ alternative.

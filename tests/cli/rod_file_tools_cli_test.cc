@@ -1,7 +1,9 @@
-// The analysis tools on a 1D file (rods on a ring), driven as a user would.
-// The simulator writes no 1D run yet, so the file comes from the H5MD writer
-// itself: 2000 rods uniform on a ring of 400 with Gaussian velocities at T0 =
-// 1, and an energy that leaves Haff's law for the 1D theories' t^(-2/3).
+// The analysis tools on a 1D file (rods on a ring), driven as a user would,
+// on a file from the H5MD writer itself, made to order (a run of the
+// simulator is tests/cli/rod_tools_cli_test.cc): 2000 rods uniform on a ring
+// of 400 with Gaussian velocities at T0 = 1, and an energy that leaves
+// Haff's law for the 1D theories' t^(-2/3) well before the crossover, which
+// a short simulated run does not.
 // Each table says `# dimension: 1` and holds the 1D numbers (densities per
 // sigma, one velocity component, n grid points, R_g alone); each bad
 // combination (1D and 3D runs in one ensemble or one collapse, an option of

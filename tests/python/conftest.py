@@ -1,14 +1,9 @@
 """Shared runs for the Python tests: a small inelastic gas, its
-ballistic-aggregation counterpart and an inelastic gas of disks (2D),
-simulated once per test file by the CLI (so every comparison is Python
-against the tool on the same file), and a file of rods (1D) made from the
-gas's file."""
+ballistic-aggregation counterpart and inelastic gases of disks (2D) and of
+rods (1D), simulated once per test file by the CLI (so every comparison is
+Python against the tool on the same file)."""
 import os
-import shutil
 import subprocess
-
-import h5py
-import numpy as np
 
 import pytest
 
@@ -39,6 +34,21 @@ r0 = 0.5
 delta = 1e-3
 [run]
 t_end = 100
+[output]
+dumps_per_decade = 3
+"""
+
+RODS = """[system]
+dimension = 1
+N = 3000
+phi = 0.3
+seed = 4
+[collision]
+model = "inelastic"
+r0 = 0.5
+delta = 1e-3
+[run]
+t_end = 30
 [output]
 dumps_per_decade = 3
 """
@@ -103,33 +113,7 @@ def assert_the_tool_per_dump(path, name, args, kernel, tmp_path, block=True):
             assert "# " + py.attrs["comment"] + "\n" in out
 
 
-RODS_L = 3000.0
-
-
-def _one_component(group, name, values):
-    """Replaces dataset `name` of `group` by `values`, chunked and resizable as the writer makes it."""
-    del group[name]
-    group.create_dataset(name, data=values, maxshape=(None,) + values.shape[1:], chunks=True)
-
 
 @pytest.fixture(scope="module")
-def rods(gas, tmp_path_factory):
-    """A 1D file (the simulator writes none yet): the gas run's file with box/dimension = 1 and its particles
-    replaced by as many rods on a ring of length RODS_L, uniform positions and Gaussian velocities of rms
-    1/(1 + t) (seed 5), every vector (F, N, 1) and the box edges (F, 1, 1)."""
-    path = tmp_path_factory.mktemp("rods") / "rods.h5"
-    shutil.copy(gas, path)
-    rng = np.random.default_rng(5)
-    with h5py.File(path, "r+") as f:
-        p = f["particles/all"]
-        frames, n = p["position/value"].shape[:2]
-        t = p["position/time"][:]
-        p["box"].attrs["dimension"] = np.int64(1)
-        f["parameters"].attrs["L"] = RODS_L
-        _one_component(p["box/edges"], "value", np.full((frames, 1, 1), RODS_L))
-        _one_component(p["position"], "value", rng.uniform(0, RODS_L, (frames, n, 1)))
-        _one_component(p["velocity"], "value", rng.normal(size=(frames, n, 1)) / (1 + t)[:, None, None])
-        _one_component(p["image"], "value", np.zeros((frames, n, 1), dtype=np.int32))
-        momentum = f["observables/total_momentum"]
-        _one_component(momentum, "value", momentum["value"][:, :1])
-    return path
+def rods(tmp_path_factory):
+    return simulate_cli(tmp_path_factory.mktemp("rods"), "rods", RODS)
