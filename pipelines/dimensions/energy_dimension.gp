@@ -5,7 +5,7 @@
 load plots . "/common.gp"
 eval term(1300, 700)
 set output out
-set title "Energy per particle E(t) in d = 1, 2, 3: the inelastic gas (r_0 = 0.1) and ballistic aggregation\n" . \
+set title "Energy per particle E(t) in d = 1, 2, 3: the inelastic gas and ballistic aggregation\n" . \
   "thick lines: the power-law fit A t^{-{/Symbol q}} over its window"
 set logscale xy
 set format x "10^{%L}"; set format y "10^{%L}"

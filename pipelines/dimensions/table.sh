@@ -5,16 +5,19 @@
 # (pipelines/exponents.sh): TSV columns
 #   quantity  d  measured  error  reference  reference_error  source  deviation  regime
 # deviation = (measured - reference) / sqrt(error^2 + reference_error^2).
-# theta's error is the larger of its fit's error and the window's drift: half
-# the difference between the fits over the window's two halves (in log t),
+# theta's error is the largest of its fit's error, the standard error of the
+# seeds' thetas (each run fitted alone), and the window's drift: half the
+# difference between the fits over the window's two halves (in log t),
 # which a power law that has not settled shows and a fit's error does not.
-# TABLES holds energy_MODEL_dD.tsv, fit_MODEL_dD.tsv and velocity_MODEL_dD.tsv.
+# TABLES holds energy_MODEL_dD.tsv (with seed_energy_MODEL_dD_sS.tsv, each
+# seed's), fit_MODEL_dD.tsv and velocity_MODEL_dD.tsv.
 set -e
 tables=$1 bin=$2 dims=$3
 here=$(dirname "$0")
 value() { sh "$here/../tsv-value.sh" "$@"; }
 calc() { awk "BEGIN { printf \"%.6g\", $1 }"; }
 short() { awk "BEGIN { printf \"%.3g\", $1 }"; }
+when() { awk "BEGIN { printf \"%.6g\", $1 }"; }  # a time as the windows give it (10000, not 1e+04)
 # Column $2 of table $1 in the row whose t is nearest $3.
 at_time() {
   awk -F '\t' -v want="$2" -v t="$3" '
@@ -24,14 +27,17 @@ at_time() {
     END { print v }' "$1"
 }
 theta_in() { "$bin/coolgas-fit" --power --t-window "$2:$3" "$1" 2>/dev/null | sh "$here/../tsv-value.sh" /dev/stdin theta; }
-# theta and its error: the fit's, or the drift between the window's halves.
+# theta and its error: the largest of the fit's error, the standard error
+# of the seeds' own thetas over the same window, and the window's drift.
 theta_row() {  # model d
   fit=$tables/fit_$1_d$2.tsv energy=$tables/energy_$1_d$2.tsv
   theta=$(value "$fit" theta) err=$(value "$fit" theta_err)
   lo=$(value "$fit" t_min) hi=$(value "$fit" t_max)
   mid=$(calc "sqrt($lo * $hi)")
   drift=$(calc "($(theta_in "$energy" "$lo" "$mid") - $(theta_in "$energy" "$mid" "$hi")) / 2")
-  err=$(awk "BEGIN { a = $drift; if (a < 0) a = -a; printf \"%.6g\", (a > $err ? a : $err) }")
+  seeds=$(for f in "$tables/seed_energy_$1_d$2"_s*.tsv; do theta_in "$f" "$lo" "$hi"; done | awk '
+    { s += $1; q += $1 * $1; n++ } END { if (n > 1) printf "%.6g", sqrt((q - s * s / n) / (n - 1) / n); else print 0 }')
+  err=$(awk "BEGIN { a = $drift; if (a < 0) a = -a; e = $err; if (a > e) e = a; if ($seeds > e) e = $seeds; printf \"%.6g\", e }")
   echo "$theta $err $lo $hi"
 }
 # The time of the steepest decay, the largest local slope -d ln E / d ln t:
@@ -132,7 +138,7 @@ done
 for d in $dims; do
   tg=$(value "$tables/fit_gas_d$d.tsv" t_max) tb=$(value "$tables/fit_ba_d$d.tsv" t_max)
   vg=$tables/velocity_gas_d$d.tsv vb=$tables/velocity_ba_d$d.tsv
-  row "kappa, gas at t = $(short "$tg") against BA at t = $(short "$tb")" "$d" \
+  row "kappa, gas at t = $(when "$tg") against BA at t = $(when "$tb")" "$d" \
     "$(at_time "$vg" kappa "$tg")" "$(at_time "$vg" kappa_err "$tg")" \
     "$(at_time "$vb" kappa "$tb")" "$(at_time "$vb" kappa_err "$tb")" \
     "the sticky-gas picture: the gas's velocities are BA's (Ben-Naim et al. 1999)" \
@@ -141,6 +147,6 @@ done
 # In 2D, Nie et al. find the late velocities Gaussian.
 case " $dims " in *" 2 "*)
   tg=$(value "$tables/fit_gas_d2.tsv" t_max) vg=$tables/velocity_gas_d2.tsv
-  row "kappa, gas at t = $(short "$tg")" 2 "$(at_time "$vg" kappa "$tg")" "$(at_time "$vg" kappa_err "$tg")" 0 0 \
+  row "kappa, gas at t = $(when "$tg")" 2 "$(at_time "$vg" kappa "$tg")" "$(at_time "$vg" kappa_err "$tg")" 0 0 \
     "Gaussian late (Nie, Ben-Naim, Chen 2002)" "$(regime gas 2 "$(value "$tables/fit_gas_d2.tsv" t_min)" "$tg")" ;;
 esac

@@ -22,5 +22,5 @@ burgers(d) = d < 2 ? 1 / 0 : d / 2.0
 plot 2 * x / (x + 2) with lines ls 1 dt 1 title "ballistic aggregation's mean field, 2d/(d+2)", \
      [2:3.4] burgers(x) with lines ls 2 dt 1 title "Burgers' equation, d/2 (2 {/Symbol \243} d {/Symbol \243} 4)", \
      "+" using (1):(2.0 / 3) every ::0::0 with points ls 2 pt 6 ps 2.5 lw 2 title "Burgers' equation in d = 1: 2/3", \
-     rows("theta, inelastic gas", -0.06) using 1:2:3 with yerrorbars ls 3 dt 1 pt 7 ps 1.5 title "inelastic gas (r_0 = 0.1, {/Symbol d} = 10^{-4})", \
+     rows("theta, inelastic gas", -0.06) using 1:2:3 with yerrorbars ls 3 dt 1 pt 7 ps 1.5 title "inelastic gas (r_0 = 0.1 in 2D and 3D, 0.9 in 1D)", \
      rows("theta, ballistic aggregation", 0.06) using 1:2:3 with yerrorbars ls 4 dt 1 pt 5 ps 1.5 title "ballistic aggregation"

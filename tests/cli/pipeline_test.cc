@@ -78,8 +78,8 @@ std::map<std::string, Judged> read_exponents(const std::string& path) {
 // The dimensions the dimension study runs in the test, and its table's rows:
 // theta of the gas (twice in 3D, once per theory) and of BA in each d, the
 // gas's kappa against BA's in each d, and 2D's against the Gaussian.
-constexpr const char* kStudiedDimensions = "2 3";
-constexpr std::size_t kStudiedRows = 3 + 2 + 2 + 1;
+constexpr const char* kStudiedDimensions = "1 2 3";
+constexpr std::size_t kStudiedRows = 4 + 3 + 3 + 1;
 
 const char* kFigures[] = {"fig1_energy_size.png", "fig2_energy_parameters.png", "fig3_clusters.png",
                           "fig4_largest_mass.png", "fig5_velocity.png", "smoluchowski.png",
