@@ -18,7 +18,7 @@ void CellOccupancy::build(const ClusterGrid& grid, std::span<const double> posit
 }
 
 void CellOccupancy::sort_by_plane(std::span<const double> pos) {
-  const int n = grid_.per_side(), planes = grid_.planes();
+  const int planes = grid_.planes();
   const std::uint32_t pitch = 64 * words_, plane_bits = pitch * std::uint32_t(grid_.rows_per_plane());
   const std::size_t np = pos.size() / 3;
   bit_.resize(np);

@@ -66,8 +66,11 @@ TEST(RodStructureFactor, LatticeHasBraggPeaksOnlyAtItsReciprocalLattice) {
   FrameStructure fs(128, 1);
   double off_peak = 0;
   for (const Shell& s : fs.spectrum(L, p, {})) {
-    if (s.index % 8 != 0) off_peak = std::max(off_peak, std::abs(s.S));
-    else if (s.index <= 16) EXPECT_NEAR(s.S / 8, 1, 0.1) << "shell " << s.index;
+    if (s.index % 8 != 0) {
+      off_peak = std::max(off_peak, std::abs(s.S));
+    } else if (s.index <= 16) {
+      EXPECT_NEAR(s.S / 8, 1, 0.1) << "shell " << s.index;
+    }
   }
   EXPECT_LT(off_peak, 0.02);
   const auto exact = direct_structure_factor(L, p, {}, 16, 1);
