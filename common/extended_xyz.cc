@@ -1,6 +1,7 @@
 #include "common/extended_xyz.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -159,16 +160,33 @@ Columns columns_of(const Parser& p, const std::string& properties) {
   return c;
 }
 
-double cubic_lattice(const Parser& p, const std::string& lattice) {
+// The dimension pbc= names: "T T T" (or none) spheres, "T T F" disks in the
+// xy plane, "T F F" rods on the x axis (as ASE and OVITO write them).
+int periodic_dimension(const Parser& p, const std::optional<std::string>& pbc) {
+  if (!pbc) return 3;
+  const auto w = Parser::words(*pbc);
+  const auto t = [&](std::size_t i) { return w[i] == "T" || w[i] == "True"; };
+  const auto f = [&](std::size_t i) { return w[i] == "F" || w[i] == "False"; };
+  if (w.size() == 3 && t(0) && t(1) && t(2)) return 3;
+  if (w.size() == 3 && t(0) && t(1) && f(2)) return 2;
+  if (w.size() == 3 && t(0) && f(1) && f(2)) return 1;
+  p.fail("pbc=\"" + shown(*pbc) + "\"; coolgas boxes are periodic in x, y and z (pbc=\"T T T\"), in x and y "
+         "(\"T T F\", disks) or in x (\"T F F\", rods)");
+}
+
+// The side of the periodic box: the Lattice's first `dimension` edges, equal;
+// the others (not periodic) are only checked to be orthogonal.
+double periodic_side(const Parser& p, const std::string& lattice, int dimension) {
   const auto w = Parser::words(lattice);
   if (w.size() != 9) p.fail("Lattice=\"" + shown(lattice) + "\" does not hold 9 numbers");
   double m[9];
   for (int i = 0; i < 9; ++i) m[i] = p.number(w[i], "a Lattice entry");
   for (int i : {1, 2, 3, 5, 6, 7})
     if (m[i] != 0) p.fail("Lattice=\"" + shown(lattice) + "\" is not an orthogonal box; coolgas boxes are cubes");
-  if (m[0] != m[4] || m[0] != m[8])
-    p.fail("Lattice=\"" + shown(lattice) + "\" is not a cube (edges " + format_number(m[0]) + ", " + format_number(m[4]) +
-           ", " + format_number(m[8]) + ")");
+  const bool equal = dimension == 1 || (m[0] == m[4] && (dimension == 2 || m[0] == m[8]));
+  if (!equal)
+    p.fail("Lattice=\"" + shown(lattice) + "\" is not a " + (dimension == 3 ? "cube" : "square") + " (edges " +
+           format_number(m[0]) + ", " + format_number(m[4]) + (dimension == 3 ? ", " + format_number(m[8]) : "") + ")");
   return m[0];
 }
 
@@ -207,6 +225,26 @@ void check_count(const Parser& p, long count_line, std::size_t n) {
                               "; this machine has " + bytes_text(memory));
 }
 
+// Disks and rods have no extent across the box's periodic directions: each
+// particle's other coordinates must be those of the first (`plane`: one
+// plane, one line), and are set to 0; its other velocity components must be 0.
+void flatten(const Parser& p, XyzFrame& f, std::size_t i, std::array<double, 3>& plane) {
+  static const char* const kAxis[] = {"x", "y", "z"};
+  const char* pbc = f.dimension == 2 ? "pbc=\"T T F\"" : "pbc=\"T F F\"";
+  for (int d = f.dimension; d < 3; ++d) {
+    double& x = f.position[3 * i + d];
+    if (i == 0) plane[d] = x;
+    if (x != plane[d])
+      p.fail("particle " + std::to_string(i) + " has " + kAxis[d] + " = " + format_number(x) + ", particle 0 " +
+             format_number(plane[d]) + "; in " + pbc + " the particles lie in one " +
+             (f.dimension == 2 ? "plane" : "line"));
+    x = 0;
+    if (!f.velocity.empty() && f.velocity[3 * i + d] != 0)
+      p.fail("particle " + std::to_string(i) + " has v" + kAxis[d] + " = " + format_number(f.velocity[3 * i + d]) +
+             "; in " + pbc + " it must be 0");
+  }
+}
+
 // One frame after its count line; nothing when the input has ended.
 XyzFrame read_frame(Parser& p, std::size_t n) {
   const long count_line = p.line_no;
@@ -217,12 +255,8 @@ XyzFrame read_frame(Parser& p, std::size_t n) {
   XyzFrame f;
   const auto lattice = get("Lattice");
   if (!lattice) p.fail("no Lattice=\"L 0 0 0 L 0 0 0 L\" (the box) on the comment line: not an extended XYZ file with a box");
-  f.L = cubic_lattice(p, *lattice);
-  if (const auto pbc = get("pbc")) {
-    const auto w = Parser::words(*pbc);
-    const bool periodic = w.size() == 3 && std::all_of(w.begin(), w.end(), [](const std::string& x) { return x == "T" || x == "True"; });
-    if (!periodic) p.fail("pbc=\"" + shown(*pbc) + "\"; coolgas boxes are periodic in x, y and z (pbc=\"T T T\")");
-  }
+  f.dimension = periodic_dimension(p, get("pbc"));
+  f.L = periodic_side(p, *lattice, f.dimension);
   if (const auto t = get("Time")) f.time = frame_time(p, *t);
   if (const auto t = get("T0")) f.T0 = temperature(p, *t);
   const Columns c = columns_of(p, get("Properties").value_or("species:S:1:pos:R:3"));
@@ -231,6 +265,7 @@ XyzFrame read_frame(Parser& p, std::size_t n) {
   if (c.velo >= 0) f.velocity.resize(3 * n);
   if (c.radius >= 0 || c.diameter >= 0) f.diameter.resize(n);
   if (c.mass >= 0) f.mass.resize(n);
+  std::array<double, 3> plane{};
   for (std::size_t i = 0; i < n; ++i) {
     if (!p.next(line)) p.fail("the file ends after " + std::to_string(i) + " of " + std::to_string(n) + " particles");
     const auto w = Parser::words(line);
@@ -241,6 +276,7 @@ XyzFrame read_frame(Parser& p, std::size_t n) {
     if (c.radius >= 0) f.diameter[i] = 2 * p.number(w[c.radius], "a radius");
     if (c.diameter >= 0) f.diameter[i] = p.number(w[c.diameter], "a diameter");
     if (c.mass >= 0) f.mass[i] = p.number(w[c.mass], "a mass");
+    flatten(p, f, i, plane);
   }
   return f;
 }

@@ -28,7 +28,7 @@ namespace coolgas {
 
 struct XyzFrame {
   double L = 0;                // cubic periodic box side (Lattice = L times the unit matrix)
-  int dimension = 3;           // written: 2 for disks, 1 for rods (see above); read: always 3
+  int dimension = 3;           // 2 for disks, 1 for rods (see above); read from pbc=
   std::optional<double> time;  // Time=
   std::optional<std::int64_t> step;
   std::optional<double> T0;    // T0= (coolgas-convert writes the source's time unit); read only
@@ -44,7 +44,9 @@ void write_xyz_frame(std::ostream& out, const XyzFrame& frame, const Provenance&
 // Reads the frame nearest `time` by its Time= (the earlier on a tie), or the
 // last frame. Throws InputError naming `source`, the line and what was wrong:
 // not an extended XYZ file (no count, no Lattice), a Lattice that is not a
-// cube, pbc not "T T T", missing positions, a short or unreadable line,
+// cube (a square for pbc="T T F"), pbc not "T T T", "T T F" or "T F F", a
+// disk or rod off the first one's plane or line or moving across it (whose
+// coordinates there are then set to 0), missing positions, a short or unreadable line,
 // `time` asked for but a frame without Time=, a Time= that is not finite and
 // >= 0, a T0= that is not finite and > 0, a count line claiming more particles
 // than the rest of the stream (when it can seek) or this machine's memory can

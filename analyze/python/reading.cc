@@ -103,8 +103,9 @@ py::dict h5md_frame_dict(H5mdFrame f) {
   d["times"] = to_numpy(std::move(f.times), {py::ssize_t(f.times.size())});
   d["L"] = f.L;
   d["length_unit"] = f.length_unit;
-  d["positions"] = to_numpy(std::move(f.position), {n, 3});
-  if (!f.velocity.empty()) d["velocities"] = to_numpy(std::move(f.velocity), {n, 3});
+  d["dimension"] = f.dimension;  // rows of d numbers, as the file holds them
+  d["positions"] = rows_of(std::move(f.position), std::size_t(n), f.dimension);
+  if (!f.velocity.empty()) d["velocities"] = rows_of(std::move(f.velocity), std::size_t(n), f.dimension);
   if (!f.mass.empty()) d["masses"] = to_numpy(std::move(f.mass), {n});
   if (!f.diameter.empty()) d["diameters"] = to_numpy(std::move(f.diameter), {n});
   if (!f.id.empty()) d["ids"] = to_numpy(std::move(f.id), {n});

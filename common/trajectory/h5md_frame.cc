@@ -6,6 +6,7 @@
 #include "common/hdf5_file.h"
 #include "common/trajectory/compact_slots.h"
 #include "common/trajectory/layout.h"
+#include "common/trajectory/widen_rows.h"
 #include "common/tsv.h"
 
 namespace coolgas {
@@ -91,14 +92,22 @@ struct Reader {
     return v;
   }
 
-  // The side of a cubic periodic box: edges a vector (3) or a matrix (3 x 3),
-  // fixed or one row per frame.
-  double box_side(const std::string& group, std::size_t index, std::size_t frames) const {
+  // The box's dimension: its `dimension` attribute (H5MD requires one), else 3.
+  int box_dimension(const std::string& group) const {
     const std::string box = layout::in_group(layout::kBox, group);
     if (!h5::exists(file, box)) fail("missing " + box);
     h5::Handle g = h5::open_group(file, box);
-    if (h5::has_attr(g.id(), "dimension") && h5::read_attr_int(g.id(), "dimension") != 3)
-      fail(box + " has dimension " + std::to_string(h5::read_attr_int(g.id(), "dimension")) + "; coolgas is 3D");
+    if (!h5::has_attr(g.id(), "dimension")) return 3;
+    const int d = h5::read_attr_int(g.id(), "dimension");
+    if (d < 1 || d > 3) fail(box + " has dimension " + std::to_string(d) + "; coolgas reads 1 (rods), 2 (disks) or 3");
+    return d;
+  }
+
+  // The side of a periodic box of equal edges in `d` dimensions: edges a
+  // vector (d) or a matrix (d x d), fixed or one row per frame.
+  double box_side(const std::string& group, std::size_t index, std::size_t frames, int d) const {
+    const std::string box = layout::in_group(layout::kBox, group);
+    h5::Handle g = h5::open_group(file, box);
     if (h5::has_attr(g.id(), "boundary"))
       for (const std::string& b : h5::read_attr_strings(g.id(), "boundary"))
         if (b != "periodic") fail(box + " has boundary '" + shown(b) + "'; coolgas boxes are periodic");
@@ -113,18 +122,27 @@ struct Reader {
       row = dims[0] == 1 ? 0 : index;
       dims.erase(dims.begin());
     }
-    const bool vector = dims == std::vector<hsize_t>{3}, matrix = dims == std::vector<hsize_t>{3, 3};
-    if (!vector && !matrix) fail(value + " has the wrong shape (expected 3 or 3 x 3)");
-    std::vector<double> e(dims.size() == 1 ? 3 : 9);
+    const hsize_t k = hsize_t(d);
+    const bool vector = dims == std::vector<hsize_t>{k}, matrix = dims == std::vector<hsize_t>{k, k};
+    if (!vector && !matrix)
+      fail(value + " has the wrong shape (expected " + std::to_string(d) + " or " + std::to_string(d) + " x " +
+           std::to_string(d) + " for a box of dimension " + std::to_string(d) + ")");
+    std::vector<double> e(matrix ? k * k : k);
     h5::read_rows(ds.id(), h5::Type::kFloat64, varies ? row : 0, varies ? 1 : dims[0], e.data());
-    const double a = e[0], b = vector ? e[1] : e[4], c = vector ? e[2] : e[8];
+    std::vector<double> side(k);
+    for (hsize_t i = 0; i < k; ++i) side[i] = matrix ? e[i * k + i] : e[i];
     if (matrix)
-      for (int i : {1, 2, 3, 5, 6, 7})
-        if (e[i] != 0) fail(value + " is not an orthogonal box (off-diagonal " + format_number(e[i]) + ")");
-    if (a != b || a != c)
-      fail("the box is not cubic (edges " + format_number(a) + ", " + format_number(b) + ", " + format_number(c) +
-           "); coolgas boxes are cubes");
-    return a;
+      for (hsize_t i = 0; i < k * k; ++i)
+        if (i % (k + 1) != 0 && e[i] != 0)
+          fail(value + " is not an orthogonal box (off-diagonal " + format_number(e[i]) + ")");
+    for (double s : side)
+      if (s != side[0]) {
+        std::string list;
+        for (double x : side) list += (list.empty() ? "" : ", ") + format_number(x);
+        fail("the box is not " + std::string(d == 3 ? "cubic" : "square") + " (edges " + list + "); coolgas boxes are " +
+             (d == 3 ? "cubes" : "squares"));
+      }
+    return side[0];
   }
 
   std::string unit_of(const std::string& element) const {
@@ -168,15 +186,19 @@ H5mdFrame read_frame(const std::string& path, std::optional<double> time, std::o
   if (!times.empty()) fr.time = times[fr.index];
   fr.times = times;
   std::size_t n = 0;
-  fr.position = in.per_particle(position, fr.index, fr.frames, 3, &n);
+  fr.dimension = in.box_dimension(fr.group);
+  const std::size_t d = std::size_t(fr.dimension);
+  fr.position = in.per_particle(position, fr.index, fr.frames, d, &n);
+  widen_to_three(fr.position, n, d);
   if (n == 0) in.fail(value + " holds no particles");
   fr.length_unit = in.unit_of(position);
-  fr.L = in.box_side(fr.group, fr.index, fr.frames);
+  fr.L = in.box_side(fr.group, fr.index, fr.frames, fr.dimension);
   auto optional = [&](std::string_view element, std::size_t k) {
     const std::string e = layout::in_group(element, fr.group);
     return h5::exists(f.id(), e) ? in.per_particle(e, fr.index, fr.frames, k, &n) : std::vector<double>{};
   };
-  fr.velocity = optional(layout::kVelocity, 3);
+  fr.velocity = optional(layout::kVelocity, d);
+  widen_to_three(fr.velocity, fr.velocity.size() / d, d);
   fr.mass = optional(layout::kMass, 1);
   fr.diameter = optional(layout::kDiameter, 1);
   std::vector<double> id = optional(layout::kId, 1);

@@ -23,8 +23,10 @@ struct H5mdFrame {
   std::size_t index = 0;       // the frame read
   std::optional<double> time;  // its time, when position has a time
   std::vector<double> times;   // every frame's time (empty when position has none)
-  double L = 0;                // the box side (cubic boxes only)
-  std::vector<double> position, velocity;  // 3 per particle; velocity empty when absent
+  int dimension = 3;           // box/dimension: 3, or 2 (disks) or 1 (rods)
+  double L = 0;                // the box side (cubic or square boxes only)
+  std::vector<double> position, velocity;  // 3 per particle (z = 0 for disks, y = z = 0 for rods);
+                                           // velocity empty when absent
   std::vector<double> mass, diameter;      // 1 per particle; empty when absent
   std::vector<double> id;                  // 1 per particle present; empty when absent
   std::string length_unit;                 // position's `unit` attribute, "" when absent
@@ -34,8 +36,9 @@ struct H5mdFrame {
 // group is "all" when there is one, else the only group. Particles whose id
 // is -1 (H5MD's mark of an absent particle) are left out. Throws InputError
 // naming the file and what is wrong: not HDF5, no /h5md or /particles,
-// several groups, a missing or misshapen element, a box that is not cubic,
-// not periodic or not three-dimensional.
+// several groups, a missing or misshapen element (rows of d numbers in a
+// box of dimension d), a box whose edges differ, not periodic, or of a
+// dimension other than 1, 2 or 3.
 H5mdFrame read_h5md_frame(const std::string& path, std::optional<double> time);
 // Frame `index` (0-based; InputError naming the frames there are when it is beyond them).
 H5mdFrame read_h5md_frame_at(const std::string& path, std::size_t index);

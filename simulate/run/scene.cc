@@ -97,8 +97,9 @@ const std::vector<SceneKey>& scene_keys() {
        .toml = [](const Scene& s) { return toml_float(s.equilibrate); }},
       {.key = "system.from", .type = KeyType::kString, .need = KeyNeed::kRequired,
        .help = "the file to start from, relative to the working directory: a coolgas trajectory, an H5MD 1.1 file "
-               "of another program (particles/<group>/position, box/edges) or an extended XYZ file; velocities "
-               "from the file, else drawn at T0 with system.seed",
+               "of another program (particles/<group>/position, box/edges) or an extended XYZ file, of "
+               "system.dimension (disks: a square box, rods: a ring); velocities from the file, else drawn at T0 "
+               "with system.seed",
        .inits = {I::kFile},
        .set = [](Scene& s, const SceneValue& v) { s.from = std::get<std::string>(v); },
        .toml = [](const Scene& s) { return toml_string(s.from); }},
@@ -561,15 +562,13 @@ void set_size(Scene& s, const KeyValues& kv, const std::set<std::string>& overri
 void check_rods(const Scene& s) {
   if (s.init == InitialPositions::kFcc)
     throw InputError("system.init = \"fcc\" is a 3D lattice; in system.dimension = 1 use \"random\" (any phi < 1)");
-  if (s.init == InitialPositions::kFile)
-    throw InputError("system.init = \"file\" is not supported yet in system.dimension = 1; use \"random\"");
   if (!(s.phi < 1))
     out_of_range("system.phi", s.phi,
                  "unit rods (system.dimension = 1) cover the ring of length L = " + format_number(s.L) +
                      " at N = L; need N < L");
 }
 
-// What 2D does not offer yet, each refused with its own line.
+// What 2D does not offer, each refused with its own line.
 void check_dimension(const Scene& s) {
   if (s.dimension == 1) return check_rods(s);
   if (s.phi > kMaxFccPhi)  // the key allows up to 1, for rods
@@ -577,8 +576,6 @@ void check_dimension(const Scene& s) {
   if (s.dimension == 3) return;
   if (s.init == InitialPositions::kFcc)
     throw InputError("system.init = \"fcc\" is a 3D lattice; in system.dimension = 2 use \"random\" (phi <= 0.45)");
-  if (s.init == InitialPositions::kFile)
-    throw InputError("system.init = \"file\" is not supported yet in system.dimension = 2; use \"random\"");
   if (s.init == InitialPositions::kRandom && s.phi > kMaxRandomPhi2D)
     out_of_range("system.phi", s.phi,
                  "random sequential addition of disks (system.dimension = 2) reaches phi <= 0.45 here");

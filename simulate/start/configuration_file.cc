@@ -23,17 +23,17 @@ bool is_coolgas_trajectory(const std::string& path) {
 }
 
 FileConfiguration from_coolgas(const std::string& path, std::optional<double> time) {
-  const Trajectory t(path, kPosition | kVelocity | kDiameter);
+  const Trajectory t(path, kPosition | kVelocity | kDiameter | kAnyDimension);
   Frame f;
   t.read(time ? t.nearest_dump(*time) : t.dump_times().size() - 1, f);
-  FileConfiguration c{"coolgas trajectory", f.L, f.time, std::move(f.position), std::move(f.velocity),
+  FileConfiguration c{"coolgas trajectory", t.dimension(), f.L, f.time, std::move(f.position), std::move(f.velocity),
                       std::move(f.diameter), std::move(f.mass), read_run_info(path).params.T0, ""};
   return c;
 }
 
 FileConfiguration from_h5md(const std::string& path, std::optional<double> time) {
   H5mdFrame f = read_h5md_frame(path, time);
-  return {"H5MD 1.1 (group '" + f.group + "')", f.L, f.time, std::move(f.position), std::move(f.velocity),
+  return {"H5MD 1.1 (group '" + f.group + "')", f.dimension, f.L, f.time, std::move(f.position), std::move(f.velocity),
           std::move(f.diameter), std::move(f.mass), std::nullopt, f.length_unit};
 }
 
@@ -41,7 +41,7 @@ FileConfiguration from_xyz(const std::string& path, std::optional<double> time) 
   std::ifstream in(path);
   if (!in) throw InputError("cannot read '" + path + "'");
   XyzFrame f = read_xyz_frame(in, path, time);
-  return {"extended XYZ", f.L, f.time, std::move(f.position), std::move(f.velocity), std::move(f.diameter),
+  return {"extended XYZ", f.dimension, f.L, f.time, std::move(f.position), std::move(f.velocity), std::move(f.diameter),
           std::move(f.mass), f.T0, ""};
 }
 

@@ -11,9 +11,11 @@ namespace coolgas {
 
 struct FileConfiguration {
   std::string format;          // "coolgas trajectory", "H5MD 1.1 (group 'g')", "extended XYZ"
-  double L = 0;                // cubic periodic box side
+  int dimension = 3;           // 3, or 2 for disks, 1 for rods
+  double L = 0;                // periodic box side (a cube, square or ring)
   std::optional<double> time;  // the frame's time, when the file has one
-  std::vector<double> position, velocity;  // 3 per particle; velocity empty when absent
+  std::vector<double> position, velocity;  // 3 per particle (z = 0 in 2D, y = z = 0 in 1D);
+                                           // velocity empty when absent
   std::vector<double> diameter, mass;      // 1 per particle; empty when absent
   std::optional<double> T0;    // the time unit's temperature: a coolgas trajectory's /parameters/T0,
                                // an extended XYZ comment's T0= (coolgas-convert copies it there)

@@ -6,6 +6,7 @@
 #include "common/error.h"
 #include "common/random.h"
 #include "common/tsv.h"
+#include "simulate/run/box_geometry.h"
 #include "simulate/start/configuration_check.h"
 #include "simulate/start/configuration_file.h"
 #include "simulate/start/enskog.h"
@@ -15,7 +16,13 @@ namespace coolgas {
 
 namespace {
 
-// Diameters and masses as the model allows them: unit spheres for the gas
+// "spheres", "disks" or "rods".
+const char* particles_word(int dimension) { return dimension == 3 ? "spheres" : dimension == 2 ? "disks" : "rods"; }
+
+// d^D: the mass of an aggregate of diameter d (a unit particle has mass 1).
+double mass_of(double d, int dimension) { return dimension == 3 ? d * d * d : dimension == 2 ? d * d : d; }
+
+// Diameters and masses as the model allows them: unit particles for the gas
 // models, the file's aggregates for ballistic aggregation.
 void set_spheres(FileConfiguration& c, CollisionModel model, const std::string& source) {
   const std::size_t n = c.position.size() / 3;
@@ -30,7 +37,8 @@ void set_spheres(FileConfiguration& c, CollisionModel model, const std::string& 
       throw InputError(source + ": particle " + std::to_string(i) + " has diameter " +
                        format_number(c.diameter.empty() ? 1 : c.diameter[i]) + " and mass " +
                        format_number(c.mass.empty() ? 1 : c.mass[i]) +
-                       "; only collision.model = \"aggregation\" has spheres other than diameter 1, mass 1");
+                       "; only collision.model = \"aggregation\" has " + particles_word(c.dimension) +
+                       " other than diameter 1, mass 1");
   }
   if (!aggregates) {
     c.diameter.clear();
@@ -39,18 +47,31 @@ void set_spheres(FileConfiguration& c, CollisionModel model, const std::string& 
   }
   if (c.diameter.empty()) {
     c.diameter.resize(n, 1.0);
-    for (std::size_t i = 0; i < c.mass.size(); ++i) c.diameter[i] = std::cbrt(c.mass[i]);
+    for (std::size_t i = 0; i < c.mass.size(); ++i)
+      c.diameter[i] = c.dimension == 3 ? std::cbrt(c.mass[i]) : c.dimension == 2 ? std::sqrt(c.mass[i]) : c.mass[i];
   }
   if (c.mass.empty()) {
     c.mass.resize(n);
-    for (std::size_t i = 0; i < n; ++i) c.mass[i] = c.diameter[i] * c.diameter[i] * c.diameter[i];
+    for (std::size_t i = 0; i < n; ++i) c.mass[i] = mass_of(c.diameter[i], c.dimension);
   }
 }
 
+// The fraction of the box the particles cover (box_geometry.h's, with each
+// particle's own diameter).
 double volume_fraction(const FileConfiguration& c, std::size_t n) {
   double v = 0;
-  for (std::size_t i = 0; i < n; ++i) v += c.diameter.empty() ? 1.0 : std::pow(c.diameter[i], 3);
-  return v * M_PI / (6 * c.L * c.L * c.L);
+  for (std::size_t i = 0; i < n; ++i) v += c.diameter.empty() ? 1.0 : std::pow(c.diameter[i], c.dimension);
+  return covered_fraction(v, c.L, c.dimension);
+}
+
+// The file's dimension must be the scene's: a frame of disks is not a start for spheres.
+void check_dimension(const Scene& s, const FileConfiguration& c, const std::string& source) {
+  if (c.dimension == s.dimension) return;
+  static const char* const kBoxes[] = {"", "a ring (pbc=\"T F F\" or box/dimension 1)",
+                                       "a square box (pbc=\"T T F\" or box/dimension 2)", "a cubic box"};
+  throw InputError(source + " holds " + particles_word(c.dimension) + " in " + kBoxes[c.dimension] +
+                   " but system.dimension = " + std::to_string(s.dimension) + "; set system.dimension = " +
+                   std::to_string(c.dimension));
 }
 
 // N, L, phi of the file, checked against those the scene gives.
@@ -63,8 +84,8 @@ void take_size(Scene& s, std::size_t n, double L, double phi, const std::string&
     throw InputError("system.L = " + format_number(s.L) + " but the box of " + source + " has side " +
                      format_number(L) + leave);
   if (s.phi > 0 && std::fabs(s.phi - phi) > 1e-9 * phi)
-    throw InputError("system.phi = " + format_number(s.phi) + " but the spheres of " + source + " fill " +
-                     format_number(phi) + " of the box" + leave);
+    throw InputError("system.phi = " + format_number(s.phi) + " but the " + particles_word(s.dimension) + " of " +
+                     source + " cover " + format_number(phi) + " of the box" + leave);
   s.N = std::int64_t(n);
   s.L = L;
   s.phi = phi;
@@ -77,11 +98,11 @@ std::string three_digits(double x) {
   return s.str();
 }
 
-// Σ m v² / (3 N): the temperature per velocity component.
-double temperature(const Particles& p, const std::vector<double>& mass) {
+// Σ m v² / (D N): the temperature per velocity component.
+double temperature(const Particles& p, const std::vector<double>& mass, int dimension) {
   double sum = 0;
   for (std::size_t i = 0; i < p.size(); ++i) sum += (mass.empty() ? 1.0 : mass[i]) * dot(p.v[i], p.v[i]);
-  return sum / (3.0 * double(p.size()));
+  return sum / (double(dimension) * double(p.size()));
 }
 
 // Positions as they are; velocities the file's, else drawn at T0 (masses set first).
@@ -94,7 +115,7 @@ Particles particles_of(const FileConfiguration& c, const Scene& s) {
   for (std::size_t i = 0; i < n; ++i) p.r[i] = vec(c.position, i);
   if (c.velocity.empty()) {
     Random rng(std::uint64_t(s.seed));
-    draw_velocities(p, s.T0, rng, c.mass.empty() ? nullptr : &c.mass);
+    draw_velocities(p, s.T0, rng, c.mass.empty() ? nullptr : &c.mass, s.dimension);
   } else {
     for (std::size_t i = 0; i < n; ++i) p.v[i] = vec(c.velocity, i);
   }
@@ -105,7 +126,7 @@ Particles particles_of(const FileConfiguration& c, const Scene& s) {
 // velocities from the file (0.404 T0); T0 = 0.0441 (the file's)".
 std::string notice(const Scene& s, const FileConfiguration& c, const FileStart& start, bool drawn, bool own_T0) {
   const std::vector<double> unit;
-  const double T = temperature(start.particles, start.aggregates ? start.aggregates->mass : unit);
+  const double T = temperature(start.particles, start.aggregates ? start.aggregates->mass : unit, s.dimension);
   const std::string velocities = drawn ? "drawn at T0" : "from the file (" + three_digits(T / s.T0) + " T0)";
   const std::string T0 = own_T0 ? "system.T0" : c.T0 ? "the file's" : "Enskog, as for a fresh start";
   return "starting from '" + s.from + "' (" + c.format + (c.time ? ", t = " + format_number(*c.time) : "") +
@@ -120,6 +141,7 @@ FileStart start_from_file(Scene& s) {
   const std::string source = "system.from = '" + s.from + "'";
   FileConfiguration c = read_configuration(s.from, s.from_time);
   const std::size_t n = c.position.size() / 3;
+  check_dimension(s, c, source);
   set_spheres(c, s.model, source);
   take_size(s, n, c.L, volume_fraction(c, n), source);
   // The frame's time becomes the run's start, which every --resume checks:
@@ -129,7 +151,7 @@ FileStart start_from_file(Scene& s) {
                      " is not a time; times are finite and >= 0");
   if (c.time) s.from_time = c.time;
   const bool own_T0 = s.T0 > 0;
-  if (!own_T0) s.T0 = c.T0 ? *c.T0 : unit_time_temperature(double(n) / (c.L * c.L * c.L), s.phi);
+  if (!own_T0) s.T0 = c.T0 ? *c.T0 : unit_time_temperature(double(n) / box_volume(c.L, s.dimension), s.phi, s.dimension);
   check_scene_size(s);
 
   FileStart start;
@@ -140,7 +162,7 @@ FileStart start_from_file(Scene& s) {
     for (std::size_t i = 0; i < n; ++i) a.id[i] = std::int32_t(i);
     start.aggregates = std::move(a);
   }
-  check_configuration(start.particles, start.aggregates ? &*start.aggregates : nullptr, source);
+  check_configuration(start.particles, start.aggregates ? &*start.aggregates : nullptr, source, s.dimension);
 
   start.notice = notice(s, c, start, drawn, own_T0);
   return start;

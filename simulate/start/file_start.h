@@ -4,10 +4,11 @@
 //
 // - N and L come from the file (ballistic aggregates: one particle per
 //   aggregate present, ids renumbered 0..N-1 in the file's order), phi is
-//   the volume fraction of its spheres; any of N, L, phi the scene gives
-//   must agree with the file.
+//   the fraction of the box its particles cover; any of N, L, phi the scene
+//   gives must agree with the file. Its dimension (a 2D box of disks, a
+//   ring of rods) must be system.dimension.
 // - Diameters other than 1 only for collision.model = "aggregation"
-//   (masses: the file's, else d^3; diameters: the file's, else m^(1/3)).
+//   (masses: the file's, else d^D; diameters: the file's, else m^(1/D)).
 // - Velocities from the file, else Maxwellian at T0 (zero total momentum,
 //   temperature exactly T0) from system.seed.
 // - T0, which sets the time unit: system.T0 if given, else a coolgas

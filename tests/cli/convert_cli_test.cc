@@ -1,7 +1,8 @@
 // coolgas-convert and starts from a file, driven as a user would: a frame
 // exported as extended XYZ starts a new run whose t = 0 positions and
 // velocities are the source's bit for bit; ASE reads the XYZ and MDAnalysis
-// the LAMMPS dump as h5py reads the trajectory (tests/cli/read_exports.py);
+// the LAMMPS dump as h5py reads the trajectory (tests/cli/read_exports.py),
+// for disks and rods too (each starts a run in its own dimension only);
 // an H5MD file written by MDAnalysis starts a run; bad input is one line.
 // A 1D file (rods) is exported as XYZ only.
 #include <gtest/gtest.h>
@@ -45,10 +46,11 @@ model = "aggregation"
 t_end = 20
 )";
 
-// A scene starting from `from` with the same collision model as `source_scene`.
-std::string file_scene(const std::string& dir, const std::string& from, const std::string& model) {
-  return test::write_file(dir, "start.toml", "[system]\ninit = \"file\"\nfrom = \"" + from +
-                                                 "\"\n[collision]\nmodel = \"" + model + "\"\n[run]\nt_end = 1\n");
+// A scene starting from `from` with the same collision model and dimension as its source.
+std::string file_scene(const std::string& dir, const std::string& from, const std::string& model, int dimension = 3) {
+  return test::write_file(dir, "start.toml", "[system]\ninit = \"file\"\nfrom = \"" + from + "\"\ndimension = " +
+                                                 std::to_string(dimension) + "\n[collision]\nmodel = \"" + model +
+                                                 "\"\n[run]\nt_end = 1\n");
 }
 
 std::string py(const std::string& args) {
@@ -80,20 +82,26 @@ struct Case {
   const char* model;
   bool aggregates;
   const char* set = "";  // --set options of the run
+  int dimension = 3;     // the one they set
 };
 
+// Spheres, disks (the gas) and rods (aggregates) alike.
 TEST(ConvertCli, ARunStartedFromAnExportedFrameBeginsWithItsStateBitForBit) {
-  for (const Case& c : {Case{kGas, "inelastic", false}, Case{kAggregates, "aggregation", true}}) {
-    const std::string dir = test::scratch_dir(std::string("convert_round_trip_") + c.model);
+  for (const Case& c : {Case{kGas, "inelastic", false}, Case{kAggregates, "aggregation", true},
+                        Case{kGas, "inelastic", false, " --set system.dimension=2 --set system.phi=0.3", 2},
+                        Case{kAggregates, "aggregation", true, " --set system.dimension=1", 1}}) {
+    const std::string dir =
+        test::scratch_dir(std::string("convert_round_trip_") + c.model + std::to_string(c.dimension));
     const std::string run = dir + "/run.h5", xyz = dir + "/last.xyz", again = dir + "/again.h5";
-    ASSERT_EQ(run_command(simulate(test::write_file(dir, "run.toml", c.scene) + " -o " + run)).exit_code, 0);
+    ASSERT_EQ(run_command(simulate(test::write_file(dir, "run.toml", c.scene) + c.set + " -o " + run)).exit_code, 0);
     const auto e = run_command(bin("coolgas-convert") + " --last " + run + " > " + xyz);
     ASSERT_EQ(e.exit_code, 0) << e.err;
+    const auto d = std::size_t(c.dimension);
     for (const std::string& from : {xyz, run}) {  // the exported frame, and the trajectory itself
-      const auto s = run_command(simulate(file_scene(dir, from, c.model) + " --force -o " + again));
+      const auto s = run_command(simulate(file_scene(dir, from, c.model, c.dimension) + " --force -o " + again));
       ASSERT_EQ(s.exit_code, 0) << s.err;
       for (const char* el : {"particles/all/position", "particles/all/velocity"})
-        expect_bit_identical(row_of(run, el, -1, 3, c.aggregates), row_of(again, el, 0, 3, false), from + " " + el);
+        expect_bit_identical(row_of(run, el, -1, d, c.aggregates), row_of(again, el, 0, d, false), from + " " + el);
       if (c.aggregates)
         for (const char* el : {"particles/all/diameter", "particles/all/mass"})
           expect_bit_identical(row_of(run, el, -1, 1, true), row_of(again, el, 0, 1, false), from + " " + el);
@@ -104,6 +112,10 @@ TEST(ConvertCli, ARunStartedFromAnExportedFrameBeginsWithItsStateBitForBit) {
     std::filesystem::remove(xyz);
     const auto r = run_command(simulate("--resume " + again + " --set run.t_end=2"));
     EXPECT_EQ(r.exit_code, 0) << r.err;
+    // A frame is a start for its own dimension only.
+    const int other = c.dimension == 3 ? 2 : 3;
+    test::expect_simulate_refused(file_scene(dir, run, c.model, other) + " --force -o " + dir + "/other.h5",
+                                  "set system.dimension = " + std::to_string(c.dimension), dir + "/other.h5");
   }
 }
 

@@ -132,11 +132,6 @@ TEST(RodsCliScene, WhatRodsRefuseIsOneLineEach) {
   const std::string scene = test::write_file(dir, "gas.toml", test::kCoolingGasScene), out = dir + "/out.h5";
   const std::string base = scene + " -o " + out + " --set system.dimension=1 ";
   test::expect_simulate_refused(base + "--set system.init=fcc", "3D lattice", out);
-  const std::string from_file = test::write_file(
-      dir, "from_file.toml",
-      "[system]\ndimension = 1\ninit = \"file\"\nfrom = \"start.h5\"\n[collision]\nmodel = \"elastic\"\n"
-      "[run]\nt_end = 1\n");
-  test::expect_simulate_refused(from_file + " -o " + out, "not supported yet in system.dimension = 1", out);
   test::expect_simulate_refused(base + "--set system.phi=1", "system.phi = 1 is out of range", out);
   test::expect_simulate_refused(base + "--set system.phi=1.5", "system.phi = 1.5 is out of range", out);
   // N and L give phi = N / L: at N = L the rods would cover the ring.

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "common/error.h"
 #include "common/hdf5_file.h"
 #include "tests/support/run_command.h"
@@ -53,6 +55,58 @@ TEST(H5mdFrame, AScalarTimeStepAndATimeDependentBoxAreRead) {
   EXPECT_EQ(near.L, 11.0);
   ASSERT_EQ(near.position.size(), 12u);
   for (int i = 0; i < 12; ++i) EXPECT_EQ(near.position[i], 0.5 * i + 1);
+}
+
+// A box of `dimension` d (edges: a d-vector of side 7) with two particles
+// of d-component positions 1 + i d + k and velocities -(1 + i d + k).
+std::string write_box_file(const std::string& name, std::int64_t d, const std::vector<double>& edges) {
+  std::string path = test::scratch_dir(name) + "/flat.h5";
+  h5::Handle f = h5::open_file(path, h5::Mode::kCreateTruncate);
+  for (const char* g : {"h5md", "particles/all/position", "particles/all/velocity", "particles/all/box"})
+    h5::create_group(f.id(), g);
+  h5::Handle box = h5::open_group(f.id(), "particles/all/box");
+  h5::write_attr(box.id(), "dimension", d);
+  h5::Handle e = h5::create_series(f.id(), "particles/all/box/edges", h5::Type::kFloat64, {}, 4);
+  for (double x : edges) h5::append_row(e.id(), h5::Type::kFloat64, &x);
+  const hsize_t k = hsize_t(std::max<std::int64_t>(d, 1));
+  for (const char* el : {"position", "velocity"}) {
+    h5::Handle v = h5::create_series(f.id(), std::string("particles/all/") + el + "/value", h5::Type::kFloat64,
+                                     {2, k}, 4);
+    std::vector<double> row(2 * k);
+    for (std::size_t j = 0; j < row.size(); ++j) row[j] = (el[0] == 'p' ? 1.0 : -1.0) * double(1 + j);
+    h5::append_row(v.id(), h5::Type::kFloat64, row.data());
+  }
+  return path;
+}
+
+std::string error_of(const std::string& path) {
+  try {
+    read_h5md_frame(path, std::nullopt);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Disks and rods (box/dimension 2 or 1, rows of 2 or 1 numbers) are read as
+// 3-vectors with the missing components 0; a box whose dimension is not 1, 2
+// or 3, or whose edges are not of that dimension or not equal, is refused.
+TEST(H5mdFrame, TwoAndOneDimensionalBoxesAreRead) {
+  const H5mdFrame disks = read_h5md_frame(write_box_file("h5md_frame_2d", 2, {7, 7}), std::nullopt);
+  EXPECT_EQ(disks.dimension, 2);
+  EXPECT_EQ(disks.L, 7.0);
+  EXPECT_EQ(disks.position, (std::vector<double>{1, 2, 0, 3, 4, 0}));
+  EXPECT_EQ(disks.velocity, (std::vector<double>{-1, -2, 0, -3, -4, 0}));
+  const H5mdFrame rods = read_h5md_frame(write_box_file("h5md_frame_1d", 1, {7}), std::nullopt);
+  EXPECT_EQ(rods.dimension, 1);
+  EXPECT_EQ(rods.position, (std::vector<double>{1, 0, 0, 2, 0, 0}));
+  EXPECT_EQ(rods.velocity, (std::vector<double>{-1, 0, 0, -2, 0, 0}));
+  EXPECT_NE(error_of(write_box_file("h5md_frame_4d", 4, {7, 7, 7, 7})).find("has dimension 4; coolgas reads 1 (rods), 2 (disks) or 3"),
+            std::string::npos);
+  EXPECT_NE(error_of(write_box_file("h5md_frame_2d_edges3", 2, {7, 7, 7})).find("wrong shape (expected 2 or 2 x 2 for a box of dimension 2)"),
+            std::string::npos);
+  EXPECT_NE(error_of(write_box_file("h5md_frame_2d_rect", 2, {7, 8})).find("the box is not square (edges 7, 8)"),
+            std::string::npos);
 }
 
 TEST(H5mdFrame, FilesThatAreNotH5mdAreRefusedNamingWhatIsMissing) {
