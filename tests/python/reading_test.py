@@ -167,6 +167,23 @@ def test_another_programs_h5md_file(tmp_path):
     np.testing.assert_array_equal(run.observables["energy"].to_numpy(), [3.0, 2.0, 1.0])
 
 
+def test_another_programs_2d_h5md_file(tmp_path):
+    """Disks from another program (box/dimension 2, rows of two numbers):
+    (n, 2) arrays exactly as written, and run.dimension 2."""
+    path = tmp_path / "disks.h5"
+    pos = np.random.default_rng(2).uniform(0, 8, (4, 2))
+    with h5py.File(path, "w") as f:
+        f.create_group("h5md").attrs["version"] = [1, 1]
+        box = f.create_group("particles/all/box")
+        box.attrs["dimension"] = 2
+        box.attrs["boundary"] = ["periodic"] * 2
+        box.create_dataset("edges", data=[8.0, 8.0])
+        f.create_dataset("particles/all/position", data=pos)
+    run = coolgas.open(path)
+    assert run.dimension == 2 and run.parameters["L"] == 8
+    np.testing.assert_array_equal(run.frames[0].positions, pos)
+
+
 def test_a_file_being_written_reads_its_complete_dumps(tmp_path):
     """coolgas.open while coolgas-simulate writes: every frame read is
     complete and equal to the same dump of the finished file."""
