@@ -1,7 +1,7 @@
 # The two commands of the README, for a fresh Debian 12 machine (as root):
 #   make demo   install what is missing, build, run a short demo simulation
 #   make test   install what is missing, build, run the whole test suite (ctest)
-# Other targets: build, bench, install, clean. BUILD=dir picks the build folder,
+# Other targets: build, lint, bench, install, clean. BUILD=dir picks the build folder,
 # NATIVE=1 tunes for this CPU (opt-in; the default build is portable).
 
 BUILD ?= build
@@ -12,9 +12,9 @@ CMAKE_FLAGS = -DCMAKE_BUILD_TYPE=Release $(if $(filter 1,$(NATIVE)),-DCOOLGAS_NA
 # Debian 12 packages. What building and running need (toolchain, libraries,
 # gnuplot for the pipelines' figures, help2man for the manual pages, the
 # Python package's build and its numpy/pandas), which
-# `make demo` installs; and what only the tests need (Python readers that
-# check real clients open our files, pytest, clang-tidy for the lint test),
-# which `make test` adds. Both
+# `make demo` installs; what only the tests need (Python readers that
+# check real clients open our files, pytest, the notebook's runner), which
+# `make test` adds; and clang-tidy, which only `make lint` adds. All
 # without recommended packages.
 BUILD_PACKAGES := cmake make g++ pkg-config git \
   libhdf5-dev hdf5-tools libfftw3-dev libgsl-dev libeigen3-dev \
@@ -22,11 +22,12 @@ BUILD_PACKAGES := cmake make g++ pkg-config git \
   gnuplot-nox help2man man-db \
   python3 python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pandas
 TEST_PACKAGES := python3-h5py python3-mdanalysis python3-ase python3-matplotlib python3-pytest \
-  jupyter-nbconvert python3-ipykernel clang-tidy-15
+  jupyter-nbconvert python3-ipykernel
+LINT_PACKAGES := clang-tidy-15
 
 PREFIX ?= /usr/local
 
-.PHONY: deps test-deps configure build demo test bench install clean
+.PHONY: deps test-deps configure build demo test lint bench install clean
 
 # $(call install_missing,PACKAGES): installs those not yet installed (as root).
 define install_missing
@@ -62,6 +63,13 @@ build: configure
 
 test: test-deps build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+# clang-tidy with the checks of .clang-tidy on every source (tests/lint/clang_tidy.sh;
+# its compile commands in $(BUILD)-lint). Not part of `make test`: the whole tree
+# takes tens of CPU-minutes, so run it before committing C++.
+lint: deps
+	$(call install_missing,$(LINT_PACKAGES))
+	sh tests/lint/clang_tidy.sh $(BUILD)-lint $(JOBS)
 
 demo: build
 	$(MAKE) -C pipelines/demo -j $(JOBS) BIN=$(abspath $(BUILD))/bin OUT=$(abspath out/demo)
