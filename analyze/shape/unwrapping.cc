@@ -1,5 +1,7 @@
 #include "analyze/shape/unwrapping.h"
 
+#include <algorithm>
+
 namespace coolgas {
 
 void ClusterUnwrapping::build(const ClusterGrid& grid, const ClusterLabeller& labeller,
@@ -27,7 +29,9 @@ void ClusterUnwrapping::walk(const ClusterGrid& grid, std::size_t cluster) {
     const std::int64_t c = queue_[head];
     const CellImage here = image_[c];
     const std::int64_t at[3] = {c % n, (c / n) % n, c / (n * n)};
-    for (int axis = 0; axis < grid.dimension(); ++axis)  // 2D: one plane, no z neighbours; 1D: one row
+    // 2D: one plane, no z neighbours; 1D: one row. (The min states the
+    // bound of `at` for the static analyzer: grid dimensions are 1 to 3.)
+    for (int axis = 0; axis < std::min(grid.dimension(), 3); ++axis)
       for (int step : {-1, 1}) {
         std::int64_t to[3] = {at[0], at[1], at[2]};
         int shift = 0;  // image change on crossing the face at 0 or n

@@ -20,6 +20,8 @@ template <class... F>
 struct Overloaded : F... {
   using F::operator()...;
 };
+template <class... F>
+Overloaded(F...) -> Overloaded<F...>;  // clang before 17 deduces no aggregate's arguments
 
 std::string text_of(std::int64_t v) { return std::to_string(v); }
 std::string text_of(double v) { return format_number(v); }

@@ -41,7 +41,7 @@ class EnergyFitCollapseCli : public ::testing::Test {
     return *dir + "/L" + std::to_string(int(L)) + "_s" + std::to_string(seed) + ".h5";
   }
   static std::string file(const std::string& name, const std::string& text) {
-    const std::string p = *dir + "/" + name;
+    std::string p = *dir + "/" + name;
     std::ofstream(p) << text;
     return p;
   }

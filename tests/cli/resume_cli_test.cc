@@ -208,7 +208,7 @@ TEST(ResumeCliDamage, ACheckpointThatIsNotARegularFileOrClaimsTooMuchIsRefused) 
 
 // A finished short run to damage; its checkpoint is removed, so --resume reads the trajectory itself.
 std::string short_run(const std::string& dir) {
-  const std::string out = dir + "/run.h5";
+  std::string out = dir + "/run.h5";
   EXPECT_EQ(test::run_command(test::simulate(write_scene(dir) + " -o " + out + " --set run.t_end=10")).exit_code, 0);
   std::filesystem::remove(out + ".checkpoint");
   return out;
@@ -316,7 +316,7 @@ TEST(ResumeCliDamage, AHugeStoredParticleCountIsRefusedBeforeAnyAllocation) {
   const std::string dir = test::scratch_dir("resume_huge_n");
   const std::string run = short_run(dir);
   const auto with_n = [&](std::int64_t n) {
-    const std::string copy = dir + "/N" + std::to_string(n) + ".h5";
+    std::string copy = dir + "/N" + std::to_string(n) + ".h5";
     std::filesystem::copy_file(run, copy);
     h5::Handle f = h5::open_file(copy, h5::Mode::kReadWrite);
     h5::write_attr(h5::open_group(f.id(), "/parameters").id(), "N", n);

@@ -61,7 +61,7 @@ class StructureCli : public ::testing::Test {
     test::write_gas_file(*dir + "/run.h5");
     test::write_gas_file(*dir + "/nan.h5", true);
     write_aggregates(*dir + "/ba.h5");
-    std::ofstream(*dir + "/empty.h5");
+    std::ofstream(*dir + "/empty.h5").close();  // an empty file
     std::ofstream(*dir + "/table.tsv") << "# t\tE\n0\t1\n";
     h5::Handle f = h5::open_file(*dir + "/no_particles.h5", h5::Mode::kCreateTruncate);
     h5::create_group(f.id(), "h5md");

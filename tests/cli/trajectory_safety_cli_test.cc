@@ -30,7 +30,7 @@ constexpr const char* kScene =
     "[run]\nt_end = 300\n[output]\ndumps_per_decade = 10\n";
 
 std::string write_scene(const std::string& dir) {
-  const std::string path = dir + "/scene.toml";
+  std::string path = dir + "/scene.toml";
   run_command("printf '%s' '" + std::string(kScene) + "' > " + path);
   return path;
 }

@@ -14,7 +14,7 @@ namespace coolgas::test {
 
 // Writes `text` to dir/name and returns the path.
 inline std::string write_file(const std::string& dir, const std::string& name, const std::string& text) {
-  const std::string path = dir + "/" + name;
+  std::string path = dir + "/" + name;
   std::ofstream(path) << text;
   return path;
 }

@@ -44,7 +44,7 @@ void write_good_file(const std::string& path) {
 }
 
 std::string fresh_file(const std::string& name) {
-  const std::string path = test::scratch_dir("schema_" + name) + "/run.h5";
+  std::string path = test::scratch_dir("schema_" + name) + "/run.h5";
   write_good_file(path);
   return path;
 }

@@ -55,7 +55,7 @@ TEST(RodSnapshot, TheScriptDrawsRowsOfSegmentsOnAFixedColourScale) {
 }
 
 std::string write_rod_run(const std::string& dir) {
-  const std::string path = dir + "/rods.h5";
+  std::string path = dir + "/rods.h5";
   RunParameters p;
   p.N = 4;
   p.L = 12;
