@@ -182,7 +182,7 @@ double periodic_side(const Parser& p, const std::string& lattice, int dimension)
   double m[9];
   for (int i = 0; i < 9; ++i) m[i] = p.number(w[i], "a Lattice entry");
   for (int i : {1, 2, 3, 5, 6, 7})
-    if (m[i] != 0) p.fail("Lattice=\"" + shown(lattice) + "\" is not an orthogonal box; coolgas boxes are cubes");
+    if (m[i] != 0) p.fail("Lattice=\"" + shown(lattice) + "\" is not an orthogonal box; coolgas boxes are cubes, squares or rings");
   const bool equal = dimension == 1 || (m[0] == m[4] && (dimension == 2 || m[0] == m[8]));
   if (!equal)
     p.fail("Lattice=\"" + shown(lattice) + "\" is not a " + (dimension == 3 ? "cube" : "square") + " (edges " +

@@ -27,7 +27,7 @@
 namespace coolgas {
 
 struct XyzFrame {
-  double L = 0;                // cubic periodic box side (Lattice = L times the unit matrix)
+  double L = 0;                // periodic box side: a cube, a square (2D) or a ring (1D)
   int dimension = 3;           // 2 for disks, 1 for rods (see above); read from pbc=
   std::optional<double> time;  // Time=
   std::optional<std::int64_t> step;

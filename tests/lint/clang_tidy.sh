@@ -11,10 +11,15 @@ dir=${1:?usage: clang_tidy.sh LINT_DIR [JOBS]}
 jobs=${2:-$(nproc)}
 tidy=$(command -v clang-tidy-15 || true)
 if [ -z "$tidy" ]; then
-  echo "clang_tidy.sh: clang-tidy-15 is not installed (make test-deps installs it)" >&2
+  echo "clang_tidy.sh: clang-tidy-15 is not installed (make lint installs it)" >&2
   exit 2
 fi
 src=$(cd "$(dirname "$0")/../.." && pwd)
+# Reconfiguring a build folder would turn its unity builds off behind its owner's back.
+if grep -q '^COOLGAS_UNITY:BOOL=ON' "$dir/CMakeCache.txt" 2>/dev/null; then
+  echo "clang_tidy.sh: $dir is a unity build folder; give a folder of its own (make lint uses BUILD-lint)" >&2
+  exit 2
+fi
 cmake -S "$src" -B "$dir" -DCMAKE_BUILD_TYPE=Release -DCOOLGAS_NATIVE=OFF -DCOOLGAS_UNITY=OFF >/dev/null
 "$tidy" --verify-config >/dev/null
 # Only the project's own sources: generated files (common/version.cc, made
