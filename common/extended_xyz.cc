@@ -11,11 +11,17 @@
 #include <sstream>
 
 #include "common/error.h"
+#include "common/geometry.h"
 #include "common/memory.h"
 
 namespace coolgas {
 
 namespace {
+
+// pbc="T T T", "T T F" (disks in the plane z = 0) or "T F F" (rods on the x axis).
+std::string pbc_of(Geometry g) {
+  return std::string("pbc=\"") + (g.spans(0) ? "T" : "F") + (g.spans(1) ? " T" : " F") + (g.spans(2) ? " T" : " F") + "\"";
+}
 
 std::string quoted(std::string v) {
   for (char& c : v)
@@ -37,12 +43,12 @@ void write_xyz_frame(std::ostream& out, const XyzFrame& f, const Provenance& pro
   const bool spheres = !f.diameter.empty();
   // Disks: the plane z = 0, a unit third lattice vector, not periodic; rods:
   // the x axis, unit second and third vectors, periodic along x only.
-  const std::string b = f.dimension >= 2 ? L : "1", c = f.dimension == 3 ? L : "1";
-  const char* pbc = f.dimension == 3 ? " pbc=\"T T T\"" : f.dimension == 2 ? " pbc=\"T T F\"" : " pbc=\"T F F\"";
+  const Geometry g(f.dimension);
+  const std::string b = g.spans(1) ? L : "1", c = g.spans(2) ? L : "1";
   out << n << "\nLattice=\"" << L << " 0 0 0 " << b << " 0 0 0 " << c
       << "\" Properties=species:S:1:pos:R:3" << (f.velocity.empty() ? "" : ":velo:R:3") << (f.id.empty() ? "" : ":id:I:1")
       << (spheres ? ":radius:R:1" : "") << (f.mass.empty() ? "" : ":mass:R:1")
-      << pbc;
+      << " " << pbc_of(g);
   if (f.time) out << " Time=" << format_number(*f.time);
   if (f.step) out << " Step=" << *f.step;
   for (const auto& [k, v] : provenance) out << " " << xyz_key(k) << "=" << quoted(v);
@@ -183,10 +189,14 @@ double periodic_side(const Parser& p, const std::string& lattice, int dimension)
   for (int i = 0; i < 9; ++i) m[i] = p.number(w[i], "a Lattice entry");
   for (int i : {1, 2, 3, 5, 6, 7})
     if (m[i] != 0) p.fail("Lattice=\"" + shown(lattice) + "\" is not an orthogonal box; coolgas boxes are cubes, squares or rings");
-  const bool equal = dimension == 1 || (m[0] == m[4] && (dimension == 2 || m[0] == m[8]));
+  std::string edges;
+  bool equal = true;
+  for (int k = 0; k < dimension; ++k) {
+    edges += (k ? ", " : "") + format_number(m[4 * k]);
+    equal = equal && m[4 * k] == m[0];
+  }
   if (!equal)
-    p.fail("Lattice=\"" + shown(lattice) + "\" is not a " + (dimension == 3 ? "cube" : "square") + " (edges " +
-           format_number(m[0]) + ", " + format_number(m[4]) + (dimension == 3 ? ", " + format_number(m[8]) : "") + ")");
+    p.fail("Lattice=\"" + shown(lattice) + "\" is not a " + Geometry(dimension).box() + " (edges " + edges + ")");
   return m[0];
 }
 
@@ -230,14 +240,15 @@ void check_count(const Parser& p, long count_line, std::size_t n) {
 // plane, one line), and are set to 0; its other velocity components must be 0.
 void flatten(const Parser& p, XyzFrame& f, std::size_t i, std::array<double, 3>& plane) {
   static const char* const kAxis[] = {"x", "y", "z"};
-  const char* pbc = f.dimension == 2 ? "pbc=\"T T F\"" : "pbc=\"T F F\"";
+  const Geometry g(f.dimension);
+  const std::string pbc = pbc_of(g);
   for (int d = f.dimension; d < 3; ++d) {
     double& x = f.position[3 * i + d];
     if (i == 0) plane[d] = x;
     if (x != plane[d])
       p.fail("particle " + std::to_string(i) + " has " + kAxis[d] + " = " + format_number(x) + ", particle 0 " +
              format_number(plane[d]) + "; in " + pbc + " the particles lie in one " +
-             (f.dimension == 2 ? "plane" : "line"));
+             g.space());
     x = 0;
     if (!f.velocity.empty() && f.velocity[3 * i + d] != 0)
       p.fail("particle " + std::to_string(i) + " has v" + kAxis[d] + " = " + format_number(f.velocity[3 * i + d]) +

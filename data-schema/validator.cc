@@ -279,7 +279,7 @@ class Checker {
     Frame frame;
     for (std::size_t dump = 0; dump < trajectory.dump_times().size(); ++dump) {
       trajectory.read(dump, frame);
-      const Finding f = check_no_overlaps(frame.position, frame.diameter, frame.id, frame.L, d_);
+      const Finding f = check_no_overlaps(frame.position, frame.diameter, frame.id, frame.L, Geometry(d_));
       if (f) problem(path_of(layout::kPosition, "value"), "dump " + std::to_string(dump) + " (t = " +
                                                                number_text(frame.time) + "): " + *f);
     }

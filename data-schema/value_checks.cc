@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "common/close_pairs.h"
 #include "common/hdf5_file.h"
 #include "data-schema/hdf5_inspect.h"
 
@@ -122,6 +123,18 @@ Finding check_inside_box(hid_t dataset, double L, std::string_view L_source, con
   return bad.result();
 }
 
+namespace {
+
+// "(L)", "diag(L, L)" or "diag(L, L, L)": the box matrix of a d-dimensional box.
+std::string diagonal_text(int d) {
+  if (d == 1) return "(L)";
+  std::string s = "diag(L";
+  for (int k = 1; k < d; ++k) s += ", L";
+  return s + ")";
+}
+
+}  // namespace
+
 Finding check_box_matrix(hid_t dataset, double L, std::string_view L_source, const Scan& scan) {
   const auto dims = h5::shape(dataset);
   Offences bad;
@@ -133,7 +146,7 @@ Finding check_box_matrix(hid_t dataset, double L, std::string_view L_source, con
       if (v[i] != want)
         bad.add([&] {
           return at(dims, first + i, v[i]) + " but the box is " +
-                 (d == 1 ? "(L)" : (d == 2 ? "diag(L, L)" : "diag(L, L, L)")) +
+                 diagonal_text(int(d)) +
                  " with L = " + number_text(L) + " from " + std::string(L_source);
         });
     }
@@ -204,53 +217,10 @@ void test_pair(const Spheres& s, std::size_t i, std::size_t j, Offences& found) 
   });
 }
 
-// Cells along an axis: n on the box's axes, 1 on those a lower dimension
-// leaves at 0 (the plane of disks, the line of rods).
-int cells_along(int axis, int n, int dimension) { return axis < dimension ? n : 1; }
-
-// The small spheres (no wider than `width`, at least 3 cells of it per
-// side) sorted into cells, each pair in neighbouring cells tested once. In
-// 1D the cells are as many as the rods (not the cube root of them), so the
-// work stays O(n).
-void small_pairs(const Spheres& s, const std::vector<std::size_t>& small, double width, Offences& found,
-                 int dimension) {
-  const double per_side = dimension == 1 ? double(small.size()) : std::ceil(std::cbrt(double(small.size())));
-  const int n = int(std::min({std::floor(s.L / width), per_side + 1, 1e9}));
-  if (n < 3) {  // too few cells for distinct neighbours: every pair
-    for (std::size_t a = 0; a < small.size(); ++a)
-      for (std::size_t b = a + 1; b < small.size(); ++b) test_pair(s, small[a], small[b], found);
-    return;
-  }
-  const double w = s.L / n;
-  const int ny = cells_along(1, n, dimension), nz = cells_along(2, n, dimension);
-  auto coord = [&](std::size_t i, int k) {
-    return std::clamp(int(std::floor(s.r[3 * i + std::size_t(k)] / w)), 0, cells_along(k, n, dimension) - 1);
-  };
-  auto cell_of = [&](int x, int y, int z) {
-    return (std::size_t(z) * std::size_t(ny) + std::size_t(y)) * std::size_t(n) + std::size_t(x);
-  };
-  std::vector<std::size_t> start(std::size_t(n) * std::size_t(ny) * std::size_t(nz) + 1, 0), order(small.size());
-  for (std::size_t i : small) ++start[cell_of(coord(i, 0), coord(i, 1), coord(i, 2)) + 1];
-  for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
-  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-  for (std::size_t i : small) order[fill[cell_of(coord(i, 0), coord(i, 1), coord(i, 2))]++] = i;
-  for (std::size_t a = 0; a < order.size(); ++a) {
-    const std::size_t i = order[a];
-    const int cx = coord(i, 0), cy = coord(i, 1), cz = coord(i, 2);
-    for (int o = 0; o < 27; ++o) {
-      const int oy = o / 3 % 3 - 1, oz = o / 9 - 1;
-      if ((ny == 1 && oy != 0) || (nz == 1 && oz != 0)) continue;  // one cell across: visited once
-      const std::size_t c = cell_of((cx + o % 3 - 1 + n) % n, (cy + oy + ny) % ny, (cz + oz + nz) % nz);
-      for (std::size_t b = start[c]; b < start[c + 1]; ++b)
-        if (order[b] > i) test_pair(s, i, order[b], found);
-    }
-  }
-}
-
 }  // namespace
 
 Finding check_no_overlaps(std::span<const double> position, std::span<const double> diameter,
-                          std::span<const std::int32_t> id, double L, int dimension) {
+                          std::span<const std::int32_t> id, double L, Geometry g) {
   const Spheres s{position, diameter, id, L};
   std::vector<std::size_t> small, large;
   double width = 0;
@@ -263,7 +233,10 @@ Finding check_no_overlaps(std::span<const double> position, std::span<const doub
     }
   }
   Offences found;
-  if (!small.empty()) small_pairs(s, small, std::max(width, L * 1e-6), found, dimension);
+  if (!small.empty())
+    for_each_close_pair(
+        small, [&](std::size_t i) { return &position[3 * i]; }, std::max(width, L * 1e-6), L, g,
+        [&](std::size_t i, std::size_t j) { test_pair(s, i, j, found); });
   // Spheres wider than L/4 fill a sixtieth of the box each: there are few.
   for (std::size_t a = 0; a < large.size(); ++a)
     for (std::size_t j = 0; j < s.size(); ++j)

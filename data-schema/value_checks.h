@@ -13,6 +13,8 @@
 #include <span>
 #include <string>
 
+#include "common/geometry.h"
+
 namespace coolgas::schema {
 
 // How a check reads a dataset: at most `block_values` numbers at a time (at
@@ -46,11 +48,11 @@ Finding check_equal(hid_t dataset, hid_t reference, std::string_view reference_p
 // contact to within round-off). `position` holds 3 numbers per sphere;
 // `diameter` one per sphere (empty: unit spheres); `id` names them in the
 // message (empty: their index). Found with a cell list as wide as the
-// widest sphere no wider than L/4 (each checked against its 27 cells), the
-// few wider ones against every sphere: O(n) for a gas. `dimension` 2 or 1:
-// disks (z = 0) or rods (y = z = 0), the cells then one layer or one row.
+// widest sphere no wider than L/4 (common/close_pairs.h), the few wider
+// ones against every sphere: O(n) for a gas. In 2D and 1D, disks (z = 0)
+// or rods (y = z = 0), the cells then one layer or one row.
 inline constexpr double kOverlapTolerance = 1e-9;
 Finding check_no_overlaps(std::span<const double> position, std::span<const double> diameter,
-                          std::span<const std::int32_t> id, double L, int dimension = 3);
+                          std::span<const std::int32_t> id, double L, Geometry g);
 
 }  // namespace coolgas::schema

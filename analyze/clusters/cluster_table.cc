@@ -20,18 +20,18 @@ const std::vector<std::string>& cluster_columns(ClusterTable table) {
 }
 
 void fill_cluster_masses(MassHistogram& hist, ClusterLabeller& labeller, double L, std::span<const double> positions,
-                         std::span<const double> aggregate_mass, int dimension) {
+                         std::span<const double> aggregate_mass, Geometry g) {
   hist.clear();
   if (!aggregate_mass.empty()) {
     for (double m : aggregate_mass) hist.add(std::llround(m));
     return;
   }
-  labeller.label(ClusterGrid(L, dimension), positions);
+  labeller.label(ClusterGrid(L, g), positions);
   labeller.for_each_mass([&](std::int64_t m) { hist.add(m); });
 }
 
-TableBlock cluster_block(ClusterTable table, double t, double L, const MassHistogram& h, int dimension) {
-  const double volume = dimension == 3 ? L * L * L : dimension == 2 ? L * L : L;
+TableBlock cluster_block(ClusterTable table, double t, double L, const MassHistogram& h, Geometry g) {
+  const double volume = g.box_measure(L);
   const ClusterMoments& mo = h.moments();
   TableBlock b;
   if (table == ClusterTable::kSeries) {

@@ -9,6 +9,7 @@
 #include "analyze/clusters/mass_distribution.h"
 #include "analyze/labelling/cluster_labeller.h"
 #include "common/tsv.h"
+#include "common/geometry.h"
 
 namespace coolgas {
 
@@ -22,16 +23,16 @@ const std::vector<std::string>& cluster_columns(ClusterTable table);
 
 // The masses of one frame into `hist` (cleared first): the paper's clusters
 // of the particles at `positions` (x0 y0 z0 x1 ...; z = 0 in 2D) in a box of
-// side L in `dimension` 3 (unit cubes), 2 (unit squares) or 1 (unit
+// side L in the geometry g: unit cubes, unit squares or unit
 // segments of the ring; y = z = 0), or,
 // when `aggregate_mass` is not empty (ballistic aggregation), the
 // aggregates themselves, each of its mass rounded to whole particles.
 void fill_cluster_masses(MassHistogram& hist, ClusterLabeller& labeller, double L, std::span<const double> positions,
-                         std::span<const double> aggregate_mass, int dimension = 3);
+                         std::span<const double> aggregate_mass, Geometry g);
 
-// The rows of one dump at time t in a box of side L in `dimension` d: the
+// The rows of one dump at time t in a box of side L in the geometry g: the
 // densities are per L^d. The series has one row and no comment (it is not a
 // block).
-TableBlock cluster_block(ClusterTable table, double t, double L, const MassHistogram& hist, int dimension = 3);
+TableBlock cluster_block(ClusterTable table, double t, double L, const MassHistogram& hist, Geometry g);
 
 }  // namespace coolgas

@@ -21,15 +21,13 @@ void run_clusters(const ClustersOptions& opt, std::ostream& final_out) {
   if (opt.bins_per_decade < 1)
     throw InputError("--bins-per-decade must be >= 1, got " + std::to_string(opt.bins_per_decade));
   Trajectory traj(opt.input, kPosition | kAnyDimension);
-  const int d = traj.dimension();
+  const Geometry g = traj.geometry();
   Provenance prov = traj.provenance();
   prov.emplace_back("bins_per_decade", std::to_string(opt.bins_per_decade));
   if (traj.aggregates())  // ballistic aggregation: the clusters are the aggregates themselves
     prov.emplace_back("clusters", "the aggregates of the file (ballistic aggregation); mass in particles");
   else
-    prov.emplace_back("cells", d == 3   ? "floor(L)^3 cubic cells of side L/floor(L); face neighbours; periodic"
-                               : d == 2 ? "floor(L)^2 square cells of side L/floor(L); edge neighbours; periodic"
-                                        : "floor(L) segments of length L/floor(L); left and right neighbours; periodic");
+    prov.emplace_back("cells", cluster_cells_text(g));
   for (double t : opt.times) prov.emplace_back("time", format_number(t));
   if (opt.series && opt.scaled) throw InputError("--series and --scaled exclude each other: choose one table");
   prov.emplace_back("table", opt.series ? "cluster series" : (opt.scaled ? "scaled mass distribution" : "mass distribution"));
@@ -45,10 +43,10 @@ void run_clusters(const ClustersOptions& opt, std::ostream& final_out) {
     throw_if_interrupted(i, dumps.size(), "dumps");
     traj.read(dumps[i], frame);
     // ballistic aggregation: the clusters are the aggregates themselves
-    if (!traj.aggregates()) cluster_grid_of_dump(frame.L, traj.path(), frame.dump, d);  // a bad box names the dump
+    if (!traj.aggregates()) cluster_grid_of_dump(frame.L, traj.path(), frame.dump, g);  // a bad box names the dump
     fill_cluster_masses(hist, labeller, frame.L, frame.position,
-                        traj.aggregates() ? std::span<const double>(frame.mass) : std::span<const double>(), d);
-    const TableBlock b = cluster_block(table, frame.time, frame.L, hist, d);
+                        traj.aggregates() ? std::span<const double>(frame.mass) : std::span<const double>(), g);
+    const TableBlock b = cluster_block(table, frame.time, frame.L, hist, g);
     if (table == ClusterTable::kSeries) out.append(b);  // a row per dump, not a block
     else out.write(b);
   }

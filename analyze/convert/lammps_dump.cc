@@ -6,12 +6,12 @@
 
 namespace coolgas {
 
-void write_lammps_frame(std::ostream& out, const Frame& f, int dimension) {
+void write_lammps_frame(std::ostream& out, const Frame& f, Geometry g) {
   const std::size_t n = f.particles();
   const bool aggregates = !f.id.empty();
   const std::string L = format_number(f.L);
   out << "ITEM: TIMESTEP\n" << f.step << "\nITEM: NUMBER OF ATOMS\n" << n << "\nITEM: BOX BOUNDS pp pp pp\n";
-  for (int d = 0; d < 3; ++d) out << (d < dimension ? "0 " + L : std::string("-0.5 0.5")) << "\n";
+  for (int d = 0; d < 3; ++d) out << (g.spans(d) ? "0 " + L : std::string("-0.5 0.5")) << "\n";
   out << "ITEM: ATOMS id type x y z vx vy vz ix iy iz" << (aggregates ? " radius mass" : "") << "\n";
   for (std::size_t i = 0; i < n; ++i) {
     out << (aggregates ? std::int64_t(f.id[i]) : std::int64_t(i)) + 1 << " 1";

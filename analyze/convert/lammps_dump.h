@@ -24,11 +24,12 @@
 #include <iosfwd>
 
 #include "common/trajectory/frame_reader.h"
+#include "common/geometry.h"
 
 namespace coolgas {
 
 // `frame` as read by a Trajectory opened for position, velocity and image
 // (and diameter, for aggregation files).
-void write_lammps_frame(std::ostream& out, const Frame& frame, int dimension = 3);
+void write_lammps_frame(std::ostream& out, const Frame& frame, Geometry g);
 
 }  // namespace coolgas

@@ -42,7 +42,7 @@ void run_convert(const ConvertOptions& opt, std::ostream& out) {
   for (std::size_t dump : dumps) {
     t.read(dump, f);
     if (opt.format == ExportFormat::kXyz) write_xyz_frame(out, xyz_of(f, t.dimension()), provenance);
-    else write_lammps_frame(out, f, t.dimension());
+    else write_lammps_frame(out, f, t.geometry());
   }
 }
 

@@ -13,12 +13,11 @@ namespace {
 // cells; in 2D also the 32-bit bit index of a cell (cluster_occupancy.h),
 // 64 ceil(n/64) n < 2^32; in 1D one row of fewer than 2^31 cells, n + 63
 // (its words are (n + 63)/64) still an int.
-constexpr int kMaxPerSide = 1250, kMaxPerSide2d = 40000, kMaxPerSide1d = 2147483583;
+constexpr int kMaxPerSide[4] = {0, 2147483583, 40000, 1250};  // by d
 }  // namespace
 
-ClusterGrid::ClusterGrid(double L, int dimension) : L_(L), dimension_(dimension) {
-  if (dimension < 1 || dimension > 3) throw std::logic_error("a cluster grid has dimension 1, 2 or 3");
-  const int max_per_side = dimension == 3 ? kMaxPerSide : dimension == 2 ? kMaxPerSide2d : kMaxPerSide1d;
+ClusterGrid::ClusterGrid(double L, Geometry g) : L_(L), geo_(g) {
+  const int max_per_side = kMaxPerSide[g.d()];
   if (!std::isfinite(L) || L < 1)
     throw InputError("box side L = " + format_number(L) + " is too small for unit cluster cells: need L >= 1");
   if (L >= double(max_per_side) + 1)
@@ -31,9 +30,17 @@ ClusterGrid::ClusterGrid(double L, int dimension) : L_(L), dimension_(dimension)
   last_ = n_ - 1;
 }
 
-ClusterGrid cluster_grid_of_dump(double L, const std::string& path, std::size_t dump, int dimension) {
+std::string cluster_cells_text(Geometry g) {
+  static const char* const kCells[4] = {
+      "", "floor(L) segments of length L/floor(L); left and right neighbours; periodic",
+      "floor(L)^2 square cells of side L/floor(L); edge neighbours; periodic",
+      "floor(L)^3 cubic cells of side L/floor(L); face neighbours; periodic"};
+  return kCells[g.d()];
+}
+
+ClusterGrid cluster_grid_of_dump(double L, const std::string& path, std::size_t dump, Geometry g) {
   try {
-    return ClusterGrid(L, dimension);
+    return ClusterGrid(L, g);
   } catch (const InputError& e) {
     throw InputError(path + ": dump " + std::to_string(dump) + ": " + e.what());
   }

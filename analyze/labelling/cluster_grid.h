@@ -17,19 +17,22 @@
 #include <cstdint>
 #include <string>
 
+#include "common/geometry.h"
+
 namespace coolgas {
 
 class ClusterGrid {
  public:
-  // Grid for a periodic box of side L in `dimension` 3, 2 or 1 (InputError
-  // unless 1 <= L < 1251 in 3D, L < 40001 in 2D, L < 2^31 - 64 in 1D: the
+  // Grid for a periodic box of side L in the geometry g (InputError unless
+  // 1 <= L < 1251 in 3D, L < 40001 in 2D, L < 2^31 - 64 in 1D: the
   // labeller's links are 32-bit).
-  explicit ClusterGrid(double L, int dimension = 3);
+  ClusterGrid(double L, Geometry g);
 
   int per_side() const { return n_; }
-  int dimension() const { return dimension_; }
-  int planes() const { return dimension_ == 3 ? n_ : 1; }          // along z
-  int rows_per_plane() const { return dimension_ == 1 ? 1 : n_; }  // along y
+  int dimension() const { return geo_.d(); }
+  Geometry geometry() const { return geo_; }
+  int planes() const { return geo_.along(2, n_); }          // along z
+  int rows_per_plane() const { return geo_.along(1, n_); }  // along y
   double width() const { return width_; }
   double box() const { return L_; }
   std::int64_t cells() const { return std::int64_t(n_) * rows_per_plane() * planes(); }
@@ -49,13 +52,17 @@ class ClusterGrid {
 
  private:
   double L_;
-  int dimension_;
+  Geometry geo_;
   int n_;
   double width_, inv_width_, last_;
 };
 
 // The grid of dump `dump` of the trajectory `path` (box side L): as
-// ClusterGrid(L, dimension), with the InputError naming the file and the dump.
-ClusterGrid cluster_grid_of_dump(double L, const std::string& path, std::size_t dump, int dimension = 3);
+// The grid's cells and their neighbours, as provenance states them:
+// "floor(L)^3 cubic cells of side L/floor(L); face neighbours; periodic".
+std::string cluster_cells_text(Geometry g);
+
+// ClusterGrid(L, g), with the InputError naming the file and the dump.
+ClusterGrid cluster_grid_of_dump(double L, const std::string& path, std::size_t dump, Geometry g);
 
 }  // namespace coolgas

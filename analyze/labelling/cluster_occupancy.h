@@ -46,7 +46,7 @@ class CellOccupancy {
  private:
   void sort_by_plane(std::span<const double> positions);
 
-  ClusterGrid grid_{1.0};
+  ClusterGrid grid_{1.0, Geometry(3)};
   int words_ = 0;
   std::vector<std::uint64_t> bits_;
   // Counting-sort scratch: each particle's cell bit, then the same grouped by plane.

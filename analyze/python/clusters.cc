@@ -18,7 +18,7 @@ ClusterTable table_of(const std::string& name) {
 // Labels and the size table: (rank per particle, mass per cluster, smallest cell per cluster), largest first.
 py::tuple label(const Doubles& positions, double L) {
   const PointRows rows(positions, "positions");
-  const ClusterGrid grid(L, rows.dimension());
+  const ClusterGrid grid(L, Geometry(rows.dimension()));
   ClusterLabeller labeller;
   labeller.label(grid, rows.xyz());
   const std::vector<Cluster> ranked = labeller.ranked();
@@ -46,8 +46,8 @@ py::dict table(const Doubles& positions, double L, double t, const std::string& 
   if (n < 1) throw InputError("positions holds no particle; a cluster table needs at least one");
   MassHistogram hist(bins_per_decade, n);
   ClusterLabeller labeller;
-  fill_cluster_masses(hist, labeller, L, pos, agg, rows.dimension());
-  const TableBlock b = cluster_block(kind, t, L, hist, rows.dimension());
+  fill_cluster_masses(hist, labeller, L, pos, agg, Geometry(rows.dimension()));
+  const TableBlock b = cluster_block(kind, t, L, hist, Geometry(rows.dimension()));
   return table_dict(cluster_columns(kind), b.rows, b.comment);
 }
 

@@ -31,9 +31,9 @@ py::dict table(const Doubles& positions, double L, double t, const std::string& 
       throw InputError("masses[" + std::to_string(i) + "] = " + format_number(agg[i]) + " is not a mass >= 1 particle");
   if (pos.empty() && agg.empty()) throw InputError("positions holds no particle; a shape table needs at least one");
   ClusterShapes shapes;
-  const std::vector<ClusterShape> s = masses ? aggregate_shapes(agg, d) : shapes.of_particles(ClusterGrid(L, d), pos);
-  const TableBlock b = shape_block(kind, t, s, mass_radius(s, bins_per_decade, fit), min_mass, d);
-  return table_dict(shape_columns(kind, d), b.rows, b.comment);
+  const std::vector<ClusterShape> s = masses ? aggregate_shapes(agg, Geometry(d)) : shapes.of_particles(ClusterGrid(L, Geometry(d)), pos);
+  const TableBlock b = shape_block(kind, t, s, mass_radius(s, bins_per_decade, fit), min_mass, Geometry(d));
+  return table_dict(shape_columns(kind, Geometry(d)), b.rows, b.comment);
 }
 
 }  // namespace

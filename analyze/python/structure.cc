@@ -39,7 +39,7 @@ py::dict table(const Doubles& positions, double L, double t, const std::string& 
   for (std::size_t i = 0; i < w.size(); ++i)
     if (!(w[i] > 0)) throw InputError("masses[" + std::to_string(i) + "] = " + format_number(w[i]) + " is not > 0");
   const int points = structure_grid_points(grid, L);
-  FrameStructure fs(points, rows.dimension());
+  FrameStructure fs(points, Geometry(rows.dimension()));
   const TableBlock b = structure_block(kind, fs, t, L, pos, vel, w, peak_fraction, direct_shells);
   py::dict d = table_dict(structure_columns(kind), b.rows, b.comment);
   d["grid"] = points;

@@ -20,7 +20,7 @@ py::dict table(const Doubles& velocities, double t, const std::string& table, in
   const PointRows v(velocities, "velocities");
   check_tail_options(tail_from, min_count);
   ComponentHistogram hist(bins, ymax);
-  const VelocityStats s = velocity_stats(v.xyz(), hist, tail_from, min_count, v.dimension());
+  const VelocityStats s = velocity_stats(v.xyz(), hist, tail_from, min_count, Geometry(v.dimension()));
   if (kind == VelocityTable::kTail && !s.fit)
     throw InputError("only " + std::to_string(s.tail.size()) + " tail bins with y >= " + format_number(tail_from) +
                      " and >= " + format_number(min_count) +

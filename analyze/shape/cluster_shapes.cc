@@ -24,29 +24,21 @@ std::vector<ClusterShape> ClusterShapes::of_particles(const ClusterGrid& grid, s
                  r[2] + L * img.z - w * double(f / (n * n)));
   }
   std::vector<ClusterShape> out(clusters.size());
-  for (std::size_t k = 0; k < clusters.size(); ++k) out[k] = {shape_of(sums_[k], grid.dimension()), unwrapping_.wraps(k)};
+  for (std::size_t k = 0; k < clusters.size(); ++k) out[k] = {shape_of(sums_[k], grid.geometry()), unwrapping_.wraps(k)};
   return out;
 }
 
-std::vector<ClusterShape> aggregate_shapes(std::span<const double> mass, int dimension) {
+std::vector<ClusterShape> aggregate_shapes(std::span<const double> mass, Geometry g) {
   std::vector<ClusterShape> out;
   out.reserve(mass.size());
   for (double m : mass) {
     ClusterShape c;
     c.shape.mass = std::llround(m);
-    if (dimension == 3) {
-      const double d = std::cbrt(m), l = d * d / 20;
-      c.shape.lambda = {l, l, l};
-      c.shape.Rg = std::sqrt(3 * l);
-    } else if (dimension == 2) {  // a solid disc of diameter d: <x^2> = (d/2)^2 / 4
-      const double l = m / 16;
-      c.shape.lambda = {l, l, 0};
-      c.shape.Rg = std::sqrt(2 * l);
-    } else {  // a solid rod of length m: <x^2> = m^2 / 12
-      const double l = m * m / 12;
-      c.shape.lambda = {l, 0, 0};
-      c.shape.Rg = std::sqrt(l);
-    }
+    // A solid d-ball of diameter D: <x^2> = (D/2)^2 / (d + 2) along each of its axes
+    // (D^2/20 for a sphere, D^2/16 for a disc, D^2/12 for a rod).
+    const double D = g.diameter_of_mass(m), l = D * D / (4.0 * (g.d() + 2));
+    for (int k = 0; k < 3; ++k) c.shape.lambda[std::size_t(k)] = g.spans(k) ? l : 0.0;
+    c.shape.Rg = std::sqrt(g.d() * l);
     out.push_back(c);
   }
   std::stable_sort(out.begin(), out.end(),

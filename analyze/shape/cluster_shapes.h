@@ -39,6 +39,6 @@ class ClusterShapes {
 };
 
 // Aggregates of masses `mass` as solid spheres (2D: discs, 1D: rods), in order of decreasing mass (stable).
-std::vector<ClusterShape> aggregate_shapes(std::span<const double> mass, int dimension = 3);
+std::vector<ClusterShape> aggregate_shapes(std::span<const double> mass, Geometry g);
 
 }  // namespace coolgas

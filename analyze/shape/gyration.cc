@@ -19,7 +19,8 @@ void eigenvalues(const Eigen::Matrix3d& G, std::array<double, 3>& lambda) {
 
 }  // namespace
 
-Shape shape_of(const GyrationSums& g, int dimension) {
+Shape shape_of(const GyrationSums& g, Geometry geometry) {
+  const int dimension = geometry.d();
   Shape out;
   out.mass = g.mass;
   if (g.mass < 2) return out;

@@ -20,6 +20,8 @@
 #include <array>
 #include <cstdint>
 
+#include "common/geometry.h"
+
 namespace coolgas {
 
 // Accumulates points relative to a reference point near them (so that the
@@ -41,7 +43,7 @@ struct Shape {
   double Rg = 0, asphericity = 0, prolateness = 0;
 };
 
-// The shape of the points in `dimension` 3, 2 (every z = 0) or 1 (every y and z = 0).
-Shape shape_of(const GyrationSums& g, int dimension = 3);
+// The shape of the points of a space of dimension d = geometry.d(): in 2D every z = 0, in 1D every y and z = 0.
+Shape shape_of(const GyrationSums& g, Geometry geometry);
 
 }  // namespace coolgas

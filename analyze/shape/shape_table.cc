@@ -40,7 +40,8 @@ std::vector<double> row_of(ShapeTable table, int dimension, const std::vector<do
 
 }  // namespace
 
-std::vector<std::string> shape_columns(ShapeTable table, int dimension) {
+std::vector<std::string> shape_columns(ShapeTable table, Geometry g) {
+  const int dimension = g.d();
   std::vector<std::string> out;
   for (const auto& c : all_columns(table))
     if (in_dimension(c, dimension)) out.push_back(c);
@@ -53,7 +54,8 @@ void check_shape_options(int bins_per_decade, std::int64_t min_mass) {
 }
 
 TableBlock shape_block(ShapeTable table, double t, const std::vector<ClusterShape>& shapes, const MassRadius& mr,
-                       std::int64_t min_mass, int dimension) {
+                       std::int64_t min_mass, Geometry g) {
+  const int dimension = g.d();
   TableBlock b;
   const auto add = [&](const std::vector<double>& full) { b.rows.push_back(row_of(table, dimension, full)); };
   if (table == ShapeTable::kSeries) {

@@ -36,16 +36,14 @@ const char* aggregates_text(int dimension) {
          "recorded, so d_f = 1 by construction";
 }
 
-const char* clusters_text(const Trajectory& traj) {
+std::string clusters_text(const Trajectory& traj) {
   if (traj.aggregates()) return aggregates_text(traj.dimension());
-  if (traj.dimension() == 3)
-    return "floor(L)^3 cubic cells of side L/floor(L); face neighbours; periodic; each unwrapped "
-           "along its own cells; gyration tensor of its particle centres";
-  if (traj.dimension() == 2)
-    return "floor(L)^2 square cells of side L/floor(L); edge neighbours; periodic; each unwrapped "
-           "along its own cells; 2 x 2 gyration tensor of its particle centres";
-  return "floor(L) segments of length L/floor(L); left and right neighbours; periodic; each unwrapped along its "
-         "own segments; R_g^2 of its particle centres (the 1 x 1 gyration tensor)";
+  static const char* const kTensor[4] = {"", "R_g^2 of its particle centres (the 1 x 1 gyration tensor)",
+                                         "2 x 2 gyration tensor of its particle centres",
+                                         "gyration tensor of its particle centres"};
+  const Geometry g = traj.geometry();
+  return cluster_cells_text(g) + "; each unwrapped along its own " + (g.d() == 1 ? "segments" : "cells") + "; " +
+         kTensor[g.d()];
 }
 
 Provenance provenance(const Trajectory& traj, const ShapeOptions& o, const Window& fit) {
@@ -67,9 +65,9 @@ void run_shape(const ShapeOptions& opt, std::ostream& final_out) {
   check_shape_options(opt.bins_per_decade, opt.min_mass);
   const Window fit = parse_window(opt.fit_mass, "--fit-mass");
   Trajectory traj(opt.input, kPosition | kAnyDimension);
-  const int d = traj.dimension();
+  const Geometry g = traj.geometry();
   std::ostringstream os;  // written only when every dump has been read
-  TsvWriter out(os, "coolgas-shape", provenance(traj, opt, fit), shape_columns(opt.table, d));
+  TsvWriter out(os, "coolgas-shape", provenance(traj, opt, fit), shape_columns(opt.table, g));
   ClusterShapes shapes;
   Frame frame;
   const std::vector<std::size_t> dumps = traj.dumps_nearest(opt.times, opt.exact_time);
@@ -77,10 +75,10 @@ void run_shape(const ShapeOptions& opt, std::ostream& final_out) {
     throw_if_interrupted(i, dumps.size(), "dumps");
     traj.read(dumps[i], frame);
     const std::vector<ClusterShape> s =
-        traj.aggregates() ? aggregate_shapes(frame.mass, d)
-                          : shapes.of_particles(cluster_grid_of_dump(frame.L, traj.path(), frame.dump, d), frame.position);
+        traj.aggregates() ? aggregate_shapes(frame.mass, g)
+                          : shapes.of_particles(cluster_grid_of_dump(frame.L, traj.path(), frame.dump, g), frame.position);
     const TableBlock b =
-        shape_block(opt.table, frame.time, s, mass_radius(s, opt.bins_per_decade, fit), opt.min_mass, d);
+        shape_block(opt.table, frame.time, s, mass_radius(s, opt.bins_per_decade, fit), opt.min_mass, g);
     if (opt.table == ShapeTable::kSeries) out.append(b);  // a row per dump, not a block
     else out.write(b);
   }

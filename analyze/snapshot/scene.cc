@@ -109,9 +109,9 @@ SnapshotScene make_aggregate_scene(double L, std::span<const double> pos, std::s
     rank[order[r]] = int(r) + 1;
     scene.clusters.push_back({int(r) + 1, std::llround(mass[order[r]]), 0, cluster_colour(int(r) + 1)});
   }
-  const bool disks = opt.view == SnapshotView::kPlane;
+  const Geometry g(opt.view == SnapshotView::kPlane ? 2 : 3);  // the plane view is a 2D file's
   add_points(scene, L, pos, opt, [&](std::size_t p) { return rank[p]; },
-             [&](std::size_t p) { return disks ? std::sqrt(mass[p]) : std::cbrt(mass[p]); });
+             [&](std::size_t p) { return g.diameter_of_mass(mass[p]); });
   return scene;
 }
 

@@ -30,7 +30,7 @@ Provenance provenance(const Trajectory& traj, const SnapshotToolOptions& o, cons
 
 ClusterGrid cluster_grid(const SnapshotToolOptions& o, const Frame& frame, int dimension) {
   try {
-    return ClusterGrid(frame.L, dimension);
+    return ClusterGrid(frame.L, Geometry(dimension));
   } catch (const InputError& e) {
     throw InputError(o.input + ": " + e.what());
   }

@@ -16,19 +16,22 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "common/geometry.h"
+
 namespace coolgas {
 
 class FourierGrid {
  public:
-  explicit FourierGrid(int n, int dimension = 3);  // n even, >= 4; dimension 3, 2 or 1
+  FourierGrid(int n, Geometry g);  // n even, >= 4
   ~FourierGrid();
   FourierGrid(const FourierGrid&) = delete;
   FourierGrid& operator=(const FourierGrid&) = delete;
 
   int n() const { return n_; }
-  int dimension() const { return dimension_; }
-  int depth() const { return dimension_ == 3 ? n_ : 1; }   // planes along z
-  int height() const { return dimension_ >= 2 ? n_ : 1; }  // rows along y in a plane
+  int dimension() const { return geo_.d(); }
+  Geometry geometry() const { return geo_; }
+  int depth() const { return geo_.along(2, n_); }   // planes along z
+  int height() const { return geo_.along(1, n_); }  // rows along y in a plane
   int padded() const { return 2 * (n_ / 2 + 1); }     // P, real numbers per x row
   int half() const { return n_ / 2 + 1; }             // complex modes per x row
   std::int64_t modes() const { return std::int64_t(half()) * height() * depth(); }
@@ -47,7 +50,8 @@ class FourierGrid {
   int signed_index(int i) const { return i <= n_ / 2 ? i : i - n_; }
 
  private:
-  int n_, dimension_;
+  int n_;
+  Geometry geo_;
   double* data_;
   fftw_plan forward_, inverse_;
 };

@@ -15,9 +15,10 @@ namespace coolgas {
 
 class FrameStructure {
  public:
-  explicit FrameStructure(int n, int dimension = 3) : grid_(n, dimension) {}
+  FrameStructure(int n, Geometry g) : grid_(n, g) {}
   int n() const { return grid_.n(); }
   int dimension() const { return grid_.dimension(); }
+  Geometry geometry() const { return grid_.geometry(); }
 
   // S(k) shells of the points (weights: one per point, empty = 1 each).
   // Leaves the density's transform in the grid for density_correlation().

@@ -113,13 +113,13 @@ class UnitPhase {
 }  // namespace
 
 std::vector<double> direct_structure_factor(double L, std::span<const double> positions,
-                                            std::span<const double> weights, int max_shell, int dimension) {
+                                            std::span<const double> weights, int max_shell, Geometry g) {
   // The modes of shells 1..max_shell in one half space (k and -k give the same |rho|^2).
   struct Mode {
     int a, b, c, shell;
   };
   std::vector<Mode> modes;
-  const int b_max = dimension >= 2 ? max_shell : 0, c_max = dimension == 3 ? max_shell : 0;  // 2D: c = 0; 1D: b = 0
+  const int b_max = g.spans(1) ? max_shell : 0, c_max = g.spans(2) ? max_shell : 0;  // 2D: c = 0; 1D: b = 0
   for (int c = 0; c <= c_max; ++c)
     for (int b = -b_max; b <= b_max; ++b)
       for (int a = -max_shell; a <= max_shell; ++a) {

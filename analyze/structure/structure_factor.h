@@ -51,7 +51,7 @@ std::vector<Shell> shell_average(const FourierGrid& grid, double L, const Weight
 // 1 .. max_shell: O(points * modes), the check of shell_average. In 2D
 // (dimension 2; every z is 0) the modes have c = 0, in 1D b = c = 0 too.
 std::vector<double> direct_structure_factor(double L, std::span<const double> positions,
-                                            std::span<const double> weights, int max_shell, int dimension = 3);
+                                            std::span<const double> weights, int max_shell, Geometry g);
 
 // Shell of the integer wave vector with a^2 + b^2 + c^2 = m2: round(sqrt(m2)).
 int shell_of(long m2);

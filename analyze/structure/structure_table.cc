@@ -70,9 +70,9 @@ TableBlock structure_block(StructureTable table, FrameStructure& fs, double t, d
   const PeakLength len = peak_length(shells, w.shot, peak_fraction);
   TableBlock b;
   if (table == StructureTable::kSpectrum) {
-    const int d = fs.dimension();
-    b.comment = spectrum_comment(t, len, shells, direct_structure_factor(L, positions, weights, direct_shells, d));
-    const double volume = d == 3 ? len.L * len.L * len.L : d == 2 ? len.L * len.L : len.L;  // L_t^d
+    const Geometry g = fs.geometry();
+    b.comment = spectrum_comment(t, len, shells, direct_structure_factor(L, positions, weights, direct_shells, g));
+    const double volume = g.box_measure(len.L);  // L_t^d
     for (const Shell& s : shells)
       b.rows.push_back({t, double(s.index), s.k, s.S, s.S_err, s.modes, s.k * len.L, len.L > 0 ? s.S / volume : 0.0});
     return b;

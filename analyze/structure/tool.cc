@@ -26,8 +26,9 @@ const char* table_name(StructureTable t) {
 }
 
 Provenance provenance(const Trajectory& traj, const StructureOptions& o, int n, double L) {
-  const int d = traj.dimension();
-  const std::string points = d == 3 ? "^3 points" : d == 2 ? "^2 points" : " points on the ring";
+  const Geometry g = traj.geometry();
+  static const char* const kPoints[4] = {"", " points on the ring", "^2 points", "^3 points"};  // by d
+  const std::string points = kPoints[g.d()];
   Provenance p = traj.provenance();
   p.emplace_back("table", table_name(o.table));
   p.emplace_back("density", traj.aggregates() ? "aggregates weighted by their mass (ballistic aggregation): S of "
@@ -60,7 +61,7 @@ void run_structure(const StructureOptions& opt, std::ostream& final_out) {
   const int n = structure_grid_points(opt.grid, frame.L);
   std::ostringstream os;  // written only when every dump has been read
   TsvWriter out(os, "coolgas-structure", provenance(traj, opt, n, frame.L), structure_columns(opt.table));
-  FrameStructure fs(n, traj.dimension());
+  FrameStructure fs(n, traj.geometry());
   for (std::size_t i = 0; i < dumps.size(); ++i) {
     throw_if_interrupted(i, dumps.size(), "dumps");
     if (i > 0) traj.read(dumps[i], frame);

@@ -15,7 +15,8 @@ namespace coolgas {
 // For a Maxwellian in 3D (s² ~ χ²₃ in units of T: moments 3, 15, 105, 945)
 // this is 40/(27 N); in 2D (χ²₂: 2, 8, 48, 384) it is 4/N; in 1D (χ²₁:
 // 1, 3, 15, 105) it is 24/N. The velocity tests check all three values.
-SpeedMoments speed_moments(std::span<const double> v, int dimension) {
+SpeedMoments speed_moments(std::span<const double> v, Geometry g) {
+  const int dimension = g.d();
   const std::size_t n = v.size() / 3;
   if (n < 2) throw InputError("velocity statistics need at least 2 particles, got " + std::to_string(n));
   auto speed2 = [&](std::size_t p) {
@@ -54,9 +55,9 @@ ComponentHistogram::ComponentHistogram(int bins, double ymax) : ymax_(ymax) {
   count_.assign(static_cast<std::size_t>(bins), 0);
 }
 
-void ComponentHistogram::fill(std::span<const double> v, double v_rms, int dimension) {
+void ComponentHistogram::fill(std::span<const double> v, double v_rms, Geometry g) {
   std::fill(count_.begin(), count_.end(), 0);
-  const std::size_t d = static_cast<std::size_t>(dimension);
+  const std::size_t d = static_cast<std::size_t>(g.d());
   samples_ = static_cast<std::int64_t>(v.size() / 3 * d);
   const double scale = 1.0 / (v_rms * width_);
   const double nb = double(count_.size());

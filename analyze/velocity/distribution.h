@@ -6,6 +6,8 @@
 #include <span>
 #include <vector>
 
+#include "common/geometry.h"
+
 namespace coolgas {
 
 // Moments of the speeds v = |v| of N particles in d dimensions.
@@ -23,7 +25,7 @@ inline double maxwellian_speed_ratio(int dimension) { return double(dimension + 
 
 // velocities: vx0 vy0 vz0 vx1 ... (3N numbers, N >= 2; in 2D, dimension = 2,
 // every vz is 0; in 1D, every vy and vz).
-SpeedMoments speed_moments(std::span<const double> velocities, int dimension = 3);
+SpeedMoments speed_moments(std::span<const double> velocities, Geometry g);
 
 // Histogram of y = v_alpha / v_rms over the d components pooled, on `bins`
 // equal bins covering [-ymax, ymax]. Φ is normalised over all dN
@@ -35,7 +37,7 @@ class ComponentHistogram {
 
   // velocities as in speed_moments(); only the first `dimension` components
   // of each particle are counted.
-  void fill(std::span<const double> velocities, double v_rms, int dimension = 3);
+  void fill(std::span<const double> velocities, double v_rms, Geometry g);
 
   int bins() const { return static_cast<int>(count_.size()); }
   double width() const { return width_; }

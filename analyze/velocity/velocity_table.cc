@@ -30,10 +30,10 @@ const std::vector<std::string>& velocity_columns(VelocityTable t) {
 }
 
 VelocityStats velocity_stats(std::span<const double> velocities, ComponentHistogram& hist, double tail_from,
-                             double min_count, int dimension) {
+                             double min_count, Geometry g) {
   VelocityStats s;
-  s.moments = speed_moments(velocities, dimension);
-  hist.fill(velocities, s.moments.v_rms, dimension);
+  s.moments = speed_moments(velocities, g);
+  hist.fill(velocities, s.moments.v_rms, g);
   s.tail = tail_points(hist, tail_from, min_count);
   s.fit = fit_tail(s.tail);
   return s;

@@ -28,7 +28,7 @@ const std::vector<std::string>& velocity_columns(VelocityTable table);
 // The statistics of `velocities` (vx0 vy0 vz0 vx1 ..., N >= 2; vz = 0 in
 // 2D, vy = vz = 0 in 1D) in `dimension` d; `hist` is filled with their d components scaled by v_rms.
 VelocityStats velocity_stats(std::span<const double> velocities, ComponentHistogram& hist, double tail_from,
-                             double min_count, int dimension = 3);
+                             double min_count, Geometry g);
 
 // The rows of one dump at time t: a block (Phi, tail) with its summary
 // comment, or the series' one row (no comment; beta NaN without a fit).

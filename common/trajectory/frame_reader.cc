@@ -147,10 +147,15 @@ double Trajectory::box_side(std::size_t dump) const {
     if (dims.size() == 3 && dims[1] == d && dims[2] == d && dump < dims[0]) {
       const auto m = h5::read_row<double>(edges.id(), dump);
       const double last = m[d * d - 1];  // the diagonal: 0, 4, 8 (2D: 0, 3; 1D: the one edge)
-      if (m[0] != last || (d == 3 && m[0] != m[4]))
+      std::string edges;
+      bool equal = true;
+      for (hsize_t k = 0; k < d; ++k) {
+        edges += (k ? ", " : "") + format_number(m[k * (d + 1)]);
+        equal = equal && m[k * (d + 1)] == m[0];
+      }
+      if (!equal || m[0] != last)
         throw InputError(path_ + ": dump " + std::to_string(dump) + ": the box is not " +
-                         (d == 3 ? "cubic" : "square") + " (edges " + format_number(m[0]) + ", " +
-                         format_number(m[d + 1]) + (d == 3 ? ", " + format_number(m[8]) : "") + ")");
+                         Geometry(dimension_).box_adjective() + " (edges " + edges + ")");
       return m[0];
     }
   }

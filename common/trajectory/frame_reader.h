@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "common/geometry.h"
 #include "common/hdf5_file.h"
 #include "common/tsv.h"
 
@@ -70,6 +71,7 @@ class Trajectory {
   std::int64_t particles() const { return n_; }  // N (slots, for aggregation files)
   bool aggregates() const { return aggregates_; }  // an aggregation file: frames hold the aggregates present
   int dimension() const { return dimension_; }     // 3, or 2 or 1 (opened with kAnyDimension)
+  Geometry geometry() const { return Geometry(dimension_); }
   const std::vector<double>& dump_times() const { return times_; }
   // Index of the dump whose time is nearest t (the earlier one on a tie).
   std::size_t nearest_dump(double t) const;

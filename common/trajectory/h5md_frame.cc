@@ -139,8 +139,8 @@ struct Reader {
       if (s != side[0]) {
         std::string list;
         for (double x : side) list += (list.empty() ? "" : ", ") + format_number(x);
-        fail("the box is not " + std::string(d == 3 ? "cubic" : "square") + " (edges " + list + "); coolgas boxes are " +
-             (d == 3 ? "cubes" : "squares"));
+        fail("the box is not " + std::string(Geometry(d).box_adjective()) + " (edges " + list +
+             "); coolgas boxes are " + Geometry(d).boxes());
       }
     return side[0];
   }

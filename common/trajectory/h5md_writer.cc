@@ -107,8 +107,7 @@ void H5mdWriter::writing(F&& body) {
 }
 
 H5mdWriter H5mdWriter::create(const std::string& path, const RunParameters& params, bool overwrite,
-                              const DumpStorage& storage, int dimension) {
-  if (dimension < 1 || dimension > 3) throw std::logic_error("a trajectory has dimension 1, 2 or 3");
+                              Geometry g, const DumpStorage& storage) {
   if (storage.particles_per_chunk < 1 || storage.deflate_level < 0 || storage.deflate_level > 9)
     throw std::logic_error("dump storage: particles_per_chunk >= 1 and deflate_level 0-9 required");
   if (!overwrite && std::filesystem::exists(path))
@@ -122,7 +121,7 @@ H5mdWriter H5mdWriter::create(const std::string& path, const RunParameters& para
   w.lock_ = WriterLock::take(path);
   w.n_ = params.N;
   w.box_ = params.L;
-  w.dimension_ = dimension;
+  w.dimension_ = g.d();
   w.layout_ = model->layout;
   RunParameters p = params;
   p.schema_version = model->schema_version;
@@ -172,6 +171,9 @@ H5mdWriter H5mdWriter::reopen(const std::string& path, const std::string* new_sc
   w.n_ = p.N;
   w.box_ = p.L;
   w.dimension_ = dimension_of(f);
+  if (!Geometry::valid(w.dimension_))
+    throw InputError("cannot append to '" + path + "': its box/dimension is " + std::to_string(w.dimension_) +
+                     "; allowed are 1, 2 and 3");
   w.layout_ = layout_of(f);
   w.writing([&] {
     // A writer killed while it wrote a frame leaves chunks past the recorded
@@ -289,10 +291,11 @@ void H5mdWriter::write_pending() {
 }
 
 void H5mdWriter::write_frame(const FrameView& fr) {
-  const double cube[9] = {box_, 0, 0, 0, box_, 0, 0, 0, box_}, square[4] = {box_, 0, 0, box_}, ring[1] = {box_};
-  append(kBoxEdges, fr.collisions, fr.time, h5::Type::kFloat64, dimension_ == 3 ? cube : dimension_ == 2 ? square : ring);
+  double edges[9] = {};  // diag(L, ..., L), d x d
+  for (int k = 0; k < dimension_; ++k) edges[k * (dimension_ + 1)] = box_;
+  append(kBoxEdges, fr.collisions, fr.time, h5::Type::kFloat64, edges);
   append(kPosition, fr.collisions, fr.time, h5::Type::kFloat64, fr.position, fr.position_stride);
-  append(kImage, fr.collisions, fr.time, h5::Type::kInt32, fr.image, dimension_ == 3 ? 0 : 3);
+  append(kImage, fr.collisions, fr.time, h5::Type::kInt32, fr.image, 3);  // the first d of each 3
   append(kVelocity, fr.collisions, fr.time, h5::Type::kFloat64, fr.velocity, fr.velocity_stride);
   if (layout_ != Layout::kAggregation) return;
   if (!fr.id || !fr.mass || !fr.diameter) throw std::logic_error("aggregation frame without id, mass or diameter");

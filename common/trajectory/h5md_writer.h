@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "common/geometry.h"
 #include "common/hdf5_file.h"
 #include "common/trajectory/layout.h"
 #include "common/trajectory/run_parameters.h"
@@ -84,10 +85,10 @@ struct DumpStorage {
 class H5mdWriter {
  public:
   // Creates a new file (fails if it exists unless overwrite) for a run in
-  // `dimension` 3, 2 or 1 (the box's `dimension`, and d components per vector).
+  // the geometry g (the box's `dimension`, and d components per vector).
   // The schema and program versions of `params` are set here.
   static H5mdWriter create(const std::string& path, const RunParameters& params, bool overwrite,
-                           const DumpStorage& storage = {}, int dimension = 3);
+                           Geometry g, const DumpStorage& storage = {});
   // Opens an existing file to append after its last complete frame; rows
   // written after that frame (an interrupted burst) are dropped. InputError
   // if another process is writing it (writer_lock.h) or it is no coolgas

@@ -37,9 +37,8 @@ AggregateState AggregateState::unit_spheres(std::size_t n) {
 }
 
 AggregationEngine::AggregationEngine(Particles particles, AggregateState a, double now, const EngineCounters& counters,
-                                     int dimension)
-    : L_(particles.L), dim_(dimension), now_(now), c_(counters) {
-  if (dim_ < 1 || dim_ > 3) throw std::invalid_argument("aggregation runs in dimension 1, 2 or 3");
+                                     Geometry g)
+    : L_(particles.L), geo_(g), now_(now), c_(counters) {
   const std::size_t n = particles.size();
   m_.resize(n);
   for (std::size_t i = 0; i < n; ++i) m_[i] = {particles.r[i], particles.v[i], particles.t[i], 0, -1};
@@ -68,13 +67,13 @@ AggregationEngine::AggregationEngine(const StateReader& in) {
   alive_ = std::size_t(s.alive);
   too_large_ = s.too_large != 0;
   c_ = s.counters;
-  dim_ = 3 - s.planar;
   check_scalars(in, "aggregation/", L_, now_, c_);
   if ((s.too_large != 0 && s.too_large != 1) || (s.has_grid != 0 && s.has_grid != 1) ||
       (s.planar < 0 || s.planar > 2) || (s.block != 1 && s.block != kBlock))
     in.fail("aggregation/scalars: flags " + std::to_string(s.too_large) + ", " + std::to_string(s.has_grid) + ", " +
             std::to_string(s.planar) + " and block " + std::to_string(s.block) + "; must be 0 or 1 (planar: 0 to 2), and 1 or " +
             std::to_string(kBlock));
+  geo_ = Geometry(3 - int(s.planar));
   m_ = in.get<Motion>("aggregation/motion");
   image_ = in.get<Image>("aggregation/image");
   mass_ = in.get<double>("aggregation/mass");
@@ -88,12 +87,12 @@ AggregationEngine::AggregationEngine(const StateReader& in) {
   if (s.has_grid) {
     if (!(std::isfinite(grid_request_) && grid_request_ > 0 && grid_request_ <= L_))
       in.fail("aggregation/scalars: cell width " + std::to_string(grid_request_) + " out of (0, L]");
-    check_grid_size(in, "aggregation/grid/heads", CellGrid::cells_for(L_, grid_request_, dim_));
-    grid_ = std::make_unique<CellGrid>(L_, grid_request_, n, dim_);
+    check_grid_size(in, "aggregation/grid/heads", CellGrid::cells_for(L_, grid_request_, geo_));
+    grid_ = std::make_unique<CellGrid>(L_, grid_request_, n, geo_);
     if (grid_->cells_per_side() % s.block != 0) in.fail("aggregation/scalars: the block does not divide the grid");
     grid_->bind_next_links(&m_[0].next, kLinkStride);
     grid_->load(in, "aggregation/grid/");
-    large_ = LargeAggregateIndex(grid_->cells_per_side(), s.block, n, dim_);
+    large_ = LargeAggregateIndex(grid_->cells_per_side(), s.block, n, geo_);
     large_.bind_links(&m_[0].next, kLinkStride);
     const auto fine = in.get<std::int32_t>("aggregation/large_cell");
     if (fine.size() != n) in.fail("the aggregation engine's arrays differ in length");
@@ -151,7 +150,7 @@ void AggregationEngine::check_listed(const StateReader& in, const std::vector<st
 
 void AggregationEngine::save(StateWriter& out) const {
   out.put_value("aggregation/scalars", AggregationScalars{L_, now_, dmax_, grid_request_, std::int64_t(alive_),
-                                                          too_large_, grid_ != nullptr, large_.block(), 3 - dim_, c_});
+                                                          too_large_, grid_ != nullptr, large_.block(), 3 - geo_.d(), c_});
   out.put("aggregation/motion", m_);
   out.put("aggregation/image", image_);
   out.put("aggregation/mass", mass_);
@@ -234,20 +233,20 @@ bool AggregationEngine::rebuild_grid(int* follow) {
   too_large_ = 2.0 * dmax_ >= L_;
   if (too_large_) return false;
   const double per_aggregate =
-      (dim_ == 3 ? L_ * L_ * L_ : (dim_ == 2 ? L_ * L_ : L_)) / double(std::max<std::size_t>(alive_, 1));
+      geo_.box_measure(L_) / double(std::max<std::size_t>(alive_, 1));
   const double spacing =
-      dim_ == 3 ? std::cbrt(per_aggregate) : (dim_ == 2 ? std::sqrt(per_aggregate) : per_aggregate);
+      geo_.root(per_aggregate);
   const double widest = L_ / 3.0 / (1.0 + 1e-6);  // three cells per side, with CellGrid's own margin
   const double wanted = std::min(spacing * kSpacingFactor, widest);
   const int fine = int(std::floor(L_ / (wanted * (1.0 + 1e-6))));
   const int block = fine >= 3 * kBlock ? kBlock : 1;
   const int n = fine / block * block;  // whole blocks
-  grid_ = std::make_unique<CellGrid>(L_, L_ / (n + 0.5), m_.size(), dim_);  // exactly n cells per side
+  grid_ = std::make_unique<CellGrid>(L_, L_ / (n + 0.5), m_.size(), geo_);  // exactly n cells per side
   const int moved = order_in_space(follow ? *follow : -1);
   if (follow) *follow = moved;
   grid_->bind_next_links(&m_[0].next, kLinkStride);
   grid_request_ = grid_->width() / (1.0 + 1e-6);
-  large_ = LargeAggregateIndex(n, block, m_.size(), dim_);
+  large_ = LargeAggregateIndex(n, block, m_.size(), geo_);
   large_.bind_links(&m_[0].next, kLinkStride);  // a large aggregate is in no fine list
   for (std::size_t i = 0; i < m_.size(); ++i)
     if (present(int(i))) place(int(i), grid_->cell_of(m_[i].r.x, m_[i].r.y, m_[i].r.z));
@@ -312,8 +311,8 @@ template <class F>
 void AggregationEngine::for_each_cell_in_reach(int i, int reach, F&& f) const {
   const CellCoord c = grid_->coord(fine_cell(i));
   // Expected 3D: the hint keeps the 3D walk's code as short as before rods
-  // (a plain dim_ != 3 test reordered its blocks and grew it).
-  if (__builtin_expect(dim_ != 3, 0)) return for_each_cell_in_reach_2d(c, reach, f);
+  // (a plain geo_.d() != 3 test reordered its blocks and grew it).
+  if (__builtin_expect(geo_.d() != 3, 0)) return for_each_cell_in_reach_2d(c, reach, f);
   if (reach == 1) {
     for_each_neighbour_cell(grid_->cells_per_side(), L_, c, [&](const NeighbourCell& nb) { f(nb.cell, nb.shift); });
   } else {
@@ -327,7 +326,7 @@ void AggregationEngine::for_each_cell_in_reach(int i, int reach, F&& f) const {
 template <class F>
 void AggregationEngine::for_each_cell_in_reach_2d(const CellCoord& c, int reach, F& f) const {
   static constexpr int kLo[3] = {-1, -1, 0}, kHi[3] = {1, 1, 0};
-  if (dim_ == 1) return for_each_cell_in_reach_1d(c, reach, f);
+  if (geo_.d() == 1) return for_each_cell_in_reach_1d(c, reach, f);
   if (reach == 1) {
     for_each_neighbour_cell(grid_->cells_per_side(), L_, c, kLo, kHi,
                             [&](const NeighbourCell& nb) { f(nb.cell, nb.shift); });
@@ -359,7 +358,7 @@ void AggregationEngine::for_each_large_image(int i, F&& f) const {
     if (j == i) return;
     const int reach = cell_reach(0.5 * (di + diam_[j]), w);
     const CellCoord cj = grid_->coord(large_.fine_cell(j));
-    for_each_image_offset(cj.z - ci.z, n, L_, dim_ == 3 ? reach : 0, [&](int, double sz) {
+    for_each_image_offset(cj.z - ci.z, n, L_, geo_.spans(2) ? reach : 0, [&](int, double sz) {
       for_each_image_offset(cj.y - ci.y, n, L_, reach, [&](int, double sy) {
         for_each_image_offset(cj.x - ci.x, n, L_, reach, [&](int, double sx) { f(j, Vec3{sx, sy, sz}); });
       });
@@ -462,7 +461,7 @@ int AggregationEngine::merge(int a, int b) {
   m_[keep] = merged;
   image_[keep] = frame;
   mass_[keep] = M;
-  diam_[keep] = dim_ == 3 ? std::cbrt(da * da * da + db * db * db) : (dim_ == 2 ? std::sqrt(da * da + db * db) : da + db);
+  diam_[keep] = geo_.merged_diameter(da, db);
   wrap_into_box(m_[keep].r, image_[keep], L_);
   place(keep, grid_->cell_of(m_[keep].r.x, m_[keep].r.y, m_[keep].r.z));
   --alive_;

@@ -81,10 +81,10 @@ class AggregationEngine final : public EngineBase {
   // costs a search per aggregate, once per this factor of aggregates lost.
   static constexpr double kCellsPerAggregateLimit = 4.0;
 
-  // Aggregates as they are at time `now` (positions valid at now), in
-  // `dimension` 3 (spheres), 2 (disks, z = 0) or 1 (rods, y = z = 0).
-  AggregationEngine(Particles particles, AggregateState aggregates, double now, const EngineCounters& counters = {},
-                    int dimension = 3);
+  // Aggregates as they are at time `now` (positions valid at now): spheres,
+  // disks (z = 0) or rods (y = z = 0).
+  AggregationEngine(Particles particles, AggregateState aggregates, double now, const EngineCounters& counters,
+                    Geometry g);
   // The engine whose exact state save() wrote.
   explicit AggregationEngine(const StateReader& state);
   // Not copyable: the calendar breaks ties by this engine's own id array.
@@ -111,7 +111,7 @@ class AggregationEngine final : public EngineBase {
   std::int64_t calendar_years() const { return calendar_.years(); }
 
   std::size_t aggregates() const { return alive_; }
-  int dimension() const { return dim_; }
+  Geometry geometry() const { return geo_; }
   double largest_diameter() const { return dmax_; }
   double cell_width() const { return grid_ ? grid_->width() : 0.0; }
   std::size_t large_aggregates() const { return large_.size(); }
@@ -154,7 +154,7 @@ class AggregationEngine final : public EngineBase {
   Vec3 separation(int a, int b) const;  // r_b - r_a at now_, minimum image
 
   double L_;
-  int dim_ = 3;  // 3, or 2: one layer of cells, areas add in a merge; or 1: one row, lengths add
+  Geometry geo_{3};  // disks: one layer of cells, areas add in a merge; rods: one row, lengths add
   std::vector<Motion> m_;
   std::vector<Image> image_;
   std::vector<double> mass_, diam_;

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "common/limits.h"
 #include "common/tsv.h"
 
 namespace coolgas {
@@ -18,8 +19,9 @@ constexpr double kWidthMargin = 1.0 + 1e-9;
 // The head blocks: 4 cells along x, 2 along y and z, 16 heads of 4 bytes, one
 // cache line (in 2D, 4 along x and y; in 1D, 16 along x). A block's cells
 // are x fastest, then y, then z; blocks are in the same order, over sides
-// padded to whole blocks.
-constexpr int kHeadBlockX = 4, kHeadBlock = 16;
+// padded to whole blocks. kBlockCells[d] is a block's cells along x, y, z.
+constexpr int kHeadBlock = 16;
+constexpr int kBlockCells[4][3] = {{}, {16, 1, 1}, {4, 4, 1}, {4, 2, 2}};
 
 int blocks(int n, int width) { return (n + width - 1) / width; }
 
@@ -59,33 +61,29 @@ std::string check_box_fits_grid(double L, double min_width) {
          format_number(min_width) + "); use more particles or a lower phi";
 }
 
-std::int64_t CellGrid::cells_for(double L, double min_width, int dimension) {
+std::int64_t CellGrid::cells_for(double L, double min_width, Geometry g) {
   if (!(std::isfinite(L) && min_width > 0) || !check_box_fits_grid(L, min_width).empty()) return 0;
-  const double side = std::floor(L / (min_width * kWidthMargin));
-  if (dimension == 1) return side > 2e9 ? -1 : std::int64_t(side);
-  if (dimension == 2) return side > 4.6e4 ? -1 : std::int64_t(side) * std::int64_t(side);
-  if (side > 2e3) return -1;  // beyond 32-bit cell indices: no checkpoint can match
-  return std::int64_t(side) * std::int64_t(side) * std::int64_t(side);
+  const double cells = g.power(std::floor(L / (min_width * kWidthMargin)));  // exact below 2^53
+  return cells > double(kMaxIndex32) ? -1 : std::int64_t(cells);  // beyond 32-bit indices: no checkpoint can match
 }
 
-CellGrid::CellGrid(double L, double min_width, std::size_t n, int dimension) {
+CellGrid::CellGrid(double L, double min_width, std::size_t n, Geometry g) {
   const std::string err = check_box_fits_grid(L, min_width);
   if (!err.empty()) throw std::invalid_argument(err);
-  if (dimension < 1 || dimension > 3) throw std::invalid_argument("a cell grid has dimension 1, 2 or 3");
   const double side = std::floor(L / (min_width * kWidthMargin));
   if (side > double(std::numeric_limits<std::int32_t>::max() - kHeadBlock))
     throw std::invalid_argument("the cell grid's cells do not fit 32-bit indices");
   n_ = static_cast<int>(side);
-  layers_ = dimension == 3 ? n_ : 1;
+  layers_ = g.along(2, n_);
   inv_n_ = 1.0 / n_;
   w_ = L / n_;
-  const int block_x = dimension == 1 ? kHeadBlock : kHeadBlockX;
-  const int block_y = dimension == 3 ? 2 : (dimension == 2 ? 4 : 1), block_z = dimension == 3 ? 2 : 1;
-  const int rows = dimension >= 2 ? n_ : 1;
+  const int* block = kBlockCells[g.d()];
+  const int block_x = block[0], block_y = block[1], block_z = block[2];
+  const int rows = g.along(1, n_);
   const std::int64_t bx = blocks(n_, block_x), by = blocks(rows, block_y), bz = blocks(layers_, block_z);
   if (bx * by * bz * kHeadBlock > std::numeric_limits<std::int32_t>::max()) {
     std::ostringstream s;
-    s << "the cell grid's " << n_ << "^" << dimension << " cells do not fit 32-bit indices";
+    s << "the cell grid's " << n_ << "^" << g.d() << " cells do not fit 32-bit indices";
     throw std::invalid_argument(s.str());
   }
   slot_x_ = slot_terms(n_, block_x, kHeadBlock, 1);
@@ -139,19 +137,19 @@ CellExit first_cell_exit(const CellGrid& grid, int cell, const Vec3& r, const Ve
 }
 
 int cell_across_face(const CellGrid& grid, int cell, int face, double L, Vec3& r, Image& image) {
-  const int d = face / 2;
+  const int axis = face / 2;
   const bool up = face % 2 == 1;
   CellCoord c = grid.coord(cell);
-  int* cd = d == 0 ? &c.x : (d == 1 ? &c.y : &c.z);
+  int* cd = axis == 0 ? &c.x : (axis == 1 ? &c.y : &c.z);
   const int n = grid.cells_per_side();
   if (up && ++*cd == n) {
     *cd = 0;
-    r[d] -= L;
-    ++image[d];
+    r[axis] -= L;
+    ++image[axis];
   } else if (!up && --*cd < 0) {
     *cd = n - 1;
-    r[d] += L;
-    --image[d];
+    r[axis] += L;
+    --image[axis];
   }
   return grid.index(c);
 }

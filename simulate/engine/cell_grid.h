@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "common/geometry.h"
 #include "simulate/engine/particles.h"
 #include "simulate/engine/state_archive.h"
 
@@ -30,9 +31,9 @@ struct CellCoord {
 class CellGrid {
  public:
   // Cells of side >= min_width (the largest diameter) in a box of side L, for
-  // n particles, in `dimension` 3 (a cube), 2 (a square: one layer of cells)
-  // or 1 (a ring: one row of cells).
-  CellGrid(double L, double min_width, std::size_t n, int dimension = 3);
+  // n particles, in a cube, a square (one layer of cells) or on a ring (one
+  // row of cells).
+  CellGrid(double L, double min_width, std::size_t n, Geometry g);
   CellGrid() = default;  // no cells: a placeholder to assign to, or to free a grid
 
   int cells_per_side() const { return n_; }
@@ -89,7 +90,7 @@ class CellGrid {
   // The cells a grid of side L with cells >= min_width wide has (0 if the box
   // is too small): what a checkpoint's heads must number, known before the
   // grid is allocated.
-  static std::int64_t cells_for(double L, double min_width, int dimension = 3);
+  static std::int64_t cells_for(double L, double min_width, Geometry g);
 
  private:
   int n_ = 0;

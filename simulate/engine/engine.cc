@@ -16,9 +16,9 @@ namespace {
 // Offsets -1..1 along each axis of D: all 27 cells around (9 in 2D, whose
 // one layer has z offset 0; 3 in 1D, whose one row has y offset 0 too).
 template <int D>
-constexpr int kAroundLo[3] = {-1, D >= 2 ? -1 : 0, D == 3 ? -1 : 0};
+constexpr int kAroundLo[3] = {-1, -int(Geometry(D).spans(1)), -int(Geometry(D).spans(2))};
 template <int D>
-constexpr int kAroundHi[3] = {1, D >= 2 ? 1 : 0, D == 3 ? 1 : 0};
+constexpr int kAroundHi[3] = {1, int(Geometry(D).spans(1)), int(Geometry(D).spans(2))};
 // Inelastic collapse shows as one particle colliding again and again while
 // simulated time stops advancing: rule.collapse_limit() collisions in a row,
 // each less than kStallGap (relative to 1 + t) after the particle's previous
@@ -60,10 +60,11 @@ double cell_width(double L, std::size_t n) {
     const double most = L / 3.0 / (1.0 + 1e-6);  // three cells, with CellGrid's margin
     return std::max(1.0, std::min(L / double(std::max<std::size_t>(n, 1)), most));
   }
-  const double volume = D == 3 ? L * L * L : L * L, particles = double(std::max<std::size_t>(n, 1));
+  constexpr Geometry g(D);
+  const double volume = g.box_measure(L), particles = double(std::max<std::size_t>(n, 1));
   if (volume <= kDiluteCellsPerParticle * particles) return 1.0;
   const double most = L / 3.0 / (1.0 + 1e-6);  // three cells per side, with CellGrid's margin
-  const double spacing = D == 3 ? std::cbrt(volume / particles) : std::sqrt(volume / particles);
+  const double spacing = g.root(volume / particles);
   return std::max(1.0, std::min(spacing, most));
 }
 
@@ -79,7 +80,7 @@ template <class Rule, int D>
 Engine<Rule, D>::Engine(Particles particles, const Rule& rule, double now, const EngineCounters& counters)
     : L_(particles.L),
       rule_(rule),
-      grid_(particles.L, cell_width<D>(particles.L, particles.size()), particles.size(), D),
+      grid_(particles.L, cell_width<D>(particles.L, particles.size()), particles.size(), Geometry(D)),
       now_(now),
       c_(counters) {
   const std::size_t n = particles.size();
@@ -116,8 +117,8 @@ Engine<Rule, D>::Engine(const Rule& rule, const StateReader& in) : rule_(rule) {
       stall_.size() != (Rule::kDissipative ? n : 0))
     in.fail("the engine's arrays differ in length");
   check_records(in);
-  check_grid_size(in, "engine/grid/heads", CellGrid::cells_for(L_, cell_width<D>(L_, n), D));
-  grid_ = CellGrid(L_, cell_width<D>(L_, n), n, D);
+  check_grid_size(in, "engine/grid/heads", CellGrid::cells_for(L_, cell_width<D>(L_, n), Geometry(D)));
+  grid_ = CellGrid(L_, cell_width<D>(L_, n), n, Geometry(D));
   grid_.bind_next_links(&m_[0].next, sizeof(Motion) / sizeof(std::int32_t));
   grid_.load(in, "engine/grid/");
   for (std::size_t i = 0; i < n; ++i) {

@@ -52,6 +52,7 @@
 #include <string>
 #include <vector>
 
+#include "common/geometry.h"
 #include "simulate/engine/cell_grid.h"
 #include "simulate/engine/collision_rules.h"
 #include "simulate/engine/engine_base.h"

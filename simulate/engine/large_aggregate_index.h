@@ -20,6 +20,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "common/geometry.h"
+
 #include "simulate/engine/cell_grid.h"
 
 namespace coolgas {
@@ -29,11 +31,11 @@ class LargeAggregateIndex {
   LargeAggregateIndex() = default;
   // For a fine grid of n_fine³ cells (a multiple of block per side; in 2D
   // n_fine² cells, one layer; in 1D n_fine, one row) and n aggregate slots.
-  LargeAggregateIndex(int n_fine, int block, std::size_t n, int dimension = 3)
+  LargeAggregateIndex(int n_fine, int block, std::size_t n, Geometry g)
       : block_(block),
         n_(n_fine / block),
-        rows_(dimension >= 2 ? n_ : 1),
-        layers_(dimension == 3 ? n_ : 1),
+        rows_(g.along(1, n_)),
+        layers_(g.along(2, n_)),
         inv_fine_(1.0 / n_fine),
         fine_(n, -1),
         class_(n, -1) {}

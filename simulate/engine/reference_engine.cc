@@ -85,7 +85,7 @@ template std::vector<CollisionRecord> reference_collisions(Particles, const Visc
 namespace {
 
 // Merges b into a (a < b) at the common present time: a moves to the centre of mass.
-void merge_into(Particles& p, AggregateState& a, int i, int j, int dimension) {
+void merge_into(Particles& p, AggregateState& a, int i, int j, Geometry g) {
   const Vec3 d = minimum_image(p, i, j);
   const double mi = a.mass[i], mj = a.mass[j], M = mi + mj;
   for (int k = 0; k < 3; ++k) {
@@ -94,7 +94,7 @@ void merge_into(Particles& p, AggregateState& a, int i, int j, int dimension) {
     p.v[i][k] = (mi * p.v[i][k] + mj * p.v[j][k]) / M;
   }
   a.mass[i] = M;
-  const double D = dimension;
+  const double D = g.d();  // sizes add as d-th powers, computed here apart from Geometry::merged_diameter
   a.diameter[i] = std::pow(std::pow(a.diameter[i], D) + std::pow(a.diameter[j], D), 1.0 / D);
   a.mass[j] = a.diameter[j] = 0;
   a.id[j] = -1;
@@ -145,7 +145,7 @@ void other_images_first(const Particles& p, const AggregateState& a, double& bes
 }  // namespace
 
 std::vector<CollisionRecord> reference_merges(Particles p, AggregateState a, double now, double t_end,
-                                              std::int64_t max_merges, int dimension) {
+                                              std::int64_t max_merges, Geometry g) {
   const int n = int(p.size());
   std::vector<CollisionRecord> out;
   while (std::int64_t(out.size()) < max_merges) {
@@ -163,7 +163,7 @@ std::vector<CollisionRecord> reference_merges(Particles p, AggregateState a, dou
     int k = bi;
     for (int other = bj; other >= 0; other = smallest_overlap(p, a, k)) {
       const int keep = std::min(k, other), gone = std::max(k, other);
-      merge_into(p, a, keep, gone, dimension);
+      merge_into(p, a, keep, gone, g);
       out.push_back({keep, gone, now});
       k = keep;
     }

@@ -23,12 +23,12 @@ std::vector<CollisionRecord> reference_collisions(Particles p, const Rule& rule,
 // aggregates is predicted (σ = (d_i + d_j)/2; the minimum image, and any
 // other image that could touch first, for aggregates up to L/2 wide), all move to the
 // earliest contact, that pair merges (centre of mass, summed mass and volume,
-// or area in `dimension` 2, momentum kept; the smaller id survives), and
+// (area, length), momentum kept; the smaller id survives), and
 // then, as long as the new aggregate overlaps any other, it merges with the
 // smallest such id. Returns every merge as (kept, absorbed, time), up to
 // t_end or max_merges. Disks (z = 0) need nothing else: the images across z
 // are a box side away, beyond any contact.
 std::vector<CollisionRecord> reference_merges(Particles p, AggregateState a, double now, double t_end,
-                                              std::int64_t max_merges, int dimension = 3);
+                                              std::int64_t max_merges, Geometry g);
 
 }  // namespace coolgas

@@ -18,27 +18,27 @@ ViscoelasticRule viscoelastic_rule(const Scene& s) { return {s.viscoelastic_b, s
 template <class Rule, Rule (*rule_of)(const Scene&)>
 std::unique_ptr<EngineBase> make_rule_engine(const Scene& s, Particles p, double now, const EngineCounters& c,
                                              const AggregateState*) {
-  if (s.dimension == 2) return std::make_unique<Engine<Rule, 2>>(std::move(p), rule_of(s), now, c);
-  if (s.dimension == 1) return std::make_unique<Engine<Rule, 1>>(std::move(p), rule_of(s), now, c);
-  return std::make_unique<Engine<Rule>>(std::move(p), rule_of(s), now, c);
+  return s.geometry().dispatch([&]<int D>() -> std::unique_ptr<EngineBase> {
+    return std::make_unique<Engine<Rule, D>>(std::move(p), rule_of(s), now, c);
+  });
 }
 template <class Rule, Rule (*rule_of)(const Scene&)>
 std::unique_ptr<EngineBase> restore_rule_engine(const Scene& s, const StateReader& state) {
-  if (s.dimension == 2) return std::make_unique<Engine<Rule, 2>>(rule_of(s), state);
-  if (s.dimension == 1) return std::make_unique<Engine<Rule, 1>>(rule_of(s), state);
-  return std::make_unique<Engine<Rule>>(rule_of(s), state);
+  return s.geometry().dispatch([&]<int D>() -> std::unique_ptr<EngineBase> {
+    return std::make_unique<Engine<Rule, D>>(rule_of(s), state);
+  });
 }
 
 std::unique_ptr<EngineBase> make_aggregation(const Scene& s, Particles p, double now, const EngineCounters& c,
                                              const AggregateState* aggregates) {
   AggregateState a = aggregates ? *aggregates : AggregateState::unit_spheres(p.size());
-  return std::make_unique<AggregationEngine>(std::move(p), std::move(a), now, c, s.dimension);
+  return std::make_unique<AggregationEngine>(std::move(p), std::move(a), now, c, s.geometry());
 }
 // The checkpoint says its dimension; a scene of another one is refused.
 std::unique_ptr<EngineBase> restore_aggregation(const Scene& s, const StateReader& state) {
   auto e = std::make_unique<AggregationEngine>(state);
-  if (e->dimension() != s.dimension)
-    state.fail("a " + std::to_string(e->dimension()) + "D aggregation state for a " + std::to_string(s.dimension) +
+  if (e->geometry() != s.geometry())
+    state.fail("a " + std::to_string(e->geometry().d()) + "D aggregation state for a " + std::to_string(s.dimension) +
                "D scene");
   return e;
 }

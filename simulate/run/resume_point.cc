@@ -22,7 +22,7 @@ ResumePoint read_resume_point(const std::string& path) {
   }
   if (f.aggregates) rp.aggregates = AggregateState{std::move(f.mass), std::move(f.diameter), std::move(f.id)};
   check_configuration(rp.particles, rp.aggregates ? &*rp.aggregates : nullptr, "cannot resume from '" + path + "'",
-                      f.dimension);
+                      Geometry(f.dimension));
   return rp;
 }
 

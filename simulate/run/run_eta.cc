@@ -180,10 +180,10 @@ RunEta eta_of_aggregation(const RunParameters& p) {
   return RunEta::aggregation(p.L, double(p.N), AggregationEngine::kCellsPerAggregateLimit);
 }
 
-RunEta run_eta_for(const RunParameters& p, int dimension) {
+RunEta run_eta_for(const RunParameters& p, Geometry g) {
   const ModelRow* row = find_model_row(p.model);
   RunEta eta = row ? row->eta(p) : eta_of_cooling_gas(p);
-  eta.set_dimension(dimension);
+  eta.set_dimension(g.d());
   return eta;
 }
 

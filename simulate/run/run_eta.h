@@ -45,6 +45,7 @@
 #include <cmath>
 #include <vector>
 
+#include "common/geometry.h"
 #include "common/trajectory/run_parameters.h"
 
 namespace coolgas {
@@ -161,7 +162,7 @@ double clustering_floor(double phi, double r0, double delta);
 // regime, aggregation at most N - 1 merges, the inelastic gas its own
 // clustering floor and its crossings modelled; other cooling gases
 // (viscoelastic) the floor 0.5.
-RunEta run_eta_for(const RunParameters& p, int dimension = 3);
+RunEta run_eta_for(const RunParameters& p, Geometry g);
 // The rules run_eta_for() picks by the run's model (simulate/run/models.h):
 // an elastic gas does not cool (no finite-size regime); a cooling gas with
 // the generic floor; the inelastic gas with its clustering and crossing

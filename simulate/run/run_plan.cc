@@ -95,7 +95,7 @@ RunPlan plan_run(const Scene& scene, InterruptFlag interrupt) {
     throw InputError("--estimate needs a generated start (system.init = \"random\" or \"fcc\"): a start from a file "
                      "cannot be scaled down to a pilot run");
   const Scene pilot = pilot_scene(scene);
-  RunEta eta = run_eta_for(parameters_of(scene), scene.dimension);
+  RunEta eta = run_eta_for(parameters_of(scene), scene.geometry());
   const double t_stop = std::min(scene.t_end, kPilotTime);
   const double reached = run_pilot(pilot, double(scene.N) / double(pilot.N), t_stop, eta, interrupt);
   if (!(reached > 0))

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "common/geometry.h"
 #include "common/limits.h"
 #include <optional>
 #include <string>
@@ -25,7 +26,7 @@ struct Scene {
   int dimension = 3;  // 3: spheres in a periodic cube; 2: disks in a periodic square; 1: rods on a ring
   std::int64_t N = 0;
   double L = 0;    // box side, diameters
-  double phi = 0;  // volume fraction N π / (6 L³) (2D: area fraction N π / (4 L²); 1D: N / L; box_geometry.h)
+  double phi = 0;  // volume fraction N π / (6 L³) (2D: area fraction N π / (4 L²); 1D: N / L; common/geometry.h)
   std::int64_t seed = 1;
   InitialPositions init = InitialPositions::kRandom;
   // Elastic dynamics run before t = 0 to turn the packing into an equilibrium
@@ -60,6 +61,7 @@ struct Scene {
   // The complete effective scene as TOML; parse_scene() of it gives this scene back.
   std::string to_toml() const;
   std::string model_name() const;
+  Geometry geometry() const { return Geometry(dimension); }
 };
 
 // One row per scene key: it parses, checks, prints --help and writes TOML.

@@ -87,7 +87,7 @@ class Driver {
   // `interval`: wall-clock seconds between periodic checkpoints.
   Driver(const Scene& scene, EngineBase& engine, H5mdWriter& writer, std::string path, bool quiet, double interval)
       : scene_(scene), engine_(engine), writer_(writer), path_(std::move(path)),
-        e0_(1.5 * initial_temperature(scene)), progress_(!quiet), interval_(interval),
+        e0_(initial_energy(scene)), progress_(!quiet), interval_(interval),
         last_checkpoint_(clock::now()) {}
 
   // A resumed run: the file holds every output up to `written` (its last
@@ -230,7 +230,7 @@ class Driver {
   std::string path_;
   double e0_;
   Progress progress_;
-  RunEta eta_ = run_eta_for(parameters_of(scene_), scene_.dimension);
+  RunEta eta_ = run_eta_for(parameters_of(scene_), scene_.geometry());
   EtaGate eta_gate_;
   double busy_seconds_ = 0;  // wall seconds inside the engine (no dumps, no checkpoints)
   OutputCost dump_cost_, checkpoint_cost_;
@@ -290,7 +290,7 @@ int drive(Driver& driver, const Scene& scene) {
 // start leaves nothing behind.
 H5mdWriter create_partial(const std::string& tmp, const Scene& scene) {
   try {
-    return H5mdWriter::create(tmp, parameters_of(scene), true, {}, scene.dimension);
+    return H5mdWriter::create(tmp, parameters_of(scene), true, scene.geometry());
   } catch (...) {
     std::error_code ignored;
     std::filesystem::remove(tmp, ignored);

@@ -1,13 +1,13 @@
 #include "simulate/start/configuration_check.h"
 
-#include "common/limits.h"
-
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
 
+#include "common/close_pairs.h"
 #include "common/error.h"
+#include "common/limits.h"
 #include "common/tsv.h"
 #include "simulate/engine/cell_grid.h"
 
@@ -50,13 +50,13 @@ double largest_diameter(const Spheres& s, const std::string& source) {
   return d;
 }
 
-void check_box(double L, double width, const std::string& source, int dimension) {
+void check_box(double L, double width, const std::string& source, Geometry g) {
   if (!std::isfinite(L)) refuse(source, "box side L = " + format_number(L) + " is not a finite number");
   const std::string small = check_box_fits_grid(L, width);
   if (!small.empty()) refuse(source, small);
-  if (std::pow(std::floor(L), dimension) > double(kMaxIndex32))
-    refuse(source, "box side L = " + format_number(L) + " needs more than 2^31 grid cells; the limit is L < " +
-                       (dimension == 3 ? std::to_string(max_grid_side() + 1) : "2^(31/" + std::to_string(dimension) + ")"));
+  if (g.grid_cells(L) > double(kMaxIndex32))
+    refuse(source, "box side L = " + format_number(L) + " needs more than 2^31 grid cells; the limit is " +
+                       g.grid_limit());
 }
 
 void check_values(const Spheres& s, const std::string& source) {
@@ -87,38 +87,6 @@ double periodic_distance(const Vec3& a, const Vec3& b, double L) {
   return std::sqrt(dot(d, d));
 }
 
-// Particles sorted by cell: cells[c] .. cells[c + 1] index into `order`.
-struct CellIndex {
-  int n, ny, nz;  // cells along x, y and z (ny = 1 for rods, nz = 1 for disks and rods)
-  std::vector<std::size_t> start, order;
-};
-
-CellIndex sort_into_cells(const Spheres& s, double width, int dimension) {
-  // Cells at least as wide as the widest sphere, and not many more than
-  // particles (in 1D one row of about as many cells as rods).
-  const double count = double(s.p.size());
-  const double most = dimension == 3 ? std::ceil(std::cbrt(count)) : (dimension == 2 ? std::ceil(std::sqrt(count)) : count);
-  const double per_side = std::min(std::floor(s.p.L / width), most + 1);
-  const int n = int(per_side);
-  CellIndex g{n, dimension >= 2 ? n : 1, dimension == 3 ? n : 1, {}, {}};
-  const double w = s.p.L / g.n;
-  auto cell = [&](std::size_t i) {
-    auto c = [&](double u, int cells) { return std::min(int(u / w), cells - 1); };
-    const Vec3& r = s.p.r[i];
-    return (std::size_t(c(r.z, g.nz)) * std::size_t(g.ny) + std::size_t(c(r.y, g.ny))) * std::size_t(g.n) +
-           std::size_t(c(r.x, g.n));
-  };
-  g.start.assign(std::size_t(g.n) * std::size_t(g.ny) * std::size_t(g.nz) + 1, 0);
-  for (std::size_t i = 0; i < s.p.size(); ++i)
-    if (s.live(i)) ++g.start[cell(i) + 1];
-  for (std::size_t c = 1; c < g.start.size(); ++c) g.start[c] += g.start[c - 1];
-  g.order.resize(g.start.back());
-  std::vector<std::size_t> fill(g.start.begin(), g.start.end() - 1);
-  for (std::size_t i = 0; i < s.p.size(); ++i)
-    if (s.live(i)) g.order[fill[cell(i)]++] = i;
-  return g;
-}
-
 void refuse_pair(const Spheres& s, std::size_t i, std::size_t j, double r, const std::string& source) {
   const double contact = (s.diameter(i) + s.diameter(j)) / 2;
   refuse(source, "particles " + std::to_string(std::min(i, j)) + " and " + std::to_string(std::max(i, j)) +
@@ -131,38 +99,27 @@ bool overlapping(const Spheres& s, std::size_t i, std::size_t j, double* r) {
   return *r < (s.diameter(i) + s.diameter(j)) / 2 * (1 - kOverlapTolerance);
 }
 
-void check_overlaps(const Spheres& s, double width, const std::string& source, int dimension) {
-  const CellIndex g = sort_into_cells(s, width, dimension);
-  const int n = g.n;  // >= 3 (check_box), so the 27 neighbour cells are distinct (3 x 3 x 1 in 2D, 3 in 1D)
-  for (int cz = 0; cz < g.nz; ++cz)
-    for (int cy = 0; cy < g.ny; ++cy)
-      for (int cx = 0; cx < n; ++cx) {
-        const std::size_t c = (std::size_t(cz) * std::size_t(g.ny) + std::size_t(cy)) * std::size_t(n) + std::size_t(cx);
-        for (int o = 0; o < 27; ++o) {
-          const int oy = o / 3 % 3 - 1, oz = o / 9 - 1;
-          if ((g.ny == 1 && oy != 0) || (g.nz == 1 && oz != 0)) continue;  // one cell across: once
-          const int nx = (cx + o % 3 - 1 + n) % n, ny = (cy + oy + g.ny) % g.ny, nz = (cz + oz + g.nz) % g.nz;
-          const std::size_t b = (std::size_t(nz) * std::size_t(g.ny) + std::size_t(ny)) * std::size_t(n) + std::size_t(nx);
-          for (std::size_t a = g.start[c]; a < g.start[c + 1]; ++a)
-            for (std::size_t k = g.start[b]; k < g.start[b + 1]; ++k) {
-              const std::size_t i = g.order[a], j = g.order[k];
-              double r = 0;
-              if (i < j && overlapping(s, i, j, &r)) refuse_pair(s, i, j, r, source);
-            }
-        }
-      }
+void check_overlaps(const Spheres& s, double width, const std::string& source, Geometry g) {
+  std::vector<std::size_t> live;
+  for (std::size_t i = 0; i < s.p.size(); ++i)
+    if (s.live(i)) live.push_back(i);
+  for_each_close_pair(
+      live, [&](std::size_t i) { return s.p.r[i]; }, width, s.p.L, g, [&](std::size_t i, std::size_t j) {
+        double r = 0;
+        if (overlapping(s, i, j, &r)) refuse_pair(s, i, j, r, source);
+      });
 }
 
 }  // namespace
 
 void check_configuration(const Particles& p, const AggregateState* aggregates, const std::string& source,
-                         int dimension) {
+                         Geometry g) {
   const Spheres s{p, aggregates};
   check_sizes(s, source);
   const double width = largest_diameter(s, source);
-  check_box(p.L, width, source, dimension);
+  check_box(p.L, width, source, g);
   check_values(s, source);
-  check_overlaps(s, width, source, dimension);
+  check_overlaps(s, width, source, g);
 }
 
 }  // namespace coolgas

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <string>
 
+#include "common/geometry.h"
 #include "simulate/engine/aggregation_engine.h"
 #include "simulate/engine/particles.h"
 
@@ -25,10 +26,10 @@ inline constexpr double kOverlapTolerance = 1e-9;
 // - two spheres closer than their contact distance (the pair and the
 //   distance are named), found in O(N) with a cell grid.
 // `aggregates` (ballistic aggregation; null for unit spheres) gives each
-// slot's diameter; empty slots (id -1) are skipped. `dimension` 2 or 1:
-// disks (z = 0) or rods (y = z = 0), whose grids have one layer or one row
-// of cells (so a ring may be up to 2^31 long).
+// slot's diameter; empty slots (id -1) are skipped. In 2D and 1D, disks
+// (z = 0) or rods (y = z = 0), whose grids have one layer or one row of
+// cells (so a ring may be up to 2^31 long).
 void check_configuration(const Particles& p, const AggregateState* aggregates, const std::string& source,
-                         int dimension = 3);
+                         Geometry g);
 
 }  // namespace coolgas

@@ -6,21 +6,14 @@
 #include "common/error.h"
 #include "common/random.h"
 #include "common/tsv.h"
-#include "simulate/run/box_geometry.h"
+#include "common/geometry.h"
 #include "simulate/start/configuration_check.h"
 #include "simulate/start/configuration_file.h"
-#include "simulate/start/enskog.h"
 #include "simulate/start/initial_state.h"
 
 namespace coolgas {
 
 namespace {
-
-// "spheres", "disks" or "rods".
-const char* particles_word(int dimension) { return dimension == 3 ? "spheres" : dimension == 2 ? "disks" : "rods"; }
-
-// d^D: the mass of an aggregate of diameter d (a unit particle has mass 1).
-double mass_of(double d, int dimension) { return dimension == 3 ? d * d * d : dimension == 2 ? d * d : d; }
 
 // Diameters and masses as the model allows them: unit particles for the gas
 // models, the file's aggregates for ballistic aggregation.
@@ -37,7 +30,7 @@ void set_spheres(FileConfiguration& c, CollisionModel model, const std::string& 
       throw InputError(source + ": particle " + std::to_string(i) + " has diameter " +
                        format_number(c.diameter.empty() ? 1 : c.diameter[i]) + " and mass " +
                        format_number(c.mass.empty() ? 1 : c.mass[i]) +
-                       "; only collision.model = \"aggregation\" has " + particles_word(c.dimension) +
+                       "; only collision.model = \"aggregation\" has " + Geometry(c.dimension).particles() +
                        " other than diameter 1, mass 1");
   }
   if (!aggregates) {
@@ -45,23 +38,24 @@ void set_spheres(FileConfiguration& c, CollisionModel model, const std::string& 
     c.mass.clear();
     return;
   }
+  const Geometry g(c.dimension);
   if (c.diameter.empty()) {
     c.diameter.resize(n, 1.0);
-    for (std::size_t i = 0; i < c.mass.size(); ++i)
-      c.diameter[i] = c.dimension == 3 ? std::cbrt(c.mass[i]) : c.dimension == 2 ? std::sqrt(c.mass[i]) : c.mass[i];
+    for (std::size_t i = 0; i < c.mass.size(); ++i) c.diameter[i] = g.diameter_of_mass(c.mass[i]);
   }
   if (c.mass.empty()) {
     c.mass.resize(n);
-    for (std::size_t i = 0; i < n; ++i) c.mass[i] = mass_of(c.diameter[i], c.dimension);
+    for (std::size_t i = 0; i < n; ++i) c.mass[i] = g.mass_of_diameter(c.diameter[i]);
   }
 }
 
-// The fraction of the box the particles cover (box_geometry.h's, with each
+// The fraction of the box the particles cover (Geometry's, with each
 // particle's own diameter).
 double volume_fraction(const FileConfiguration& c, std::size_t n) {
+  const Geometry g(c.dimension);
   double v = 0;
-  for (std::size_t i = 0; i < n; ++i) v += c.diameter.empty() ? 1.0 : std::pow(c.diameter[i], c.dimension);
-  return covered_fraction(v, c.L, c.dimension);
+  for (std::size_t i = 0; i < n; ++i) v += c.diameter.empty() ? 1.0 : g.mass_of_diameter(c.diameter[i]);
+  return g.covered_fraction(v, c.L);
 }
 
 // The file's dimension must be the scene's: a frame of disks is not a start for spheres.
@@ -69,7 +63,7 @@ void check_dimension(const Scene& s, const FileConfiguration& c, const std::stri
   if (c.dimension == s.dimension) return;
   static const char* const kBoxes[] = {"", "a ring (pbc=\"T F F\" or box/dimension 1)",
                                        "a square box (pbc=\"T T F\" or box/dimension 2)", "a cubic box"};
-  throw InputError(source + " holds " + particles_word(c.dimension) + " in " + kBoxes[c.dimension] +
+  throw InputError(source + " holds " + Geometry(c.dimension).particles() + " in " + kBoxes[c.dimension] +
                    " but system.dimension = " + std::to_string(s.dimension) + "; set system.dimension = " +
                    std::to_string(c.dimension));
 }
@@ -84,7 +78,7 @@ void take_size(Scene& s, std::size_t n, double L, double phi, const std::string&
     throw InputError("system.L = " + format_number(s.L) + " but the box of " + source + " has side " +
                      format_number(L) + leave);
   if (s.phi > 0 && std::fabs(s.phi - phi) > 1e-9 * phi)
-    throw InputError("system.phi = " + format_number(s.phi) + " but the " + particles_word(s.dimension) + " of " +
+    throw InputError("system.phi = " + format_number(s.phi) + " but the " + s.geometry().particles() + " of " +
                      source + " cover " + format_number(phi) + " of the box" + leave);
   s.N = std::int64_t(n);
   s.L = L;
@@ -99,10 +93,10 @@ std::string three_digits(double x) {
 }
 
 // Σ m v² / (D N): the temperature per velocity component.
-double temperature(const Particles& p, const std::vector<double>& mass, int dimension) {
+double temperature(const Particles& p, const std::vector<double>& mass, Geometry g) {
   double sum = 0;
   for (std::size_t i = 0; i < p.size(); ++i) sum += (mass.empty() ? 1.0 : mass[i]) * dot(p.v[i], p.v[i]);
-  return sum / (double(dimension) * double(p.size()));
+  return sum / (2 * g.energy_per_temperature() * double(p.size()));
 }
 
 // Positions as they are; velocities the file's, else drawn at T0 (masses set first).
@@ -115,7 +109,7 @@ Particles particles_of(const FileConfiguration& c, const Scene& s) {
   for (std::size_t i = 0; i < n; ++i) p.r[i] = vec(c.position, i);
   if (c.velocity.empty()) {
     Random rng(std::uint64_t(s.seed));
-    draw_velocities(p, s.T0, rng, c.mass.empty() ? nullptr : &c.mass, s.dimension);
+    draw_velocities(p, s.T0, rng, c.mass.empty() ? nullptr : &c.mass, s.geometry());
   } else {
     for (std::size_t i = 0; i < n; ++i) p.v[i] = vec(c.velocity, i);
   }
@@ -126,7 +120,7 @@ Particles particles_of(const FileConfiguration& c, const Scene& s) {
 // velocities from the file (0.404 T0); T0 = 0.0441 (the file's)".
 std::string notice(const Scene& s, const FileConfiguration& c, const FileStart& start, bool drawn, bool own_T0) {
   const std::vector<double> unit;
-  const double T = temperature(start.particles, start.aggregates ? start.aggregates->mass : unit, s.dimension);
+  const double T = temperature(start.particles, start.aggregates ? start.aggregates->mass : unit, s.geometry());
   const std::string velocities = drawn ? "drawn at T0" : "from the file (" + three_digits(T / s.T0) + " T0)";
   const std::string T0 = own_T0 ? "system.T0" : c.T0 ? "the file's" : "Enskog, as for a fresh start";
   return "starting from '" + s.from + "' (" + c.format + (c.time ? ", t = " + format_number(*c.time) : "") +
@@ -151,7 +145,7 @@ FileStart start_from_file(Scene& s) {
                      " is not a time; times are finite and >= 0");
   if (c.time) s.from_time = c.time;
   const bool own_T0 = s.T0 > 0;
-  if (!own_T0) s.T0 = c.T0 ? *c.T0 : unit_time_temperature(double(n) / box_volume(c.L, s.dimension), s.phi, s.dimension);
+  if (!own_T0) s.T0 = c.T0 ? *c.T0 : s.geometry().unit_time_temperature(double(n) / s.geometry().box_measure(c.L), s.phi);
   check_scene_size(s);
 
   FileStart start;
@@ -162,7 +156,7 @@ FileStart start_from_file(Scene& s) {
     for (std::size_t i = 0; i < n; ++i) a.id[i] = std::int32_t(i);
     start.aggregates = std::move(a);
   }
-  check_configuration(start.particles, start.aggregates ? &*start.aggregates : nullptr, source, s.dimension);
+  check_configuration(start.particles, start.aggregates ? &*start.aggregates : nullptr, source, s.geometry());
 
   start.notice = notice(s, c, start, drawn, own_T0);
   return start;

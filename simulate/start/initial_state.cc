@@ -9,9 +9,8 @@
 #include "common/error.h"
 #include "common/tsv.h"
 #include "simulate/engine/engine.h"
-#include "simulate/start/enskog.h"
 #include "common/random.h"
-#include "simulate/run/box_geometry.h"
+#include "common/geometry.h"
 #include "simulate/start/rod_placement.h"
 #include "simulate/start/rsa_disks.h"
 #include "simulate/start/rsa_voxels.h"
@@ -58,15 +57,13 @@ std::string percent(double part, double whole) {
 // The temperature is the kinetic energy over the dimension's D/2 per
 // particle, so in 2D the sum of squares is scaled to 2 N T0, not 3 N T0
 // (in 1D to N T0).
-void draw_velocities(Particles& p, double T0, Random& rng, const std::vector<double>* mass, int dimension) {
+void draw_velocities(Particles& p, double T0, Random& rng, const std::vector<double>* mass, Geometry g) {
   const auto m = [&](std::size_t i) { return mass ? (*mass)[i] : 1.0; };
   Vec3 momentum;
   double total_mass = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     Vec3& v = p.v[i];
-    if (dimension == 3) v = {rng.normal(), rng.normal(), rng.normal()};
-    else if (dimension == 2) v = {rng.normal(), rng.normal(), 0.0};
-    else v = {rng.normal(), 0.0, 0.0};
+    for (int k = 0; k < 3; ++k) v[k] = k < g.d() ? rng.normal() : 0.0;  // x, y, z in turn: the same draws
     const double root = mass ? std::sqrt(m(i)) : 1.0;
     for (int d = 0; d < 3; ++d) {
       v[d] /= root;
@@ -80,7 +77,7 @@ void draw_velocities(Particles& p, double T0, Random& rng, const std::vector<dou
     for (int d = 0; d < 3; ++d) v[d] -= momentum[d] / total_mass;
     sum2 += m(i) * dot(v, v);
   }
-  const double scale = std::sqrt(T0 * double(dimension) * double(p.size()) / sum2);
+  const double scale = std::sqrt(2 * g.energy_per_temperature() * T0 * double(p.size()) / sum2);
   for (auto& v : p.v)
     for (int d = 0; d < 3; ++d) v[d] *= scale;
 }
@@ -108,25 +105,25 @@ std::vector<Vec3> equilibrated(Particles p, double duration, InterruptFlag inter
 }
 
 template <class Say>
-std::vector<Vec3> equilibrated_in(int dimension, Particles p, double duration, InterruptFlag interrupt, const Say& say) {
-  if (dimension == 3) return equilibrated<3>(std::move(p), duration, interrupt, say);
-  if (dimension == 2) return equilibrated<2>(std::move(p), duration, interrupt, say);
-  return equilibrated<1>(std::move(p), duration, interrupt, say);
+std::vector<Vec3> equilibrated_in(Geometry g, Particles p, double duration, InterruptFlag interrupt, const Say& say) {
+  return g.dispatch([&]<int D>() { return equilibrated<D>(std::move(p), duration, interrupt, say); });
 }
 
 }  // namespace
 
 double initial_temperature(const Scene& s) {
   if (s.T0 > 0) return s.T0;  // a start from a file (simulate/start/file_start.h)
-  return unit_time_temperature(double(s.N) / box_volume(s.L, s.dimension), s.phi, s.dimension);
+  return s.geometry().unit_time_temperature(double(s.N) / s.geometry().box_measure(s.L), s.phi);
 }
+
+double initial_energy(const Scene& s) { return s.geometry().energy_per_temperature() * initial_temperature(s); }
 
 Particles initial_state(const Scene& s, InterruptFlag interrupt, const SetupReport& report) {
   const auto say = [&](const std::string& line, bool phase) {
     if (report) report(line, phase);
   };
   say("placing " + std::to_string(s.N) + (s.init == InitialPositions::kRandom ? " particles at random" : " particles on FCC") +
-          (s.dimension == 3 ? "" : " in " + std::to_string(s.dimension) + "D"),
+          s.geometry().in_d(),
       true);
   Particles p;
   p.L = s.L;
@@ -136,7 +133,7 @@ Particles initial_state(const Scene& s, InterruptFlag interrupt, const SetupRepo
   Random rng(std::uint64_t(s.seed));
   const auto placed = [&](std::int64_t n) {
     say("placing at random: " + std::to_string(n) + " of " + std::to_string(s.N) + " (" + percent(n, s.N) +
-            "), phi = " + four_digits(covered_fraction(double(n), s.L, s.dimension)) + " of " + four_digits(s.phi),
+            "), phi = " + four_digits(s.geometry().covered_fraction(double(n), s.L)) + " of " + four_digits(s.phi),
         false);
   };
   if (s.dimension == 1) place_rods(p, s.N, rng, interrupt, placed);  // the scene allows no other 1D start
@@ -145,15 +142,15 @@ Particles initial_state(const Scene& s, InterruptFlag interrupt, const SetupRepo
   else place_fcc(p, s.N, rng);
   p.resize(std::size_t(s.N));
   const double T0 = initial_temperature(s);
-  draw_velocities(p, T0, rng, nullptr, s.dimension);
+  draw_velocities(p, T0, rng, nullptr, s.geometry());
   if (s.equilibrate > 0) {
     say("equilibrating: " + format_number(s.equilibrate) + " elastic collision times", true);
-    std::vector<Vec3> relaxed = equilibrated_in(s.dimension, std::move(p), s.equilibrate, interrupt, say);
+    std::vector<Vec3> relaxed = equilibrated_in(s.geometry(), std::move(p), s.equilibrate, interrupt, say);
     p = Particles();
     p.L = s.L;
     p.resize(relaxed.size());
     p.r = std::move(relaxed);
-    draw_velocities(p, T0, rng, nullptr, s.dimension);
+    draw_velocities(p, T0, rng, nullptr, s.geometry());
   }
   return p;
 }

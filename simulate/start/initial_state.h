@@ -29,11 +29,14 @@ Particles initial_state(const Scene& scene, InterruptFlag interrupt = nullptr, c
 // once a start from a file has set it, else the Enskog value of the time unit.
 double initial_temperature(const Scene& scene);
 
+// The kinetic energy per particle at t = 0, (d/2) T0: the E0 of the
+// progress line's E/E0.
+double initial_energy(const Scene& scene);
+
 // Maxwellian velocities at temperature T0 (per component: m <v_x^2> = T0 in
 // every dimension), total momentum removed and rescaled to T0 exactly;
 // `mass` null for unit masses. In 2D only x and y are drawn, v_z is 0; in 1D
 // only x.
-void draw_velocities(Particles& p, double T0, Random& rng, const std::vector<double>* mass = nullptr,
-                     int dimension = 3);
+void draw_velocities(Particles& p, double T0, Random& rng, const std::vector<double>* mass, Geometry g);
 
 }  // namespace coolgas

@@ -7,7 +7,7 @@
 #include "common/error.h"
 #include "common/tsv.h"
 #include "simulate/engine/cell_grid.h"
-#include "simulate/run/box_geometry.h"
+#include "common/geometry.h"
 
 namespace coolgas {
 
@@ -21,7 +21,7 @@ constexpr std::int64_t kMaxFailuresInARow = std::int64_t(1) << 24;
 constexpr double kWideDiskCellsBelowPhi = 0.1;
 
 double disk_cell_width(double L, std::int64_t N) {
-  const bool dilute = N > 0 && covered_fraction(double(N), L, 2) < kWideDiskCellsBelowPhi;
+  const bool dilute = N > 0 && Geometry(2).covered_fraction(double(N), L) < kWideDiskCellsBelowPhi;
   const double most = L / 3.0 / (1.0 + 1e-6);  // three cells per side, with CellGrid's margin
   return dilute ? std::max(1.0, std::min(std::sqrt(L * L / double(N)), most)) : 1.0;
 }
@@ -31,7 +31,7 @@ double disk_cell_width(double L, std::int64_t N) {
 void place_random_disks(Particles& p, std::int64_t N, Random& rng, InterruptFlag interrupt,
                         const PlacementReport& report) {
   const double L = p.L, half = L / 2, top = std::nextafter(L, 0.0);
-  CellGrid grid(L, disk_cell_width(L, N), std::size_t(N), 2);  // the scene checked that the square fits it
+  CellGrid grid(L, disk_cell_width(L, N), std::size_t(N), Geometry(2));  // the scene checked that the square fits it
   const auto image = [&](double d) { return d > half ? d - L : (d < -half ? d + L : d); };
   static constexpr int kLo[3] = {-1, -1, 0}, kHi[3] = {1, 1, 0};
   std::int64_t placed = 0, failures = 0;
@@ -52,7 +52,7 @@ void place_random_disks(Particles& p, std::int64_t N, Random& rng, InterruptFlag
     if (!free) {
       if (++failures < kMaxFailuresInARow) continue;
       throw InputError("random sequential addition of disks saturated at phi = " +
-                       format_number(covered_fraction(double(placed), L, 2)) + " (" + std::to_string(placed) +
+                       format_number(Geometry(2).covered_fraction(double(placed), L)) + " (" + std::to_string(placed) +
                        " of " + std::to_string(N) + " placed); lower system.phi");
     }
     failures = 0;

@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
   s.t_end = 1e12;
   s.model = coolgas::CollisionModel::kAggregation;
   const auto t_setup = Clock::now();
-  coolgas::AggregationEngine e(coolgas::initial_state(s), coolgas::AggregateState::unit_spheres(std::size_t(s.N)), 0.0);
+  coolgas::AggregationEngine e(coolgas::initial_state(s), coolgas::AggregateState::unit_spheres(std::size_t(s.N)), 0.0, {}, coolgas::Geometry(3));
   const double setup = seconds_since(t_setup);
   const auto target = static_cast<std::size_t>(std::ceil(remain * double(s.N)));
   const char* label = t_end > 0 ? "W3b" : "W3";

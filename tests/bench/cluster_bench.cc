@@ -72,7 +72,7 @@ std::vector<double> clustered_positions(std::uint64_t seed) {
 }
 
 void bench_labelling(const char* name, const std::vector<double>& pos) {
-  const ClusterGrid grid(kL);
+  const ClusterGrid grid(kL, coolgas::Geometry(3));
   ClusterLabeller lab;
   MassHistogram hist(10, kN);
   auto frame = [&] {
@@ -107,7 +107,7 @@ void bench_frame_read(const std::vector<double>& pos) {
     p.N = kN;
     p.L = kL;
     p.phi = kPhi;
-    auto w = coolgas::H5mdWriter::create(path, p, true);
+    auto w = coolgas::H5mdWriter::create(path, p, true, coolgas::Geometry(3));
     std::vector<std::int32_t> img(3 * kN, 0);
     std::vector<double> vel(3 * kN, 0.5);
     w.add_frame({0.0, 0, 0, pos.data(), img.data(), vel.data()});

@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
   std::vector<double> write_s, write_cpu_s, read_s;
   std::uintmax_t empty_bytes = 0;
   {
-    H5mdWriter w = H5mdWriter::create(out, params, true, storage);
+    H5mdWriter w = H5mdWriter::create(out, params, true, Geometry(3), storage);
     w.flush();
     empty_bytes = std::filesystem::file_size(out);
     for (int r = 0; r < repeats; ++r) {

@@ -17,7 +17,7 @@ int main() {
   coolgas::Random rng(1);
   std::vector<double> pos(3 * kN);
   for (double& x : pos) x = L * rng.uniform();
-  const coolgas::ClusterGrid grid(L);
+  const coolgas::ClusterGrid grid(L, coolgas::Geometry(3));
   coolgas::ClusterShapes shapes;
   const coolgas::Window fit = coolgas::parse_window("10:", "--fit-mass");
   coolgas::MassRadius mr;

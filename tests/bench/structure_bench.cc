@@ -43,14 +43,14 @@ int main() {
   for (double& x : pos) x = kL * rng.uniform();
   for (double& v : vel) v = rng.normal();
   const double t0 = wall_seconds();
-  coolgas::FrameStructure fs(n);
+  coolgas::FrameStructure fs(n, coolgas::Geometry(3));
   std::printf("plans (FFTW_ESTIMATE) and grid allocation: %.0f ms\n", 1e3 * (wall_seconds() - t0));
   coolgas::PeakLength len;
   report("S(k) + L_t (assignment, r2c FFT, shells)", median_time(5, [&] {
            len = coolgas::peak_length(fs.spectrum(kL, pos, {}), 1, 0.1);
          }));
   {  // where the time goes
-    coolgas::FourierGrid g(n);
+    coolgas::FourierGrid g(n, coolgas::Geometry(3));
     coolgas::CloudInCell cic;
     report("  of which: clear + cloud-in-cell assignment (sort included)", median_time(3, [&] {
              g.clear();
@@ -64,7 +64,7 @@ int main() {
   }
   std::vector<double> direct;
   report("exact sum over particles, shell 1 (9 modes)", median_time(3, [&] {
-           direct = coolgas::direct_structure_factor(kL, pos, {}, 1);
+           direct = coolgas::direct_structure_factor(kL, pos, {}, 1, coolgas::Geometry(3));
          }));
   report("series extra: C(r) of the density", median_time(3, [&] { fs.density_correlation(kL); }));
   report("series extra: C_v(r) of the momentum field", median_time(3, [&] {

@@ -47,7 +47,7 @@ t_end = 20
 )";
 
 // A scene starting from `from` with the same collision model and dimension as its source.
-std::string file_scene(const std::string& dir, const std::string& from, const std::string& model, int dimension = 3) {
+std::string file_scene(const std::string& dir, const std::string& from, const std::string& model, int dimension) {
   return test::write_file(dir, "start.toml", "[system]\ninit = \"file\"\nfrom = \"" + from + "\"\ndimension = " +
                                                  std::to_string(dimension) + "\n[collision]\nmodel = \"" + model +
                                                  "\"\n[run]\nt_end = 1\n");
@@ -147,7 +147,7 @@ TEST(ConvertCli, ARodFileIsExportedAsXyzOnly) {
     RunParameters p;
     p.N = 300;
     p.L = 750.5;
-    H5mdWriter w = H5mdWriter::create(run, p, true, {}, 1);
+    H5mdWriter w = H5mdWriter::create(run, p, true, Geometry(1));
     Random rng(81);
     std::vector<double> pos(3 * 300), vel(3 * 300);
     const std::vector<std::int32_t> img(3 * 300, 0);
@@ -171,7 +171,7 @@ TEST(ConvertCli, AnH5mdFileWrittenByMDAnalysisStartsARun) {
   ASSERT_EQ(run_command(simulate(test::write_file(dir, "run.toml", kGas) + " -o " + run)).exit_code, 0);
   const auto w = run_command(py("h5md " + run + " " + foreign));
   ASSERT_EQ(w.exit_code, 0) << w.out << w.err;
-  const auto s = run_command(bin("coolgas-simulate") + " " + file_scene(dir, foreign, "inelastic") + " -o " + again);
+  const auto s = run_command(bin("coolgas-simulate") + " " + file_scene(dir, foreign, "inelastic", 3) + " -o " + again);
   ASSERT_EQ(s.exit_code, 0) << s.err;
   EXPECT_NE(s.err.find("H5MD 1.1 (group 'trajectory')"), std::string::npos) << s.err;
   // MDAnalysis stores float32: the run starts from exactly those numbers.
@@ -189,7 +189,7 @@ TEST(ConvertCli, AnH5mdFileOfTimeIndependentDatasetsStartsARun) {
   ASSERT_EQ(run_command(simulate(test::write_file(dir, "run.toml", kGas) + " -o " + run)).exit_code, 0);
   const auto w = run_command(py("h5md_fixed " + run + " " + foreign));
   ASSERT_EQ(w.exit_code, 0) << w.out << w.err;
-  const auto s = run_command(simulate(file_scene(dir, foreign, "inelastic") + " -o " + again));
+  const auto s = run_command(simulate(file_scene(dir, foreign, "inelastic", 3) + " -o " + again));
   ASSERT_EQ(s.exit_code, 0) << s.err;
   for (const char* el : {"particles/all/position", "particles/all/velocity"})
     expect_bit_identical(row_of(run, el, -1, 3, false), row_of(again, el, 0, 3, false), el);
@@ -204,7 +204,7 @@ TEST(ConvertCli, BrokenH5mdFilesAreRefusedWithOneLine) {
            {"groups", "holds several particle groups (a, b)"}}) {
     const std::string file = dir + "/" + kind + ".h5";
     ASSERT_EQ(run_command(py("h5md_bad " + kind + " " + file)).exit_code, 0);
-    test::expect_simulate_refused(file_scene(dir, file, "elastic") + " -o " + out, needle, out);
+    test::expect_simulate_refused(file_scene(dir, file, "elastic", 3) + " -o " + out, needle, out);
   }
 }
 
@@ -220,15 +220,15 @@ TEST(ConvertCli, BadInputIsRefusedWithOneLine) {
   const std::string overlap = test::write_file(dir, "overlap.xyz", "216\n" + box + "\n" + lattice.substr(0, lattice.rfind("X ")) + "X 0.75 0.75 1.25\n");
   const std::string outside = test::write_file(dir, "outside.xyz", "216\n" + box + "\n" + lattice.substr(0, lattice.rfind("X ")) + "X 8.25 8.25 9.5\n");
   const std::string text = test::write_file(dir, "notes.txt", "a note\n");
-  test::expect_simulate_refused(file_scene(dir, dir + "/missing.xyz", "elastic") + " -o " + out, "no such file", out);
-  test::expect_simulate_refused(file_scene(dir, overlap, "elastic") + " -o " + out,
+  test::expect_simulate_refused(file_scene(dir, dir + "/missing.xyz", "elastic", 3) + " -o " + out, "no such file", out);
+  test::expect_simulate_refused(file_scene(dir, overlap, "elastic", 3) + " -o " + out,
                                 "particles 0 and 215 overlap: their centres are 0.5 apart, contact is at 1", out);
-  test::expect_simulate_refused(file_scene(dir, outside, "elastic") + " -o " + out,
+  test::expect_simulate_refused(file_scene(dir, outside, "elastic", 3) + " -o " + out,
                                 "particle 215 is at (8.25, 8.25, 9.5), outside the box [0, 9)", out);
-  test::expect_simulate_refused(file_scene(dir, good, "elastic") + " --set system.L=10 -o " + out,
+  test::expect_simulate_refused(file_scene(dir, good, "elastic", 3) + " --set system.L=10 -o " + out,
                                 "system.L = 10 but the box of", out);
-  test::expect_simulate_refused(file_scene(dir, text, "elastic") + " -o " + out, "expected the number of particles", out);
-  EXPECT_EQ(run_command(simulate(file_scene(dir, good, "elastic") + " -o " + out)).exit_code, 0);  // the good one runs
+  test::expect_simulate_refused(file_scene(dir, text, "elastic", 3) + " -o " + out, "expected the number of particles", out);
+  EXPECT_EQ(run_command(simulate(file_scene(dir, good, "elastic", 3) + " -o " + out)).exit_code, 0);  // the good one runs
   test::expect_one_error_line(run_command(bin("coolgas-convert") + " " + dir + "/missing.h5"), "missing.h5");
   test::expect_one_error_line(run_command(bin("coolgas-convert") + " " + text), "notes.txt");
   test::expect_one_error_line(run_command(bin("coolgas-convert") + " --format pdb " + out), "--format");

@@ -34,7 +34,7 @@ class EnergyFitCollapseCli : public ::testing::Test {
         test::write_energy_run(path(L, seed), test::paper_parameters(L, seed), times, [=](double t) {
           const double x = std::max(t, 1.0) / std::pow(L, 2.5);
           return amp * std::pow(L, -3.0) * std::pow(x, -1.2) * std::pow(1 + x, -0.63);
-        });
+        }, Geometry(3));
       }
   }
   static std::string path(double L, int seed) {
@@ -151,7 +151,7 @@ TEST_F(EnergyFitCollapseCli, EveryToolGivesOneLineForMissingData) {
 
 TEST_F(EnergyFitCollapseCli, EveryToolGivesOneLineForNaN) {
   const std::string nan_run = *dir + "/nan.h5";
-  test::write_energy_run(nan_run, test::paper_parameters(16, 1), {0, 1, 2}, [](double t) { return t == 1 ? std::numeric_limits<double>::quiet_NaN() : 1.0; });
+  test::write_energy_run(nan_run, test::paper_parameters(16, 1), {0, 1, 2}, [](double t) { return t == 1 ? std::numeric_limits<double>::quiet_NaN() : 1.0; }, Geometry(3));
   expect_one_error_line(run_command(bin("coolgas-energy") + " " + nan_run), "not finite");
   const std::string nan_table = file("nan.tsv", "# L: 16\n# t\tE\n1\t2\n10\tnan\n100\t0.5\n");
   expect_one_error_line(run_command(bin("coolgas-fit") + " --haff " + nan_table), "not finite");

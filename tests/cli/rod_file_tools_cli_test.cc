@@ -45,7 +45,7 @@ void write_rod_file(const std::string& path) {
   p.L = kRing;
   p.T0 = 1;
   p.seed = 3;
-  H5mdWriter w = H5mdWriter::create(path, p, true, {}, 1);
+  H5mdWriter w = H5mdWriter::create(path, p, true, Geometry(1));
   Random rng(3);
   std::vector<double> pos(3 * kRods), vel(3 * kRods);
   const std::vector<std::int32_t> img(3 * kRods, 0);
@@ -70,7 +70,7 @@ class RodFileToolsCli : public ::testing::Test {
     p.L = kRing;
     p.T0 = 1;
     p.seed = 4;
-    test::write_energy_run(spheres(), p, {0, 1, 10, 100}, rod_energy);
+    test::write_energy_run(spheres(), p, {0, 1, 10, 100}, rod_energy, Geometry(3));
   }
   static void TearDownTestSuite() { delete dir_; }
   static std::string rods() { return *dir_ + "/rods.h5"; }

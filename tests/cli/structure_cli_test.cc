@@ -37,7 +37,7 @@ void write_aggregates(const std::string& path) {
   p.r0.reset();  // aggregation has no restitution or cut-off (common/trajectory/collision_models.h)
   p.delta.reset();
   p.seed = 4;
-  H5mdWriter w = H5mdWriter::create(path, p, true);
+  H5mdWriter w = H5mdWriter::create(path, p, true, Geometry(3));
   std::vector<double> pos(3 * n, 0.0), vel(3 * n, 0.0), mass(n, 0.0), diameter(n, 0.0);
   std::vector<std::int32_t> img(3 * n, 0), id(n, -1);
   const double m[5] = {10, 20, 50, 100, 220};

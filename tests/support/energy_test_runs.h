@@ -25,10 +25,10 @@ inline RunParameters paper_parameters(double L, std::int64_t seed) {
 }
 
 // Writes E(t) = energy(t) at the given times (increasing) into a new file
-// of a run in `dimension` d.
+// of a run in the geometry g.
 inline void write_energy_run(const std::string& path, const RunParameters& p, const std::vector<double>& times,
-                             const std::function<double(double)>& energy, int dimension = 3) {
-  H5mdWriter w = H5mdWriter::create(path, p, true, {}, dimension);
+                             const std::function<double(double)>& energy, Geometry g) {
+  H5mdWriter w = H5mdWriter::create(path, p, true, g);
   for (double t : times) w.add_observables({t, 0, 0, energy(t), {0, 0, 0}});
   w.flush();
 }

@@ -25,7 +25,7 @@ struct EtaReplay {
 // time whatever its t_end).
 inline EtaReplay replay_eta(const std::vector<double>& time, const std::vector<double>& collisions, std::size_t end,
                             const RunParameters& p) {
-  RunEta eta = run_eta_for(p);  // as coolgas-simulate's
+  RunEta eta = run_eta_for(p, Geometry(3));  // as coolgas-simulate's
   const double total = collisions[end], t_end = time[end];
   EtaReplay r;
   int next_decile = 1;

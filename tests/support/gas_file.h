@@ -19,7 +19,7 @@ inline void write_gas_file(const std::string& path, bool nan_at_position = false
   p.N = n;
   p.L = L;
   p.seed = 9;
-  H5mdWriter w = H5mdWriter::create(path, p, true);
+  H5mdWriter w = H5mdWriter::create(path, p, true, Geometry(3));
   Random rng(9);
   std::vector<double> pos(3 * n), vel(3 * n);
   std::vector<std::int32_t> img(3 * n, 0);

@@ -14,7 +14,7 @@ namespace coolgas::schema {
 namespace {
 
 Finding check(const std::vector<double>& r, const std::vector<double>& d, double L) {
-  return check_no_overlaps(r, d, {}, L);
+  return check_no_overlaps(r, d, {}, L, Geometry(3));
 }
 
 TEST(OverlapCheck, TouchingIsAllowedOverlapIsNot) {
@@ -33,7 +33,7 @@ TEST(OverlapCheck, AggregatesUseTheirDiametersAndIds) {
   const std::vector<double> r{5, 5, 5, 8.4, 5, 5, 15, 15, 15};
   const std::vector<double> d{6, 1, 1};
   const std::vector<std::int32_t> id{7, 12, 30};
-  const Finding f = check_no_overlaps(r, d, id, L);
+  const Finding f = check_no_overlaps(r, d, id, L, Geometry(3));
   ASSERT_TRUE(f);
   EXPECT_NE(f->find("particles 7 and 12 overlap"), std::string::npos) << *f;
   EXPECT_FALSE(check({5, 5, 5, 8.5, 5, 5}, {6, 1}, L));

@@ -33,7 +33,7 @@ void write_good_file(const std::string& path) {
   p.model = "inelastic";
   p.r0 = 0.5;
   p.delta = 1e-4;
-  H5mdWriter w = H5mdWriter::create(path, p, true);
+  H5mdWriter w = H5mdWriter::create(path, p, true, Geometry(3));
   for (int f = 0; f < kFrames; ++f) {
     const double pos[6] = {0.5, 1.5, 2.5, 3.0 + 0.5 * f, 4.0, 0.0};
     const std::int32_t img[6] = {0, 0, 0, f, -1, 2};

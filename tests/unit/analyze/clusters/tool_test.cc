@@ -27,7 +27,7 @@ std::string write_run(const std::string& name) {
   p.L = 6.3;
   p.seed = 3;
   p.phi = 9 * M_PI / 6 / std::pow(6.3, 3);
-  H5mdWriter w = H5mdWriter::create(path, p, false);
+  H5mdWriter w = H5mdWriter::create(path, p, false, Geometry(3));
   const double f0[27] = {0.2, 1.2, 1.2, 0.6, 1.2, 1.2, 6.2, 1.2, 1.2, 5.4, 1.3, 1.1,  // wraps x
                          3.2, 3.2, 0.2, 3.2, 3.2, 1.2, 3.2, 3.2, 2.2,                 // line along z
                          3.2, 5.5, 5.5, 1.2, 3.2, 4.2};                               // singletons
@@ -135,7 +135,7 @@ TEST(ClusterTool, A1DFileHasSegmentsAndDensitiesPerLength) {
     RunParameters p;
     p.N = 7;
     p.L = 10.5;
-    H5mdWriter w = H5mdWriter::create(path, p, false, {}, 1);
+    H5mdWriter w = H5mdWriter::create(path, p, false, Geometry(1));
     const double x[21] = {0.2, 0, 0, 0.7, 0, 0, 1.5, 0, 0, 10.4, 0, 0, 5.5, 0, 0, 6.0, 0, 0, 3.5, 0, 0};
     const std::int32_t img[21] = {};
     const double vel[21] = {};

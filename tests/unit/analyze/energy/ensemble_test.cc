@@ -49,7 +49,7 @@ class EnsembleOfThree : public ::testing::Test {
     for (int k = 0; k < 3; ++k) {
       const std::string path = dir + "/s" + std::to_string(k) + ".h5";
       test::write_energy_run(path, test::paper_parameters(32, k), times[k],
-                             [&](double t) { return t > 0 ? c[k] * std::pow(t, -1.2) : e0[k]; });
+                             [&](double t) { return t > 0 ? c[k] * std::pow(t, -1.2) : e0[k]; }, Geometry(3));
       runs.push_back(load_energy_run(path));
     }
   }
@@ -87,7 +87,7 @@ TEST_F(EnsembleOfThree, OneRunHasZeroErrorAndIsCopiedAtItsOwnTimes) {
 
 TEST_F(EnsembleOfThree, DifferentPhysicsIsRefusedNamingTheParameter) {
   const std::string path = test::scratch_dir("energy_ensemble_L48") + "/L48.h5";
-  test::write_energy_run(path, test::paper_parameters(48, 9), {0, 1, 10}, [](double) { return 1.0; });
+  test::write_energy_run(path, test::paper_parameters(48, 9), {0, 1, 10}, [](double) { return 1.0; }, Geometry(3));
   runs.push_back(load_energy_run(path));
   try {
     require_same_physics(runs);
@@ -107,7 +107,7 @@ TEST(EnergyEnsemble, ViscoelasticRunsWithDifferentBAreRefusedNamingB) {
     p.r0.reset();
     p.viscoelastic_b = b;
     const std::string path = dir + "/b" + format_number(b) + ".h5";
-    test::write_energy_run(path, p, {0, 1, 10}, [](double t) { return 1 / (1 + t); });
+    test::write_energy_run(path, p, {0, 1, 10}, [](double t) { return 1 / (1 + t); }, Geometry(3));
     runs.push_back(load_energy_run(path));
   }
   try {
@@ -128,8 +128,8 @@ TEST(EnergyEnsemble, ViscoelasticRunsWithDifferentBAreRefusedNamingB) {
 TEST(EnergyEnsemble, OneDimensionalRunsSayTheirDimensionAndAreNotMixed) {
   const std::string dir = test::scratch_dir("energy_1d");
   const auto E = [](double t) { return 0.005 / (1 + t); };  // (d/2) T0 at t = 0 for d = 1, T0 = 0.01
-  test::write_energy_run(dir + "/rods.h5", test::paper_parameters(32, 1), {0, 1, 10}, E, 1);
-  test::write_energy_run(dir + "/disks.h5", test::paper_parameters(32, 2), {0, 1, 10}, E, 2);
+  test::write_energy_run(dir + "/rods.h5", test::paper_parameters(32, 1), {0, 1, 10}, E, Geometry(1));
+  test::write_energy_run(dir + "/disks.h5", test::paper_parameters(32, 2), {0, 1, 10}, E, Geometry(2));
   std::ostringstream table;
   write_energy_table({{dir + "/rods.h5"}, 20}, table);
   EXPECT_NE(table.str().find("# dimension: 1\n"), std::string::npos) << table.str();
@@ -145,7 +145,7 @@ TEST(EnergyEnsemble, OneDimensionalRunsSayTheirDimensionAndAreNotMixed) {
 
 TEST(EnergyEnsemble, NonPositiveEnergyIsRefused) {
   const std::string path = test::scratch_dir("energy_zero") + "/run.h5";
-  test::write_energy_run(path, test::paper_parameters(32, 1), {0, 1, 2}, [](double t) { return t < 2 ? 1.0 : 0.0; });
+  test::write_energy_run(path, test::paper_parameters(32, 1), {0, 1, 2}, [](double t) { return t < 2 ? 1.0 : 0.0; }, Geometry(3));
   EXPECT_THROW(load_energy_run(path), InputError);
 }
 

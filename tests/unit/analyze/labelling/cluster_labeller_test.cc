@@ -101,7 +101,7 @@ TEST(ClusterLabeller, MatchesFloodFillOnRandomGrids) {
       // Poisson occupancy 1 - exp(-n/cells) = occupancy.
       const auto n = static_cast<std::size_t>(std::ceil(-cells * std::log(1 - occupancy)));
       SCOPED_TRACE("L = " + std::to_string(L) + ", occupancy " + std::to_string(occupancy));
-      expect_same_clusters(ClusterGrid(L), random_positions(L, n, seed++));
+      expect_same_clusters(ClusterGrid(L, Geometry(3)), random_positions(L, n, seed++));
     }
   }
 }
@@ -115,14 +115,14 @@ TEST(ClusterLabeller, MatchesFloodFillOnRowsOfSeveralWords) {
       const double cells = std::pow(std::floor(L), 3);
       const auto n = static_cast<std::size_t>(std::ceil(-cells * std::log(1 - occupancy)));
       SCOPED_TRACE("L = " + std::to_string(L) + ", occupancy " + std::to_string(occupancy));
-      expect_same_clusters(ClusterGrid(L), random_positions(L, n, seed++));
+      expect_same_clusters(ClusterGrid(L, Geometry(3)), random_positions(L, n, seed++));
     }
   }
   // One line of occupied cells along x through the whole row closes through the face.
   std::vector<double> line;
   for (int i = 0; i < 129; ++i) line.insert(line.end(), {i + 0.5, 3.5, 7.5});
   ClusterLabeller lab;
-  lab.label(ClusterGrid(129.0), line);
+  lab.label(ClusterGrid(129.0, Geometry(3)), line);
   EXPECT_EQ(lab.clusters(), 1u);
 }
 
@@ -144,7 +144,7 @@ TEST(ClusterLabeller, MatchesFloodFillOnClusteredGrids) {
         }
     }
     SCOPED_TRACE("spread " + std::to_string(spread));
-    expect_same_clusters(ClusterGrid(L), pos);
+    expect_same_clusters(ClusterGrid(L, Geometry(3)), pos);
   }
 }
 
@@ -158,7 +158,7 @@ std::vector<double> particles_in_cells(const std::vector<std::array<int, 3>>& ce
 
 std::vector<std::int64_t> sorted_masses(const std::vector<double>& pos) {
   ClusterLabeller lab;
-  lab.label(ClusterGrid(6.0), pos);
+  lab.label(ClusterGrid(6.0, Geometry(3)), pos);
   std::vector<std::int64_t> m;
   for (const auto& c : lab.ranked()) m.push_back(c.mass);
   return m;
@@ -197,7 +197,7 @@ TEST(ClusterLabeller, RankedIsMassDescendingThenSmallestCell) {
   // (1,0,0) (index 1) comes before the one holding (3,3,3).
   const auto pos = particles_in_cells({{3, 3, 3}, {3, 3, 4}, {1, 0, 0}, {1, 1, 0}, {1, 3, 0}, {1, 3, 1}, {1, 3, 2}});
   ClusterLabeller lab;
-  lab.label(ClusterGrid(6.0), pos);
+  lab.label(ClusterGrid(6.0, Geometry(3)), pos);
   const auto r = lab.ranked();
   ASSERT_EQ(r.size(), 3u);
   EXPECT_EQ(r[0].mass, 3);
@@ -209,7 +209,7 @@ TEST(ClusterLabeller, RankedIsMassDescendingThenSmallestCell) {
 }
 
 TEST(ClusterGrid, FloorLCellsOfWidthLOverFloorL) {
-  const ClusterGrid g(5.5);
+  const ClusterGrid g(5.5, Geometry(3));
   EXPECT_EQ(g.per_side(), 5);
   EXPECT_DOUBLE_EQ(g.width(), 1.1);
   EXPECT_EQ(g.cell_1d(1.0), 0);  // 1.0 / 1.1 < 1
@@ -217,10 +217,10 @@ TEST(ClusterGrid, FloorLCellsOfWidthLOverFloorL) {
   EXPECT_EQ(g.cell_1d(5.5), 4);     // x = L (round-off) clamps into the last cell
   EXPECT_EQ(g.cell_1d(-1e-15), 0);  // and just below 0 into the first
   EXPECT_EQ(g.cell_of(1.15, 0, 2.3), 1 + 5 * (0 + 5 * 2));
-  EXPECT_THROW(ClusterGrid(0.9), InputError);
-  EXPECT_THROW(ClusterGrid(std::nan("")), InputError);
-  EXPECT_THROW(ClusterGrid(1251.0), InputError);  // too many cells for int32 run numbers
-  EXPECT_NO_THROW(ClusterGrid(1250.9));
+  EXPECT_THROW(ClusterGrid(0.9, Geometry(3)), InputError);
+  EXPECT_THROW(ClusterGrid(std::nan(""), Geometry(3)), InputError);
+  EXPECT_THROW(ClusterGrid(1251.0, Geometry(3)), InputError);  // too many cells for int32 run numbers
+  EXPECT_NO_THROW(ClusterGrid(1250.9, Geometry(3)));
 }
 
 }  // namespace

@@ -68,7 +68,7 @@ std::vector<std::int64_t> flood_fill_masses(double L, const std::vector<double>&
 // the x face (mass 4); (3,0) and (3,9) join across the y face (mass 2);
 // (5,5) and (6,6) touch only at a corner: two clusters of 1.
 TEST(DiskClusters, AHandMadeConfigurationIsCountedExactly) {
-  const ClusterGrid grid(10.0, 2);
+  const ClusterGrid grid(10.0, Geometry(2));
   EXPECT_EQ(grid.cells(), 100);
   EXPECT_EQ(grid.planes(), 1);
   ClusterLabeller lab;
@@ -89,7 +89,7 @@ TEST(DiskClusters, AFullRowWrapsIntoOneCluster) {
   std::vector<std::array<double, 2>> row;
   for (int i = 0; i < 7; ++i) row.push_back({i + 0.5, 2.5});
   ClusterLabeller lab;
-  lab.label(ClusterGrid(7.0, 2), disks(row));
+  lab.label(ClusterGrid(7.0, Geometry(2)), disks(row));
   EXPECT_EQ(sorted_masses(lab), (std::vector<std::int64_t>{7}));
 }
 
@@ -103,7 +103,7 @@ TEST(DiskClusters, MatchFloodFillOnRandomSquares) {
       std::vector<double> pos(3 * n, 0.0);
       for (std::size_t p = 0; p < n; ++p) pos[3 * p] = L * rng.uniform(), pos[3 * p + 1] = L * rng.uniform();
       ClusterLabeller lab;
-      lab.label(ClusterGrid(L, 2), pos);
+      lab.label(ClusterGrid(L, Geometry(2)), pos);
       EXPECT_EQ(sorted_masses(lab), flood_fill_masses(L, pos)) << "L = " << L << ", occupancy " << occupancy;
     }
   }
@@ -111,9 +111,9 @@ TEST(DiskClusters, MatchFloodFillOnRandomSquares) {
 
 // 2D grids reach far larger boxes than 3D ones (n^2 cells against n^3).
 TEST(DiskClusters, TheGridTakesBoxesUpTo40000) {
-  EXPECT_THROW(ClusterGrid(5000.0), InputError);
-  EXPECT_EQ(ClusterGrid(5000.0, 2).cells(), 25'000'000);
-  EXPECT_THROW(ClusterGrid(40001.0, 2), InputError);
+  EXPECT_THROW(ClusterGrid(5000.0, Geometry(3)), InputError);
+  EXPECT_EQ(ClusterGrid(5000.0, Geometry(2)).cells(), 25'000'000);
+  EXPECT_THROW(ClusterGrid(40001.0, Geometry(2)), InputError);
 }
 
 }  // namespace

@@ -59,7 +59,7 @@ std::vector<std::int64_t> ring_walk_masses(double L, const std::vector<double>& 
 // On a ring of 10 segments: segment 0 with two rods, 1 and 9 join it across
 // the ends (mass 4); 5 and 6 touch (mass 2); 3 is alone (mass 1).
 TEST(RodClusters, AHandMadeConfigurationIsCountedExactly) {
-  const ClusterGrid grid(10.0, 1);
+  const ClusterGrid grid(10.0, Geometry(1));
   EXPECT_EQ(grid.cells(), 10);
   EXPECT_EQ(grid.rows_per_plane(), 1);
   EXPECT_EQ(grid.planes(), 1);
@@ -83,7 +83,7 @@ TEST(RodClusters, AFullRingIsOneCluster) {
     std::vector<double> x;
     for (int i = 0; i < n; ++i) x.push_back(i + 0.5);
     ClusterLabeller lab;
-    lab.label(ClusterGrid(n, 1), rods(x));
+    lab.label(ClusterGrid(n, Geometry(1)), rods(x));
     EXPECT_EQ(sorted_rod_masses(lab), (std::vector<std::int64_t>{n})) << n;
   }
 }
@@ -97,7 +97,7 @@ TEST(RodClusters, MatchTheWalkRoundTheRingOnRandomRods) {
       std::vector<double> pos(3 * n, 0.0);
       for (std::size_t p = 0; p < n; ++p) pos[3 * p] = L * rng.uniform();
       ClusterLabeller lab;
-      lab.label(ClusterGrid(L, 1), pos);
+      lab.label(ClusterGrid(L, Geometry(1)), pos);
       EXPECT_EQ(sorted_rod_masses(lab), ring_walk_masses(L, pos)) << "L = " << L << ", occupancy " << occupancy;
     }
   }
@@ -116,7 +116,7 @@ TEST(RodClusters, RandomOccupationIsOneDimensionalPercolation) {
     for (int i = 0; i < n; ++i)
       if (rng.uniform() < p) x.push_back(i + 0.5);
     ClusterLabeller lab;
-    lab.label(ClusterGrid(n, 1), rods(x));
+    lab.label(ClusterGrid(n, Geometry(1)), rods(x));
     double k = 0, s1 = 0, s2 = 0, s3 = 0, s4 = 0;
     lab.for_each_mass([&](std::int64_t m) {
       const double s = double(m);
@@ -136,10 +136,10 @@ TEST(RodClusters, RandomOccupationIsOneDimensionalPercolation) {
 // A line holds far more cells than a plane: the grid takes rings up to
 // L < 2^31 - 64, and no 1D cell index overflows.
 TEST(RodClusters, TheGridTakesRingsUpToTwoToThe31) {
-  EXPECT_THROW(ClusterGrid(40001.0, 2), InputError);
-  EXPECT_EQ(ClusterGrid(1e9, 1).cells(), 1'000'000'000);
-  EXPECT_THROW(ClusterGrid(2147483584.0, 1), InputError);
-  EXPECT_THROW(ClusterGrid(0.5, 1), InputError);
+  EXPECT_THROW(ClusterGrid(40001.0, Geometry(2)), InputError);
+  EXPECT_EQ(ClusterGrid(1e9, Geometry(1)).cells(), 1'000'000'000);
+  EXPECT_THROW(ClusterGrid(2147483584.0, Geometry(1)), InputError);
+  EXPECT_THROW(ClusterGrid(0.5, Geometry(1)), InputError);
 }
 
 }  // namespace

@@ -22,7 +22,7 @@ std::vector<double> cell_centres(const std::vector<std::array<int, 3>>& cells, i
 
 Shape only_shape(const std::vector<double>& p, int L) {
   ClusterShapes shapes;
-  const auto s = shapes.of_particles(ClusterGrid(L), p);
+  const auto s = shapes.of_particles(ClusterGrid(L, Geometry(3)), p);
   EXPECT_EQ(s.size(), 1u);
   EXPECT_FALSE(s[0].wraps);
   return s[0].shape;
@@ -110,7 +110,7 @@ TEST(ClusterShape, ClusterSpanningTheBoxIsFlaggedAsWrapping) {
   for (int i = 0; i < L; ++i) cells.push_back({i, 3, 3});
   cells.push_back({5, 8, 8});
   ClusterShapes shapes;
-  const auto s = shapes.of_particles(ClusterGrid(L), cell_centres(cells, L));
+  const auto s = shapes.of_particles(ClusterGrid(L, Geometry(3)), cell_centres(cells, L));
   ASSERT_EQ(s.size(), 2u);
   EXPECT_TRUE(s[0].wraps);
   EXPECT_EQ(s[0].shape.mass, L);
@@ -120,7 +120,7 @@ TEST(ClusterShape, ClusterSpanningTheBoxIsFlaggedAsWrapping) {
 // Aggregates: solid spheres of diameter m^(1/3), R_g^2 = (3/5)(d/2)^2.
 TEST(ClusterShape, AggregatesAreSolidSpheres) {
   const std::vector<double> m{8, 27, 1};
-  const auto s = aggregate_shapes(m);
+  const auto s = aggregate_shapes(m, Geometry(3));
   ASSERT_EQ(s.size(), 3u);
   EXPECT_EQ(s[0].shape.mass, 27);
   EXPECT_NEAR(s[0].shape.Rg, std::sqrt(0.6) * 1.5, 1e-12);

@@ -26,7 +26,7 @@ TEST(DiskGyration, RectanglesHaveTheirExactEigenvalues) {
     GyrationSums g;
     for (int i = 0; i < a; ++i)
       for (int j = 0; j < b; ++j) g.add(0.3 + i, -2.0 + j, 0.0);
-    const Shape s = shape_of(g, 2);
+    const Shape s = shape_of(g, Geometry(2));
     const double la = (a * a - 1) / 12.0, lb = (b * b - 1) / 12.0;
     EXPECT_NEAR(s.lambda[0], std::min(la, lb), 1e-12);
     EXPECT_NEAR(s.lambda[1], std::max(la, lb), 1e-12);
@@ -42,7 +42,7 @@ TEST(DiskGyration, RectanglesHaveTheirExactEigenvalues) {
 TEST(DiskGyration, ADiagonalRodIsARod) {
   GyrationSums g;
   for (int i = 0; i < 9; ++i) g.add(i, i, 0);
-  const Shape s = shape_of(g, 2);
+  const Shape s = shape_of(g, Geometry(2));
   EXPECT_NEAR(s.lambda[0], 0, 1e-12);
   EXPECT_NEAR(s.lambda[1], 2 * 80 / 12.0, 1e-12);
   EXPECT_NEAR(s.asphericity, 1, 1e-12);
@@ -60,7 +60,7 @@ TEST(DiskClusterShapes, RodsAreUnwrappedAndFullRowsWrap) {
   std::vector<std::pair<int, int>> squares{{18, 4}, {19, 4}, {0, 4}, {1, 4}, {2, 4}};
   for (int j = 0; j < 20; ++j) squares.push_back({10, j});
   ClusterShapes shapes;
-  const auto s = shapes.of_particles(ClusterGrid(20.0, 2), square_centres(squares));
+  const auto s = shapes.of_particles(ClusterGrid(20.0, Geometry(2)), square_centres(squares));
   ASSERT_EQ(s.size(), 2u);
   EXPECT_EQ(s[0].shape.mass, 20);
   EXPECT_TRUE(s[0].wraps);
@@ -83,9 +83,9 @@ TEST(DiskMassRadius, RodsAndSquaresHaveDimensionOneAndTwo) {
     for (int i = 0; i < n; ++i) rod.push_back({2 + i, 3});
     for (int i = 0; i < n / 2; ++i)
       for (int j = 0; j < n / 2; ++j) square.push_back({2 + i, 2 + j});
-    for (const auto& c : shapes.of_particles(ClusterGrid(64.0, 2), square_centres(rod))) rods.push_back(c);
+    for (const auto& c : shapes.of_particles(ClusterGrid(64.0, Geometry(2)), square_centres(rod))) rods.push_back(c);
     if (n % 2 == 0)
-      for (const auto& c : shapes.of_particles(ClusterGrid(64.0, 2), square_centres(square))) squares.push_back(c);
+      for (const auto& c : shapes.of_particles(ClusterGrid(64.0, Geometry(2)), square_centres(square))) squares.push_back(c);
   }
   EXPECT_NEAR(fit(rods, "10:").d_f, 1, 0.02);
   EXPECT_NEAR(fit(squares, "10:").d_f, 2, 0.03);
@@ -104,19 +104,19 @@ TEST(DiskMassRadius, PercolationClustersAtThresholdHaveTheKnownFractalDimension)
 TEST(DiskMassRadius, AggregatesAreSolidDiscs) {
   std::vector<double> masses;
   for (int m = 2; m <= 4000; m = m * 5 / 4 + 1) masses.push_back(m);
-  const auto s = aggregate_shapes(masses, 2);
+  const auto s = aggregate_shapes(masses, Geometry(2));
   EXPECT_NEAR(s.back().shape.Rg * s.back().shape.Rg, 2.0 / 8.0, 1e-12);  // the smallest, m = 2
   EXPECT_NEAR(fit(s, "1:").d_f, 2, 1e-9);
 }
 
 // The 2D tables have no lambda3 and no prolateness column, their rows as many entries.
 TEST(DiskShapeTable, TwoDimensionalTablesLeaveOutTheThreeDimensionalInvariants) {
-  EXPECT_EQ(shape_columns(ShapeTable::kClusters, 2),
+  EXPECT_EQ(shape_columns(ShapeTable::kClusters, Geometry(2)),
             (std::vector<std::string>{"t", "mass", "Rg", "lambda1", "lambda2", "asphericity", "wraps"}));
-  EXPECT_EQ(shape_columns(ShapeTable::kSeries, 2).size(), 7u);
+  EXPECT_EQ(shape_columns(ShapeTable::kSeries, Geometry(2)).size(), 7u);
   ClusterShapes shapes;
-  const auto s = shapes.of_particles(ClusterGrid(20.0, 2), square_centres({{1, 1}, {2, 1}, {3, 1}}));
-  const TableBlock b = shape_block(ShapeTable::kClusters, 1.0, s, fit(s, "1:"), 1, 2);
+  const auto s = shapes.of_particles(ClusterGrid(20.0, Geometry(2)), square_centres({{1, 1}, {2, 1}, {3, 1}}));
+  const TableBlock b = shape_block(ShapeTable::kClusters, 1.0, s, fit(s, "1:"), 1, Geometry(2));
   ASSERT_EQ(b.rows.size(), 1u);
   EXPECT_EQ(b.rows[0].size(), 7u);
   EXPECT_NEAR(b.rows[0][3], 0, 1e-12);          // lambda1

@@ -27,7 +27,7 @@ std::vector<ClusterShape> shapes_of(int L, int count, const std::function<std::v
     std::vector<double> p;
     for (const auto& c : object(size))
       for (int a : c) p.push_back(a + 0.5);
-    for (const ClusterShape& s : shapes.of_particles(ClusterGrid(L), p)) out.push_back(s);
+    for (const ClusterShape& s : shapes.of_particles(ClusterGrid(L, Geometry(3)), p)) out.push_back(s);
   }
   return out;
 }

@@ -23,7 +23,7 @@ inline MassRadius percolation_mass_radius(int L, int dimension, double p, std::u
         if (rng.uniform() < p) sites.insert(sites.end(), {i + 0.5, j + 0.5, dimension == 3 ? k + 0.5 : 0.0});
   ClusterShapes shapes;
   MassRadius mr =
-      mass_radius(shapes.of_particles(ClusterGrid(L, dimension), sites), 10, parse_window(fit_from, "--fit-mass"));
+      mass_radius(shapes.of_particles(ClusterGrid(L, Geometry(dimension)), sites), 10, parse_window(fit_from, "--fit-mass"));
   std::printf("%dD percolation at p = %g: d_f = %.3f +- %.3f over %d bins\n", dimension, p, mr.d_f, mr.d_f_err,
               mr.fit_bins);
   return mr;

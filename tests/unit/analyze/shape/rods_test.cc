@@ -26,7 +26,7 @@ TEST(RodGyration, AGridOfMPointsHasRgSquaredMSquaredMinusOneOverTwelve) {
   for (int m : {1, 2, 5, 100}) {
     GyrationSums g;
     for (int i = 0; i < m; ++i) g.add(-3.7 + i, 0, 0);
-    const Shape s = shape_of(g, 1);
+    const Shape s = shape_of(g, Geometry(1));
     EXPECT_EQ(s.mass, m);
     EXPECT_NEAR(s.Rg * s.Rg, (m * m - 1) / 12.0, 1e-12 * m * m) << m;
     EXPECT_NEAR(s.lambda[0], (m * m - 1) / 12.0, 1e-12 * m * m) << m;
@@ -40,7 +40,7 @@ TEST(RodGyration, AGridOfMPointsHasRgSquaredMSquaredMinusOneOverTwelve) {
 // whole again, R_g^2 = 48/12 = 4; one of 3 inside (10..12), 8/12.
 TEST(RodClusterShapes, RodsAcrossTheEndsAreUnwrapped) {
   ClusterShapes shapes;
-  const auto s = shapes.of_particles(ClusterGrid(30.0, 1), segment_centres({27, 28, 29, 0, 1, 2, 3, 10, 11, 12}));
+  const auto s = shapes.of_particles(ClusterGrid(30.0, Geometry(1)), segment_centres({27, 28, 29, 0, 1, 2, 3, 10, 11, 12}));
   ASSERT_EQ(s.size(), 2u);
   EXPECT_EQ(s[0].shape.mass, 7);
   EXPECT_FALSE(s[0].wraps);
@@ -54,7 +54,7 @@ TEST(RodClusterShapes, AFullRingWraps) {
   std::vector<int> all;
   for (int i = 0; i < 20; ++i) all.push_back(i);
   ClusterShapes shapes;
-  const auto s = shapes.of_particles(ClusterGrid(20.0, 1), segment_centres(all));
+  const auto s = shapes.of_particles(ClusterGrid(20.0, Geometry(1)), segment_centres(all));
   ASSERT_EQ(s.size(), 1u);
   EXPECT_EQ(s[0].shape.mass, 20);
   EXPECT_TRUE(s[0].wraps);
@@ -72,7 +72,7 @@ TEST(RodMassRadius, RunsOfSegmentsHaveDimensionOne) {
   for (int m = 1; m <= 200; ++m) {
     std::vector<int> run;
     for (int i = 0; i < m; ++i) run.push_back(5 + i);
-    for (const auto& c : shapes.of_particles(ClusterGrid(256.0, 1), segment_centres(run))) rods.push_back(c);
+    for (const auto& c : shapes.of_particles(ClusterGrid(256.0, Geometry(1)), segment_centres(run))) rods.push_back(c);
   }
   const MassRadius mr = fit_rods(rods, "10:");
   EXPECT_NEAR(mr.d_f, 1, 0.01);
@@ -83,7 +83,7 @@ TEST(RodMassRadius, RunsOfSegmentsHaveDimensionOne) {
 TEST(RodMassRadius, AggregatesAreSolidRods) {
   std::vector<double> masses;
   for (int m = 2; m <= 4000; m = m * 5 / 4 + 1) masses.push_back(m);
-  const auto s = aggregate_shapes(masses, 1);
+  const auto s = aggregate_shapes(masses, Geometry(1));
   EXPECT_NEAR(s.back().shape.Rg * s.back().shape.Rg, 4 / 12.0, 1e-12);  // the smallest, m = 2
   EXPECT_EQ(s.back().shape.lambda[1], 0.0);
   EXPECT_NEAR(fit_rods(s, "1:").d_f, 1, 1e-9);
@@ -91,14 +91,14 @@ TEST(RodMassRadius, AggregatesAreSolidRods) {
 
 // The 1D tables keep R_g (and lambda1 = R_g^2) and drop every shape invariant.
 TEST(RodShapeTable, OneDimensionalTablesKeepOnlyTheRadiusOfGyration) {
-  EXPECT_EQ(shape_columns(ShapeTable::kClusters, 1), (std::vector<std::string>{"t", "mass", "Rg", "lambda1", "wraps"}));
-  EXPECT_EQ(shape_columns(ShapeTable::kMassRadius, 1),
+  EXPECT_EQ(shape_columns(ShapeTable::kClusters, Geometry(1)), (std::vector<std::string>{"t", "mass", "Rg", "lambda1", "wraps"}));
+  EXPECT_EQ(shape_columns(ShapeTable::kMassRadius, Geometry(1)),
             (std::vector<std::string>{"t", "m", "dm", "clusters", "Rg", "Rg_err"}));
-  EXPECT_EQ(shape_columns(ShapeTable::kSeries, 1),
+  EXPECT_EQ(shape_columns(ShapeTable::kSeries, Geometry(1)),
             (std::vector<std::string>{"t", "d_f", "d_f_err", "fit_bins", "fitted_clusters", "wrapping_fraction"}));
   ClusterShapes shapes;
-  const auto s = shapes.of_particles(ClusterGrid(20.0, 1), segment_centres({1, 2, 3}));
-  const TableBlock b = shape_block(ShapeTable::kClusters, 1.0, s, fit_rods(s, "1:"), 1, 1);
+  const auto s = shapes.of_particles(ClusterGrid(20.0, Geometry(1)), segment_centres({1, 2, 3}));
+  const TableBlock b = shape_block(ShapeTable::kClusters, 1.0, s, fit_rods(s, "1:"), 1, Geometry(1));
   ASSERT_EQ(b.rows.size(), 1u);
   ASSERT_EQ(b.rows[0].size(), 5u);
   EXPECT_NEAR(b.rows[0][2], std::sqrt(8 / 12.0), 1e-12);  // Rg

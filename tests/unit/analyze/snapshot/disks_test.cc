@@ -25,7 +25,7 @@ TEST(DiskSnapshot, ThePlaneShowsEveryDiskColouredByItsCluster) {
   SnapshotOptions o;
   o.view = SnapshotView::kPlane;
   o.colored = 3;
-  const auto s = make_scene(ClusterGrid(10.0, 2), disks(), o);
+  const auto s = make_scene(ClusterGrid(10.0, Geometry(2)), disks(), o);
   ASSERT_EQ(s.points.size(), 8u);
   ASSERT_EQ(s.clusters.size(), 3u);
   EXPECT_EQ(s.clusters[0].mass, 4);

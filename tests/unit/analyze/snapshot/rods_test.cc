@@ -59,7 +59,7 @@ std::string write_rod_run(const std::string& dir) {
   RunParameters p;
   p.N = 4;
   p.L = 12;
-  H5mdWriter w = H5mdWriter::create(path, p, true, {}, 1);
+  H5mdWriter w = H5mdWriter::create(path, p, true, Geometry(1));
   const std::int32_t img[12] = {};
   for (int f = 0; f < 4; ++f) {
     const double pos[12] = {1, 0, 0, 4, 0, 0, 6.5, 0, 0, 11.5, 0, 0};

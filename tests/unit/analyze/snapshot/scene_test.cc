@@ -25,7 +25,7 @@ TEST(SnapshotScene, SlabColoursTheLargestClustersInRankOrder) {
   SnapshotOptions o;
   o.thickness = 2;  // 4 < z < 6
   o.colored = 2;
-  const auto s = make_scene(ClusterGrid(10.0), positions(), o);
+  const auto s = make_scene(ClusterGrid(10.0, Geometry(3)), positions(), o);
   ASSERT_EQ(s.points.size(), 8u);  // the particle at z = 0.5 is outside the slab
   ASSERT_EQ(s.clusters.size(), 2u);
   EXPECT_EQ(s.clusters[0].mass, 5);
@@ -46,11 +46,11 @@ TEST(SnapshotScene, ThreeDimensionalViewKeepsAtMostMaxPoints) {
   o.view = SnapshotView::k3d;
   o.colored = 0;
   o.max_points = 3;
-  const auto s = make_scene(ClusterGrid(10.0), positions(), o);
+  const auto s = make_scene(ClusterGrid(10.0, Geometry(3)), positions(), o);
   EXPECT_EQ(s.points.size(), 3u);  // every 3rd of the 9 particles
   EXPECT_TRUE(s.clusters.empty());
   o.max_points = 100;
-  EXPECT_EQ(make_scene(ClusterGrid(10.0), positions(), o).points.size(), 9u);
+  EXPECT_EQ(make_scene(ClusterGrid(10.0, Geometry(3)), positions(), o).points.size(), 9u);
 }
 
 // Aggregates: ranked by mass (ties by the smaller id), drawn at diameter
@@ -80,10 +80,10 @@ TEST(SnapshotScene, AggregatesAreRankedByMassAndDrawnAtTheirDiameter) {
 TEST(SnapshotScene, RejectsBadOptions) {
   SnapshotOptions o;
   o.colored = palette_size() + 1;
-  EXPECT_THROW(make_scene(ClusterGrid(10.0), positions(), o), InputError);
+  EXPECT_THROW(make_scene(ClusterGrid(10.0, Geometry(3)), positions(), o), InputError);
   o.colored = 1;
   o.thickness = 0;
-  EXPECT_THROW(make_scene(ClusterGrid(10.0), positions(), o), InputError);
+  EXPECT_THROW(make_scene(ClusterGrid(10.0, Geometry(3)), positions(), o), InputError);
 }
 
 }  // namespace

@@ -35,7 +35,7 @@ std::vector<double> square_lattice(int cells, double L, double ox, double oy) {
 TEST(DiskStructureFactor, UniformRandomPointsGiveOne) {
   const double L = 40;
   const auto p = uniform_disks(20000, L, 31);
-  FrameStructure fs(64, 2);
+  FrameStructure fs(64, Geometry(2));
   const auto shells = fs.spectrum(L, p, {});
   ASSERT_EQ(shells.size(), 16u);
   test::expect_poisson_shells(shells);
@@ -58,7 +58,7 @@ TEST(DiskStructureFactor, SquareLatticeHasBraggPeaksOnlyAtItsReciprocalLattice) 
   for (auto& [s, c] : bragg) c /= 2;
   EXPECT_EQ(bragg.at(8), 2);   // (1 0), (0 1)
   EXPECT_EQ(bragg.at(11), 2);  // (1 1), (1 -1): 8 sqrt 2 = 11.3
-  FrameStructure fs(n, 2);
+  FrameStructure fs(n, Geometry(2));
   double off_peak = 0;
   for (const Shell& s : fs.spectrum(L, p, {})) {
     const auto b = bragg.find(s.index);
@@ -76,9 +76,9 @@ TEST(DiskStructureFactor, SquareLatticeHasBraggPeaksOnlyAtItsReciprocalLattice) 
 TEST(DiskStructureFactor, GridMatchesTheExactSum) {
   const double L = 24;
   const auto p = uniform_disks(4000, L, 32);
-  FrameStructure fs(32, 2);
+  FrameStructure fs(32, Geometry(2));
   const auto shells = fs.spectrum(L, p, {});
-  const auto direct = direct_structure_factor(L, p, {}, 3, 2);
+  const auto direct = direct_structure_factor(L, p, {}, 3, Geometry(2));
   for (int s = 1; s <= 3; ++s) {
     const double u = (s + 0.5) / 32, alias = std::exp(M_PI * M_PI / 3 * u * u) - 1;
     EXPECT_NEAR(shells[s - 1].S, direct[s - 1], 3 * 2 * alias * std::sqrt(direct[s - 1])) << "shell " << s;
@@ -87,7 +87,7 @@ TEST(DiskStructureFactor, GridMatchesTheExactSum) {
   int modes = 0;
   for (int a = -4; a <= 4; ++a)
     for (int b = -4; b <= 4; ++b) modes += shell_of(long(a) * a + long(b) * b) == 4;
-  const auto exact = direct_structure_factor(8, square_lattice(4, 8, 0.3, 0.1), {}, 4, 2);
+  const auto exact = direct_structure_factor(8, square_lattice(4, 8, 0.3, 0.1), {}, 4, Geometry(2));
   EXPECT_NEAR(exact[3], 16.0 * 4 / modes, 1e-9);  // 4 of the shell's vectors are Bragg vectors
   EXPECT_NEAR(exact[0], 0, 1e-9);
 }

@@ -24,7 +24,7 @@ TEST(GrowingLength, RandomSpheresGiveTheLengthOfTheirFormFactor) {
   const double L = 64, R = 2;
   const int per_sphere = 33;
   const auto p = test::sphere_points(320, per_sphere, R, L, 31);
-  FrameStructure fs(64);
+  FrameStructure fs(64, Geometry(3));
   const auto shells = fs.spectrum(L, p, {});
   const PeakLength measured = peak_length(shells, 1, 0.1);
   std::vector<Shell> exact = shells;
@@ -63,7 +63,7 @@ TEST(GrowingLength, WavesGiveTheirCorrelationLengths) {
     p.insert(p.end(), {x, y, z});
     v.insert(v.end(), {0.0, std::sin(k * z), 0.0});
   }
-  FrameStructure fs(32);
+  FrameStructure fs(32, Geometry(3));
   fs.spectrum(L, p, {});
   const double L_C = first_zero(fs.density_correlation(L));
   const double L_v = first_zero(fs.momentum_correlation(L, p, v, {}));
@@ -77,7 +77,7 @@ TEST(GrowingLength, WavesGiveTheirCorrelationLengths) {
 TEST(GrowingLength, RandomSpheresDecorrelateAtTheirDiameter) {
   const double L = 64, R = 3;
   const auto p = test::sphere_points(200, 110, R, L, 32);
-  FrameStructure fs(64);
+  FrameStructure fs(64, Geometry(3));
   fs.spectrum(L, p, {});
   EXPECT_NEAR(first_zero(fs.density_correlation(L)), 2 * R, 1.0);
 }

@@ -41,7 +41,7 @@ std::vector<double> rod_lattice(int m, double L, double offset) {
 TEST(RodStructureFactor, UniformRandomPointsGiveOne) {
   const double L = 3000;
   const auto p = uniform_rods(30000, L, 51);
-  FrameStructure fs(1024, 1);
+  FrameStructure fs(1024, Geometry(1));
   const auto shells = fs.spectrum(L, p, {});
   ASSERT_EQ(shells.size(), 256u);
   double sum = 0;
@@ -63,7 +63,7 @@ TEST(RodStructureFactor, UniformRandomPointsGiveOne) {
 TEST(RodStructureFactor, LatticeHasBraggPeaksOnlyAtItsReciprocalLattice) {
   const double L = 16;
   const auto p = rod_lattice(8, L, 0.137);
-  FrameStructure fs(128, 1);
+  FrameStructure fs(128, Geometry(1));
   double off_peak = 0;
   for (const Shell& s : fs.spectrum(L, p, {})) {
     if (s.index % 8 != 0) {
@@ -73,7 +73,7 @@ TEST(RodStructureFactor, LatticeHasBraggPeaksOnlyAtItsReciprocalLattice) {
     }
   }
   EXPECT_LT(off_peak, 0.02);
-  const auto exact = direct_structure_factor(L, p, {}, 16, 1);
+  const auto exact = direct_structure_factor(L, p, {}, 16, Geometry(1));
   for (int s = 1; s <= 16; ++s) EXPECT_NEAR(exact[s - 1], s % 8 == 0 ? 8.0 : 0.0, 1e-9) << "shell " << s;
 }
 
@@ -82,9 +82,9 @@ TEST(RodStructureFactor, LatticeHasBraggPeaksOnlyAtItsReciprocalLattice) {
 TEST(RodStructureFactor, GridMatchesTheExactSum) {
   const double L = 64;
   const auto p = uniform_rods(2000, L, 52);
-  FrameStructure fs(64, 1);
+  FrameStructure fs(64, Geometry(1));
   const auto shells = fs.spectrum(L, p, {});
-  const auto direct = direct_structure_factor(L, p, {}, 4, 1);
+  const auto direct = direct_structure_factor(L, p, {}, 4, Geometry(1));
   for (int s = 1; s <= 4; ++s) {
     const double u = (s + 0.5) / 64, alias = std::exp(M_PI * M_PI / 3 * u * u) - 1;
     EXPECT_NEAR(shells[s - 1].S, direct[s - 1], 3 * 2 * alias * std::sqrt(direct[s - 1])) << "shell " << s;
@@ -103,7 +103,7 @@ TEST(RodStructureFactor, CorrelationsRunAlongTheLine) {
     if (1.8 * rng.uniform() > 1 + 0.8 * std::cos(k * x)) continue;
     p.insert(p.end(), {x, 0.0, 0.0});
   }
-  FrameStructure fs(256, 1);
+  FrameStructure fs(256, Geometry(1));
   fs.spectrum(L, p, {});
   EXPECT_NEAR(first_zero(fs.density_correlation(L)), lambda / 4, 0.02 * lambda);
   const auto u = uniform_rods(100000, L, 54);
@@ -122,7 +122,7 @@ TEST(RodStructureFactor, TheToolReadsA1DFile) {
     RunParameters par;
     par.N = 5000;
     par.L = L;
-    H5mdWriter w = H5mdWriter::create(path, par, false, {}, 1);
+    H5mdWriter w = H5mdWriter::create(path, par, false, Geometry(1));
     const std::vector<double> vel(p.size(), 0.5);
     const std::vector<std::int32_t> img(p.size(), 0);
     w.add_frame({2.0, 10, 0, p.data(), img.data(), vel.data()});

@@ -43,7 +43,7 @@ TEST(StructureFactor, CicWindowSumsOverAliases) {
 TEST(StructureFactor, UniformRandomPointsGiveOne) {
   const double L = 20;
   const auto p = test::uniform_points(30000, L, 11);
-  FrameStructure fs(32);
+  FrameStructure fs(32, Geometry(3));
   const auto shells = fs.spectrum(L, p, {});
   ASSERT_EQ(shells.size(), 8u);
   test::expect_poisson_shells(shells);
@@ -57,7 +57,7 @@ TEST(StructureFactor, WeightedRandomPointsGiveTheWeightedShotNoise) {
   std::vector<double> m(20000);
   for (double& x : m) x = 1 + double(rng.below(20));
   const Weights w = weights_of(m, m.size());
-  FrameStructure fs(32);
+  FrameStructure fs(32, Geometry(3));
   for (const Shell& s : fs.spectrum(L, p, m)) EXPECT_NEAR(s.S / w.shot, 1, 4 * s.S_err / w.shot) << s.index;
   EXPECT_GT(w.shot, 10);
 }
@@ -85,7 +85,7 @@ TEST(StructureFactor, FccLatticeHasBraggPeaksOnlyAtItsReciprocalLattice) {
   for (auto& [s, c] : bragg) c /= 2;  // G and -G are one mode
   EXPECT_EQ(bragg.at(10), 4);  // (111): |G| L/2pi = 6 sqrt 3 = 10.4, 8 vectors
   EXPECT_EQ(bragg.at(12), 3);  // (200): 12, 6 vectors
-  FrameStructure fs(n);
+  FrameStructure fs(n, Geometry(3));
   const auto shells = fs.spectrum(L, p, {});
   double off_peak = 0, lowest_peak = 1e300;
   for (const Shell& s : shells) {
@@ -106,9 +106,9 @@ TEST(StructureFactor, FccLatticeHasBraggPeaksOnlyAtItsReciprocalLattice) {
 // structure_factor.h: |S_grid - S_exact| <= 3 * 2 (1/W - 1) sqrt(s S), with W
 // the window at the shell's outer edge (1/W - 1 ~ exp((pi^2/3) |u|^2) - 1).
 void expect_grid_matches_direct(const std::vector<double>& p, double L, int n, int shells_checked) {
-  FrameStructure fs(n);
+  FrameStructure fs(n, Geometry(3));
   const auto shells = fs.spectrum(L, p, {});
-  const auto direct = direct_structure_factor(L, p, {}, shells_checked);
+  const auto direct = direct_structure_factor(L, p, {}, shells_checked, Geometry(3));
   for (int s = 1; s <= shells_checked; ++s) {
     const double u = (s + 0.5) / n, alias = std::exp(M_PI * M_PI / 3 * u * u) - 1;
     const double bound = 3 * 2 * alias * std::sqrt(direct[s - 1]);

@@ -33,13 +33,13 @@ std::vector<double> maxwellian_2d(std::uint64_t seed, double sigma, std::size_t 
 }
 
 TEST(DiskVelocities, MaxwellianKurtosisIsZeroWithTheTwoDimensionalError) {
-  const SpeedMoments m = speed_moments(maxwellian_2d(21, 1.7), 2);
+  const SpeedMoments m = speed_moments(maxwellian_2d(21, 1.7), Geometry(2));
   const double expected_err = 2.0 / std::sqrt(double(kDisks));
   EXPECT_NEAR(m.kappa_err, expected_err, 0.02 * expected_err);
   EXPECT_LT(std::abs(m.kappa), 2 * m.kappa_err) << "kappa = " << m.kappa;
   EXPECT_NEAR(m.v_rms, 1.7, 5 * 1.7 / std::sqrt(4.0 * kDisks));  // σ of the v_rms estimate ≈ σ/√(4N)
   // Read with the 3D reference the same disks look far from Maxwellian: 2 - 5/3.
-  EXPECT_NEAR(speed_moments(maxwellian_2d(21, 1.7), 3).kappa, 1.0 / 3.0, 3 * m.kappa_err);
+  EXPECT_NEAR(speed_moments(maxwellian_2d(21, 1.7), Geometry(3)).kappa, 1.0 / 3.0, 3 * m.kappa_err);
 }
 
 // Laplace components of scale b: <x²> = 2b², <x⁴> = 24b⁴; in 2D <v²> = 4b²,
@@ -47,7 +47,7 @@ TEST(DiskVelocities, MaxwellianKurtosisIsZeroWithTheTwoDimensionalError) {
 TEST(DiskVelocities, LaplaceKurtosisIsThreeHalves) {
   Random rng(22);
   auto exponential = [&] { return -0.4 * std::log(1.0 - rng.uniform()); };
-  const SpeedMoments m = speed_moments(disk_velocities(kDisks, [&] { return exponential() - exponential(); }), 2);
+  const SpeedMoments m = speed_moments(disk_velocities(kDisks, [&] { return exponential() - exponential(); }), Geometry(2));
   EXPECT_LT(std::abs(m.kappa - 1.5), 3 * m.kappa_err) << "kappa = " << m.kappa << " +- " << m.kappa_err;
   EXPECT_NEAR(m.v_rms, std::sqrt(2.0) * 0.4, 1e-3);
 }
@@ -55,9 +55,9 @@ TEST(DiskVelocities, LaplaceKurtosisIsThreeHalves) {
 // Φ counts 2N components (vz = 0 is no sample) and is the unit Gaussian.
 TEST(DiskVelocities, PhiIsTheUnitGaussianOverTwoComponents) {
   const auto v = maxwellian_2d(23, 0.6);
-  const SpeedMoments m = speed_moments(v, 2);
+  const SpeedMoments m = speed_moments(v, Geometry(2));
   ComponentHistogram h(80, 4.0);
-  h.fill(v, m.v_rms, 2);
+  h.fill(v, m.v_rms, Geometry(2));
   EXPECT_EQ(h.samples(), std::int64_t(2 * kDisks));
   double integral = 0;
   for (int j = 0; j < h.bins(); ++j) integral += h.phi(j) * h.width();
@@ -77,7 +77,7 @@ TEST(DiskVelocities, TheToolReadsA2DFile) {
   const auto vel = maxwellian_2d(24, 1.0, n);
   const Table t = test::velocity_series_of(path, vel, 600, 2);
   ASSERT_EQ(t.rows.size(), 1u);
-  const SpeedMoments m = speed_moments(vel, 2);
+  const SpeedMoments m = speed_moments(vel, Geometry(2));
   EXPECT_EQ(t.rows[0][t.column("kappa")], m.kappa);
   EXPECT_EQ(t.rows[0][t.column("v_rms")], m.v_rms);
   EXPECT_EQ(t.get("dimension"), "2");

@@ -34,13 +34,13 @@ std::vector<double> maxwellian_1d(std::uint64_t seed, double sigma, std::size_t 
 
 TEST(RodVelocities, MaxwellianKurtosisIsZeroWithTheOneDimensionalError) {
   EXPECT_EQ(maxwellian_speed_ratio(1), 3.0);
-  const SpeedMoments m = speed_moments(maxwellian_1d(31, 0.8), 1);
+  const SpeedMoments m = speed_moments(maxwellian_1d(31, 0.8), Geometry(1));
   const double expected_err = std::sqrt(24.0 / double(kRods));
   EXPECT_NEAR(m.kappa_err, expected_err, 0.03 * expected_err);
   EXPECT_LT(std::abs(m.kappa), 2 * m.kappa_err) << "kappa = " << m.kappa;
   EXPECT_NEAR(m.v_rms, 0.8, 5 * 0.8 / std::sqrt(2.0 * kRods));  // σ of the v_rms estimate = σ/√(2N)
   // Read as disks, the same rods are far from Maxwellian: 3 - 2.
-  EXPECT_NEAR(speed_moments(maxwellian_1d(31, 0.8), 2).kappa, 1.0, 3 * m.kappa_err);
+  EXPECT_NEAR(speed_moments(maxwellian_1d(31, 0.8), Geometry(2)).kappa, 1.0, 3 * m.kappa_err);
 }
 
 // Laplace velocities of scale b: <v²> = 2b², <v⁴> = 24b⁴: κ = 6 - 3 = 3;
@@ -48,7 +48,7 @@ TEST(RodVelocities, MaxwellianKurtosisIsZeroWithTheOneDimensionalError) {
 TEST(RodVelocities, LaplaceKurtosisIsThree) {
   Random rng(32);
   auto exponential = [&] { return -0.4 * std::log(1.0 - rng.uniform()); };
-  const SpeedMoments m = speed_moments(rod_velocities(kRods, [&] { return exponential() - exponential(); }), 1);
+  const SpeedMoments m = speed_moments(rod_velocities(kRods, [&] { return exponential() - exponential(); }), Geometry(1));
   EXPECT_LT(std::abs(m.kappa - 3), 3 * m.kappa_err) << "kappa = " << m.kappa << " +- " << m.kappa_err;
   EXPECT_NEAR(m.v_rms, std::sqrt(2.0) * 0.4, 2e-3);
 }
@@ -56,9 +56,9 @@ TEST(RodVelocities, LaplaceKurtosisIsThree) {
 // Φ counts N components (vy = vz = 0 are no samples) and is the unit Gaussian.
 TEST(RodVelocities, PhiIsTheUnitGaussianOverOneComponent) {
   const auto v = maxwellian_1d(33, 1.3);
-  const SpeedMoments m = speed_moments(v, 1);
+  const SpeedMoments m = speed_moments(v, Geometry(1));
   ComponentHistogram h(60, 3.0);
-  h.fill(v, m.v_rms, 1);
+  h.fill(v, m.v_rms, Geometry(1));
   EXPECT_EQ(h.samples(), std::int64_t(kRods));
   for (int j = 0; j < h.bins(); ++j) {  // each bin against the Gaussian's mass in it, within 5 Poisson errors
     const double a = h.center(j) - h.width() / 2, b = a + h.width();
@@ -75,7 +75,7 @@ TEST(RodVelocities, TheToolReadsA1DFile) {
   const auto vel = maxwellian_1d(34, 1.0, n);
   const Table t = test::velocity_series_of(path, vel, 2e5, 1);
   ASSERT_EQ(t.rows.size(), 1u);
-  const SpeedMoments m = speed_moments(vel, 1);
+  const SpeedMoments m = speed_moments(vel, Geometry(1));
   EXPECT_EQ(t.rows[0][t.column("kappa")], m.kappa);
   EXPECT_EQ(t.rows[0][t.column("v_rms")], m.v_rms);
   EXPECT_EQ(t.get("dimension"), "1");

@@ -42,7 +42,7 @@ std::vector<double> laplace(std::uint64_t seed, double b) {
 // is sqrt(40 / (27 N)) (from the χ²₃ moments 3, 15, 105, 945; derivation in
 // analyze/velocity/distribution.cc).
 TEST(SpeedMoments, GaussianKurtosisIsZeroWithinItsStandardError) {
-  const SpeedMoments m = speed_moments(gaussian(11, 2.5));
+  const SpeedMoments m = speed_moments(gaussian(11, 2.5), Geometry(3));
   const double expected_err = std::sqrt(40.0 / (27.0 * kParticles));
   EXPECT_NEAR(m.kappa_err, expected_err, 0.02 * expected_err);
   EXPECT_LT(std::abs(m.kappa), 2 * m.kappa_err) << "kappa = " << m.kappa;
@@ -52,16 +52,16 @@ TEST(SpeedMoments, GaussianKurtosisIsZeroWithinItsStandardError) {
 // Laplace components of scale b: <x²> = 2b², <x⁴> = 24b⁴, so for the speed
 // <v²> = 6b² and <v⁴> = 3·24b⁴ + 6·(2b²)² = 96b⁴: κ = 96/36 - 5/3 = 1 exactly.
 TEST(SpeedMoments, LaplaceKurtosisIsOne) {
-  const SpeedMoments m = speed_moments(laplace(12, 0.3));
+  const SpeedMoments m = speed_moments(laplace(12, 0.3), Geometry(3));
   EXPECT_LT(std::abs(m.kappa - 1.0), 3 * m.kappa_err) << "kappa = " << m.kappa << " +- " << m.kappa_err;
   EXPECT_NEAR(m.v_rms, std::sqrt(2.0) * 0.3, 1e-3);
 }
 
 TEST(ComponentHistogram, IntegratesToTheFractionInsideTheRange) {
   const auto v = gaussian(13);
-  const SpeedMoments m = speed_moments(v);
+  const SpeedMoments m = speed_moments(v, Geometry(3));
   ComponentHistogram h(80, 4.0);
-  h.fill(v, m.v_rms);
+  h.fill(v, m.v_rms, Geometry(3));
   double integral = 0;
   for (int j = 0; j < h.bins(); ++j) integral += h.phi(j) * h.width();
   // P(|y| < 4) for a unit Gaussian = erf(4/√2) = 0.99993666 (exact), up to sampling noise.
@@ -103,7 +103,7 @@ double laplace_prob(double a, double b) { return std::exp(-std::sqrt(2.0) * a) -
 TEST(TailFit, GaussianTailMatchesTheExactExpectation) {
   const auto v = gaussian(14);
   ComponentHistogram h(120, 6.0);
-  h.fill(v, speed_moments(v).v_rms);
+  h.fill(v, speed_moments(v, Geometry(3)).v_rms, Geometry(3));
   const auto fit = fit_tail(tail_points(h, 1.5, 25));
   ASSERT_TRUE(fit);
   const double want = expected_beta(h, 1.5, 25, gaussian_prob);
@@ -117,7 +117,7 @@ TEST(TailFit, GaussianTailMatchesTheExactExpectation) {
 TEST(TailFit, ExponentialTailMatchesTheExactExpectation) {
   const auto v = laplace(15, 1.0);
   ComponentHistogram h(120, 12.0);
-  h.fill(v, speed_moments(v).v_rms);
+  h.fill(v, speed_moments(v, Geometry(3)).v_rms, Geometry(3));
   const auto fit = fit_tail(tail_points(h, 1.5, 25));
   ASSERT_TRUE(fit);
   const double want = expected_beta(h, 1.5, 25, laplace_prob);
@@ -130,7 +130,7 @@ TEST(ComponentHistogram, RejectsBadBins) {
   EXPECT_THROW(ComponentHistogram(7, 5.0), InputError);
   EXPECT_THROW(ComponentHistogram(0, 5.0), InputError);
   EXPECT_THROW(ComponentHistogram(10, 0.0), InputError);
-  EXPECT_THROW(speed_moments(std::vector<double>(6, 0.0)), InputError);  // v_rms = 0
+  EXPECT_THROW(speed_moments(std::vector<double>(6, 0.0), Geometry(3)), InputError);  // v_rms = 0
 }
 
 // The tool end to end on a file from the real writer: the series row carries
@@ -144,9 +144,9 @@ TEST(VelocityTool, SeriesRowMatchesTheLibrary) {
   const Table t = test::velocity_series_of(path, vel, 100, 3);
   ASSERT_EQ(t.rows.size(), 1u);
   const VelocityOptions o;
-  const SpeedMoments m = speed_moments(vel);
+  const SpeedMoments m = speed_moments(vel, Geometry(3));
   ComponentHistogram h(o.bins, o.ymax);
-  h.fill(vel, m.v_rms);
+  h.fill(vel, m.v_rms, Geometry(3));
   const auto fit = fit_tail(tail_points(h, o.tail_from, o.min_count));
   EXPECT_EQ(t.rows[0][t.column("t")], 5.0);
   EXPECT_EQ(t.rows[0][t.column("kappa")], m.kappa);

@@ -19,7 +19,7 @@ inline Table velocity_series_of(const std::string& path, const std::vector<doubl
     RunParameters p;
     p.N = static_cast<std::int64_t>(n);
     p.L = L;
-    H5mdWriter w = H5mdWriter::create(path, p, false, {}, dimension);
+    H5mdWriter w = H5mdWriter::create(path, p, false, Geometry(dimension));
     const std::vector<double> pos(3 * n, 1.0);
     const std::vector<std::int32_t> img(3 * n, 0);
     w.add_frame({5.0, 10, 0, pos.data(), img.data(), vel.data()});

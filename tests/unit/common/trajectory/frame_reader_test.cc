@@ -27,7 +27,7 @@ std::string write_run(const std::string& name, int frames) {
   p.model = "inelastic";
   p.r0 = 0.1;
   p.delta = 1e-4;
-  H5mdWriter w = H5mdWriter::create(path, p, false);
+  H5mdWriter w = H5mdWriter::create(path, p, false, Geometry(3));
   for (int f = 0; f < frames; ++f) {
     double pos[3 * kN], vel[3 * kN];
     std::int32_t img[3 * kN];
@@ -112,7 +112,7 @@ TEST(Trajectory, ReadsA1DFileWidenedWithZerosWhenAsked) {
     RunParameters p;
     p.N = kN;
     p.L = 12;
-    H5mdWriter w = H5mdWriter::create(path, p, false, {}, 1);
+    H5mdWriter w = H5mdWriter::create(path, p, false, Geometry(1));
     double pos[3 * kN], vel[3 * kN];
     std::int32_t img[3 * kN];
     for (int i = 0; i < 3 * kN; ++i) pos[i] = 0.25 * i, vel[i] = -i, img[i] = i;

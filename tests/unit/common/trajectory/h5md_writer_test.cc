@@ -44,7 +44,7 @@ void write_frames(H5mdWriter& w, int first, int count) {
 TEST(H5mdWriter, FramesReadBackExactly) {
   const std::string path = test::scratch_dir("h5md_roundtrip") + "/run.h5";
   {
-    H5mdWriter w = H5mdWriter::create(path, small_params(), false);
+    H5mdWriter w = H5mdWriter::create(path, small_params(), false, Geometry(3));
     write_frames(w, 0, 3);
   }
   h5::Handle f = h5::open_file(path, h5::Mode::kReadOnly);
@@ -56,13 +56,13 @@ TEST(H5mdWriter, FramesReadBackExactly) {
   h5::Handle par = h5::open_group(f.id(), "parameters");
   EXPECT_EQ(h5::read_attr_string(par.id(), "model"), "inelastic");
   EXPECT_EQ(h5::read_attr_int(par.id(), "seed"), 7);
-  EXPECT_THROW(H5mdWriter::create(path, small_params(), false), InputError);  // no silent overwrite
+  EXPECT_THROW(H5mdWriter::create(path, small_params(), false, Geometry(3)), InputError);  // no silent overwrite
 }
 
 TEST(H5mdWriter, ReopenDropsRowsAfterTheLastCompleteFrame) {
   const std::string path = test::scratch_dir("h5md_reopen") + "/run.h5";
   {
-    H5mdWriter w = H5mdWriter::create(path, small_params(), false);
+    H5mdWriter w = H5mdWriter::create(path, small_params(), false, Geometry(3));
     write_frames(w, 0, 2);
     w.add_observables({1.5, 15, 1, 0.75, {0, 0, 0}});
     w.flush();  // an observable row after the last frame, as a killed run may leave
@@ -82,7 +82,7 @@ TEST(H5mdWriter, ReopenDropsRowsAfterTheLastCompleteFrame) {
 TEST(H5mdWriter, ReopenWithANewSceneReplacesItThroughAWholeCopy) {
   const std::string path = test::scratch_dir("h5md_reopen_scene") + "/run.h5";
   {
-    H5mdWriter w = H5mdWriter::create(path, small_params(), false);
+    H5mdWriter w = H5mdWriter::create(path, small_params(), false, Geometry(3));
     write_frames(w, 0, 2);
   }
   const std::string scene = "[system]\nN = 2\n[run]\nt_end = 50\n";
@@ -133,7 +133,7 @@ TEST(H5mdWriter, DumpsAreChunkedAndCompressedLosslessly) {
     img[std::size_t(i)] = i % 7 - 3;
   }
   {
-    H5mdWriter w = H5mdWriter::create(path, p, false, {.particles_per_chunk = 4, .deflate_level = 1});
+    H5mdWriter w = H5mdWriter::create(path, p, false, Geometry(3), {.particles_per_chunk = 4, .deflate_level = 1});
     for (int f = 0; f < 2; ++f) w.add_frame({double(f), f, 0, pos.data(), img.data(), vel.data()});
   }
   h5::Handle f = h5::open_file(path, h5::Mode::kReadOnly);
@@ -154,7 +154,7 @@ TEST(H5mdWriter, DumpsAreChunkedAndCompressedLosslessly) {
 // chunk larger than a fixed dimension).
 TEST(H5mdWriter, AChunkNeverExceedsTheParticles) {
   const std::string path = test::scratch_dir("h5md_small_chunk") + "/run.h5";
-  { H5mdWriter w = H5mdWriter::create(path, small_params(), false); }
+  { H5mdWriter w = H5mdWriter::create(path, small_params(), false, Geometry(3)); }
   h5::Handle f = h5::open_file(path, h5::Mode::kReadOnly);
   EXPECT_EQ(stored_as(f.id(), "particles/all/position/value").chunk, (std::vector<hsize_t>{1, 2, 3}));
 }
@@ -163,7 +163,7 @@ TEST(H5mdWriter, H5pyAndMDAnalysisReadTheFile) {
   const std::string dir = test::scratch_dir("h5md_clients");
   const std::string path = dir + "/run.h5";
   {
-    H5mdWriter w = H5mdWriter::create(path, small_params(), false);
+    H5mdWriter w = H5mdWriter::create(path, small_params(), false, Geometry(3));
     write_frames(w, 0, 3);
   }
   auto r = test::run_command("/usr/bin/python3 " + test::source("tests/cli/read_with_mdanalysis.py") + " " + path +

@@ -28,7 +28,7 @@ std::string message_of(const std::function<void()>& f) {
 
 TEST(RunInfo, ParametersAndObservablesReadBackExactly) {
   const std::string path = test::scratch_dir("run_info_roundtrip") + "/run.h5";
-  test::write_energy_run(path, test::paper_parameters(32, 7), {0, 1, 2.5}, [](double t) { return 1 / (1 + t); });
+  test::write_energy_run(path, test::paper_parameters(32, 7), {0, 1, 2.5}, [](double t) { return 1 / (1 + t); }, Geometry(3));
   const RunInfo info = read_run_info(path);
   EXPECT_EQ(info.params.N, 1000);
   EXPECT_EQ(info.params.L, 32.0);
@@ -62,7 +62,7 @@ TEST(RunInfo, FileThatIsNotHdf5IsAnInputError) {
 
 TEST(RunInfo, NonFiniteEnergyIsRejected) {
   const std::string path = test::scratch_dir("run_info_nan") + "/run.h5";
-  test::write_energy_run(path, test::paper_parameters(32, 1), {0, 1}, [](double t) { return t > 0 ? std::numeric_limits<double>::quiet_NaN() : 1.0; });
+  test::write_energy_run(path, test::paper_parameters(32, 1), {0, 1}, [](double t) { return t > 0 ? std::numeric_limits<double>::quiet_NaN() : 1.0; }, Geometry(3));
   EXPECT_NE(message_of([&] { read_observable(path, layout::kKineticEnergy); }).find("row 1 is not finite"), std::string::npos);
 }
 

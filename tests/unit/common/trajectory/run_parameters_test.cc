@@ -110,7 +110,7 @@ TEST(RunParameters, EachModelsFileHoldsExactlyItsFieldsAndReadsThemBack) {
     const std::string model(m.name);
     const std::string path = test::scratch_dir("run_parameters_" + model) + "/run.h5";
     const RunParameters written = params_for(model);
-    { H5mdWriter::create(path, written, true); }
+    { H5mdWriter::create(path, written, true, Geometry(3)); }
     h5::Handle f = h5::open_file(path, h5::Mode::kReadOnly);
     h5::Handle g = h5::open_group(f.id(), std::string(layout::kParameters));
     std::set<std::string> expected;
@@ -131,20 +131,20 @@ TEST(RunParameters, NotApplicableIsAbsentNotASentinel) {
   RunParameters p = params_for("viscoelastic");
   p.r0 = 1.0;  // what version 2 wrote
   const std::string path = test::scratch_dir("run_parameters_sentinel") + "/run.h5";
-  EXPECT_THROW(H5mdWriter::create(path, p, true), std::logic_error);
+  EXPECT_THROW(H5mdWriter::create(path, p, true, Geometry(3)), std::logic_error);
   p.r0.reset();
   p.delta.reset();
-  EXPECT_THROW(H5mdWriter::create(path, p, true), std::logic_error);  // viscoelastic files hold delta
+  EXPECT_THROW(H5mdWriter::create(path, p, true, Geometry(3)), std::logic_error);  // viscoelastic files hold delta
   // A version-2 viscoelastic file carries r0 = 1; it reads as absent.
   {
-    H5mdWriter::create(path, params_for("viscoelastic"), true);
+    H5mdWriter::create(path, params_for("viscoelastic"), true, Geometry(3));
     h5::Handle f = h5::open_file(path, h5::Mode::kReadWrite);
     h5::Handle g = h5::open_group(f.id(), std::string(layout::kParameters));
     h5::write_attr(g.id(), "r0", 1.0);
     h5::write_attr(g.id(), "schema_version", std::int64_t{2});
   }
   EXPECT_FALSE(read_run_info(path).params.r0);
-  { H5mdWriter::create(path, params_for("aggregation"), true); }
+  { H5mdWriter::create(path, params_for("aggregation"), true, Geometry(3)); }
   const RunParameters agg = read_run_info(path).params;
   EXPECT_FALSE(agg.r0);
   EXPECT_FALSE(agg.delta);
@@ -152,7 +152,7 @@ TEST(RunParameters, NotApplicableIsAbsentNotASentinel) {
 
 TEST(RunParameters, WrongTypeOrUnknownModelIsAnInputErrorNamingTheAttribute) {
   const std::string path = test::scratch_dir("run_parameters_wrong") + "/run.h5";
-  { H5mdWriter::create(path, params_for("inelastic"), true); }
+  { H5mdWriter::create(path, params_for("inelastic"), true, Geometry(3)); }
   {
     h5::Handle f = h5::open_file(path, h5::Mode::kReadWrite);
     h5::Handle g = h5::open_group(f.id(), std::string(layout::kParameters));

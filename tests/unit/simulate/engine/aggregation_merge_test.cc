@@ -28,7 +28,7 @@ Particles spheres(double L, const std::vector<Vec3>& r, const std::vector<Vec3>&
 AggregationEngine engine(const Particles& p, const std::vector<double>& mass) {
   AggregateState a = AggregateState::unit_spheres(p.size());
   for (std::size_t i = 0; i < mass.size(); ++i) a.mass[i] = mass[i], a.diameter[i] = std::cbrt(mass[i]);
-  return AggregationEngine(p, a, 0.0);
+  return AggregationEngine(p, a, 0.0, {}, Geometry(3));
 }
 
 TEST(AggregationMerge, TwoAggregatesConserveMassVolumeAndMomentum) {
@@ -167,7 +167,7 @@ TEST(AggregationMerge, RestoredFromItsSavedStateIsBitIdentical) {
     p.r[i] = {(double(i % 9) + 0.5) * L / 9, (double(i / 9 % 9) + 0.5) * L / 9, (double(i / 81) + 0.5) * L / 9};
     p.v[i] = {uniform() - 0.5, uniform() - 0.5, uniform() - 0.5};
   }
-  AggregationEngine a(p, AggregateState::unit_spheres(p.size()), 0.0);
+  AggregationEngine a(p, AggregateState::unit_spheres(p.size()), 0.0, {}, Geometry(3));
   a.run_until(3.0, 1 << 30, nullptr);
   a.run_until(15.0, 777, nullptr);  // stop mid-way, on the event budget
   AggregationEngine b(test::saved_state(a));

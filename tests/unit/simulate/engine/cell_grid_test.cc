@@ -22,7 +22,7 @@ void expect_round_trip(int n, long long cell) {
 
 TEST(CellGrid, CoordInvertsIndexOnEveryCellOfSmallGrids) {
   for (int n : {3, 4, 7, 64, 97}) {
-    const CellGrid g(n * 1.01, 1.0, 0);
+    const CellGrid g(n * 1.01, 1.0, 0, Geometry(3));
     ASSERT_EQ(g.cells_per_side(), n);
     for (int cell = 0; cell < n * n * n; ++cell) {
       const CellCoord c = g.coord(cell);
@@ -51,7 +51,7 @@ TEST(CellGrid, CoordInvertsIndexAcrossTheLargestGrid) {
 // c; n = 5 pads every axis.
 TEST(CellGrid, HeadsHaveDistinctSlotsAndCheckpointsHoldThemByCellIndex) {
   const int n = 5, cells = n * n * n;
-  CellGrid grid(n * 1.01, 1.0, std::size_t(cells));
+  CellGrid grid(n * 1.01, 1.0, std::size_t(cells), Geometry(3));
   std::set<int> slots;
   for (int c = 0; c < cells; ++c) {
     slots.insert(grid.slot(grid.coord(c)));
@@ -61,7 +61,7 @@ TEST(CellGrid, HeadsHaveDistinctSlotsAndCheckpointsHoldThemByCellIndex) {
   const StateReader in = test::saved_state_of([&](StateWriter& out) { grid.save(out, "g/"); });
   const std::vector<std::int32_t> heads = in.get<std::int32_t>("g/heads");
   ASSERT_EQ(int(heads.size()), cells);
-  CellGrid back(n * 1.01, 1.0, std::size_t(cells));
+  CellGrid back(n * 1.01, 1.0, std::size_t(cells), Geometry(3));
   back.load(in, "g/");
   for (int c = 0; c < cells; ++c) {
     EXPECT_EQ(heads[std::size_t(c)], c);
@@ -79,7 +79,7 @@ template <int D>
 void expect_specialised_search_matches_the_walker() {
   for (const int n : {3, 4, 5, 7}) {
     const double L = 1.1 * n;
-    const CellGrid grid(L, 1.0, 1, D);
+    const CellGrid grid(L, 1.0, 1, Geometry(D));
     ASSERT_EQ(grid.cells_per_side(), n);
     ASSERT_EQ(grid.cell_count(), D == 3 ? n * n * n : n * n);
     for (int slab = -1; slab < 2 * D; ++slab) {  // -1: all 27 (9); else the 9 (3) beyond face `slab`

@@ -90,10 +90,10 @@ struct AggregationCase {
   static NoRule rule() { return {}; }
   static constexpr int kEvents = 360;
   static std::unique_ptr<EngineType> engine(const Particles& p, NoRule) {
-    return std::make_unique<EngineType>(p, AggregateState::unit_spheres(p.size()), 0.0, EngineCounters{}, D);
+    return std::make_unique<EngineType>(p, AggregateState::unit_spheres(p.size()), 0.0, EngineCounters{}, Geometry(D));
   }
   static std::vector<CollisionRecord> reference(const Particles& p, NoRule, int n) {
-    return reference_merges(p, AggregateState::unit_spheres(p.size()), 0.0, 1e9, n, D);
+    return reference_merges(p, AggregateState::unit_spheres(p.size()), 0.0, 1e9, n, Geometry(D));
   }
 };
 using Aggregation = AggregationCase<3>;
@@ -175,7 +175,7 @@ void expect_same_merges_up_to_half_the_box() {
     p.v[i] = {uniform() - 0.5, D >= 2 ? uniform() - 0.5 : 0.0, D == 3 ? uniform() - 0.5 : 0.0};
     if (i % 5 == 0) a.mass[i] = D == 3 ? 8 : (D == 2 ? 4 : 2), a.diameter[i] = 2;
   }
-  AggregationEngine e(p, a, 0.0, EngineCounters{}, D);
+  AggregationEngine e(p, a, 0.0, EngineCounters{}, Geometry(D));
   std::vector<CollisionRecord> log;
   e.record_collisions(&log);
   std::size_t most_large = 0;
@@ -195,7 +195,7 @@ void expect_same_merges_up_to_half_the_box() {
   EXPECT_GE(e.largest_diameter(), L / 2);
   EXPECT_GT(most_large, 3u);
   EXPECT_GT(widest_cell_multiple, 1.5);  // partners found beyond the neighbouring cells
-  const auto ref = reference_merges(p, a, 0.0, 1e9, std::int64_t(log.size()), D);
+  const auto ref = reference_merges(p, a, 0.0, 1e9, std::int64_t(log.size()), Geometry(D));
   ASSERT_EQ(ref.size(), log.size());
   for (std::size_t k = 0; k < log.size(); ++k) {
     ASSERT_EQ(log[k].i, ref[k].i) << "merge " << k;

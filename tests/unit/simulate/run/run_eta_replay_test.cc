@@ -93,7 +93,7 @@ TEST(RunEtaReplay, TheTimeLeftIsRightWithinAFactorTwoOnMostRuns) {
 // factor 2.5 of the run's.
 TEST(RunEtaReplay, ThePlanFromTheFirstHundredTimeUnitsIsRightWithinAFactor2p5) {
   for (const Curve& c : curves()) {
-    RunEta eta = run_eta_for(c.params);
+    RunEta eta = run_eta_for(c.params, Geometry(3));
     for (std::size_t i = 0; i < c.time.size() && c.time[i] <= 100; ++i) eta.add({c.time[i], c.collisions[i], 0});
     const double ratio = eta.expected_collisions(c.time.back()) / c.collisions.back();
     EXPECT_GT(ratio, 1 / 2.5) << c.name;

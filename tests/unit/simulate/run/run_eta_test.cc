@@ -95,14 +95,14 @@ TEST(RunEta, ASlowGrowthBeforeTheKneeIsRaisedToTheClusteringRegimes) {
 // serve real runs: run_eta_replay_test.cc.
 TEST(RunEta, EachModelGetsItsOwnRule) {
   const double now = 1000 * std::pow(100.0, 0.2), tol = 1e-9 * now * 100;
-  EXPECT_NEAR(power_law_run(run_eta_for(gas("inelastic", 1e6, 0.208, 0.1, 1e-4)), 0.2).expected_collisions(1e4),
+  EXPECT_NEAR(power_law_run(run_eta_for(gas("inelastic", 1e6, 0.208, 0.1, 1e-4), Geometry(3)), 0.2).expected_collisions(1e4),
               now * std::pow(100.0, clustering_floor(0.208, 0.1, 1e-4)), tol);
   RunParameters visco = gas("viscoelastic", 1e6, 0.208, 1, 0);
   visco.r0 = visco.delta = std::nullopt;
-  EXPECT_NEAR(power_law_run(run_eta_for(visco), 0.2).expected_collisions(1e4),
+  EXPECT_NEAR(power_law_run(run_eta_for(visco, Geometry(3)), 0.2).expected_collisions(1e4),
               power_law_run(eta_of_cooling_gas(visco), 0.2).expected_collisions(1e4), tol);
   RunParameters elastic = gas("elastic", 2, 0.208, 1, 0);
-  EXPECT_NEAR(power_law_run(run_eta_for(elastic), 1).expected_collisions(1e4), 1e7, 1e-9 * 1e7);
+  EXPECT_NEAR(power_law_run(run_eta_for(elastic, Geometry(3)), 1).expected_collisions(1e4), 1e7, 1e-9 * 1e7);
 }
 
 // Ballistic aggregation of N = 1e6, sampled 20 times a decade from t = 1 to
@@ -121,7 +121,7 @@ TEST(RunEta, EachModelGetsItsOwnRule) {
 RunEta aggregation_run(double (*aggregates)(double t)) {
   RunParameters p = gas("aggregation", 1e6, 0.208, 1, 0);
   p.N = 1000000;
-  RunEta eta = run_eta_for(p);
+  RunEta eta = run_eta_for(p, Geometry(3));
   for (int k = 0; k <= 40; ++k) {
     const double t = std::pow(10.0, k / 20.0), c = 1e6 - aggregates(t);
     eta.add({t, c, c / kRate});
@@ -182,7 +182,7 @@ TEST(RunEta, AggregationsRateSpansAGridPeriod) {
   const auto busy = [&](double t) { return merges(t) / kRate + (merges(t) > 7.5e5 ? 1.0 : 0.0); };
   RunParameters p = gas("aggregation", 1e6, 0.208, 1, 0);
   p.N = 1000000;
-  RunEta ba = run_eta_for(p), gas_like(INFINITY);
+  RunEta ba = run_eta_for(p, Geometry(3)), gas_like(INFINITY);
   for (int k = -40; k <= 10; ++k) {
     const double t = std::pow(10.0, k / 20.0);
     ba.add({t, merges(t), busy(t)});
@@ -202,7 +202,7 @@ TEST(RunEta, AggregationsRateSpansAGridPeriod) {
 // its exponent. From t = 100 to 1e4. Without event counts (NaN) the same run
 // is counted in collisions, at their own rate.
 RunEta inelastic_run(double crossing_exponent, bool events_known) {
-  RunEta eta = run_eta_for(gas("inelastic", 1e6, 0.208, 0.1, 1e-4));
+  RunEta eta = run_eta_for(gas("inelastic", 1e6, 0.208, 0.1, 1e-4), Geometry(3));
   for (int k = -40; k <= 40; ++k) {
     const double t = std::pow(10.0, k / 20.0), c = 1000 * std::pow(t, 0.2);
     const double x = 3000 * std::pow(t, crossing_exponent);
@@ -225,7 +225,7 @@ TEST(RunEta, TheInelasticGasCountsCollisionsAndCrossings) {
   EXPECT_TRUE(std::isnan(without.expected_events(1e4)));
   EXPECT_NEAR(without.seconds_left(1e4), (c_end - c) / without.collision_rate(), 1e-9 * c_end / kRate);
   // Aggregation keeps counting merges alone (its crossings are not modelled).
-  RunEta ba = run_eta_for(gas("aggregation", 1e6, 0.208, 1, 0));
+  RunEta ba = run_eta_for(gas("aggregation", 1e6, 0.208, 1, 0), Geometry(3));
   for (int k = -40; k <= 40; ++k) ba.add({std::pow(10.0, k / 20.0), 1.0 + k + 40, 1.0, 10.0 * (1 + k + 40)});
   EXPECT_TRUE(std::isnan(ba.expected_events(1e4)));
 }

@@ -28,7 +28,7 @@ Particles lattice(int n, double a) {
 
 std::string error_of(const Particles& p, const AggregateState* a = nullptr) {
   try {
-    check_configuration(p, a, "f.h5");
+    check_configuration(p, a, "f.h5", Geometry(3));
   } catch (const InputError& e) {
     return e.what();
   }

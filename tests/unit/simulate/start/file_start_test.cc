@@ -17,7 +17,6 @@
 #include "common/extended_xyz.h"
 #include "common/hdf5_file.h"
 #include "common/trajectory/h5md_writer.h"
-#include "simulate/start/enskog.h"
 #include "tests/support/run_command.h"
 
 namespace coolgas {
@@ -81,7 +80,7 @@ TEST(FileStart, TheSceneIsCompletedFromTheFileAndPositionsAreExact) {
   EXPECT_EQ(s.L, 9.0);
   EXPECT_DOUBLE_EQ(s.phi, 216 * M_PI / (6 * 729.0));
   EXPECT_EQ(s.from_time, 7.5);  // the frame's own time is recorded in the effective scene
-  EXPECT_EQ(s.T0, unit_time_temperature(216 / 729.0, s.phi));  // no T0 in the file: Enskog, as for a fresh start
+  EXPECT_EQ(s.T0, Geometry(3).unit_time_temperature(216 / 729.0, s.phi));  // no T0 in the file: Enskog, as for a fresh start
   ASSERT_EQ(start.particles.size(), 216u);
   for (std::size_t i = 0; i < 216; ++i)
     for (int d = 0; d < 3; ++d) {
@@ -142,7 +141,7 @@ TEST(FileStart, ACoolgasTrajectoryGivesItsDumpNearestFromTimeAndItsOwnT0) {
   p.T0 = 0.123;
   const std::string path = dir + "/run.h5";
   {
-    H5mdWriter w = H5mdWriter::create(path, p, true);
+    H5mdWriter w = H5mdWriter::create(path, p, true, Geometry(3));
     std::vector<std::int32_t> image(3 * 125, 0);
     for (double t : {0.0, 10.0, 20.0}) {
       std::vector<double> v = f.velocity;

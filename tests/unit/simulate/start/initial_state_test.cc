@@ -270,5 +270,19 @@ TEST(RandomPlacement, BeyondSaturationIsAnInputErrorPointingToFcc) {
   }
 }
 
+// The kinetic energy per particle at t = 0 is (d/2) T0 in every dimension:
+// the E0 of the progress line, whose E/E0 so starts at 1 (it started at
+// 0.67 for disks and 0.33 for rods when E0 was 3/2 T0 whatever d).
+TEST(InitialState, TheEnergyPerParticleIsHalfTheDimensionTimesT0) {
+  for (int d = 1; d <= 3; ++d) {
+    const Scene s = test::in_dimension(test::elastic_scene(2000, 0.2, 3), d);
+    const Particles p = initial_state(s);
+    double e = 0;
+    for (const Vec3& v : p.v) e += 0.5 * dot(v, v);
+    EXPECT_NEAR(e / double(p.size()) / initial_energy(s), 1.0, 1e-12) << d << "D";
+    EXPECT_EQ(initial_energy(s), 0.5 * d * initial_temperature(s));
+  }
+}
+
 }  // namespace
 }  // namespace coolgas
