@@ -37,11 +37,8 @@ void run_clusters(const ClustersOptions& opt, std::ostream& final_out) {
 
   MassHistogram hist(opt.bins_per_decade, traj.particles());
   ClusterLabeller labeller;
-  Frame frame;
-  const std::vector<std::size_t> dumps = traj.dumps_nearest(opt.times, opt.exact_time);
-  for (std::size_t i = 0; i < dumps.size(); ++i) {
-    throw_if_interrupted(i, dumps.size(), "dumps");
-    traj.read(dumps[i], frame);
+  Frame buffer;
+  traj.for_each_dump(traj.dumps_nearest(opt.times, opt.exact_time), buffer, [&](const Frame& frame) {
     // ballistic aggregation: the clusters are the aggregates themselves
     if (!traj.aggregates()) cluster_grid_of_dump(frame.L, traj.path(), frame.dump, g);  // a bad box names the dump
     fill_cluster_masses(hist, labeller, frame.L, frame.position,
@@ -49,7 +46,7 @@ void run_clusters(const ClustersOptions& opt, std::ostream& final_out) {
     const TableBlock b = cluster_block(table, frame.time, frame.L, hist, g);
     if (table == ClusterTable::kSeries) out.append(b);  // a row per dump, not a block
     else out.write(b);
-  }
+  });
   final_out << os.str();
 }
 

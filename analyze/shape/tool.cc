@@ -69,11 +69,8 @@ void run_shape(const ShapeOptions& opt, std::ostream& final_out) {
   std::ostringstream os;  // written only when every dump has been read
   TsvWriter out(os, "coolgas-shape", provenance(traj, opt, fit), shape_columns(opt.table, g));
   ClusterShapes shapes;
-  Frame frame;
-  const std::vector<std::size_t> dumps = traj.dumps_nearest(opt.times, opt.exact_time);
-  for (std::size_t i = 0; i < dumps.size(); ++i) {
-    throw_if_interrupted(i, dumps.size(), "dumps");
-    traj.read(dumps[i], frame);
+  Frame buffer;
+  traj.for_each_dump(traj.dumps_nearest(opt.times, opt.exact_time), buffer, [&](const Frame& frame) {
     const std::vector<ClusterShape> s =
         traj.aggregates() ? aggregate_shapes(frame.mass, g)
                           : shapes.of_particles(cluster_grid_of_dump(frame.L, traj.path(), frame.dump, g), frame.position);
@@ -81,7 +78,7 @@ void run_shape(const ShapeOptions& opt, std::ostream& final_out) {
         shape_block(opt.table, frame.time, s, mass_radius(s, opt.bins_per_decade, fit), opt.min_mass, g);
     if (opt.table == ShapeTable::kSeries) out.append(b);  // a row per dump, not a block
     else out.write(b);
-  }
+  });
   final_out << os.str();
 }
 

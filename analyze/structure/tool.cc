@@ -56,20 +56,18 @@ void run_structure(const StructureOptions& opt, std::ostream& final_out) {
   Trajectory traj(opt.input, (velocity ? (kPosition | kVelocity) : kPosition) | kAnyDimension);
   const std::vector<std::size_t> dumps = traj.dumps_nearest(opt.times, opt.exact_time);
   if (dumps.empty()) throw InputError(opt.input + ": the trajectory holds no dumps");
-  Frame frame;
-  traj.read(dumps.front(), frame);
-  const int n = structure_grid_points(opt.grid, frame.L);
+  const double L = traj.box_side(dumps.front());
+  const int n = structure_grid_points(opt.grid, L);
   std::ostringstream os;  // written only when every dump has been read
-  TsvWriter out(os, "coolgas-structure", provenance(traj, opt, n, frame.L), structure_columns(opt.table));
+  TsvWriter out(os, "coolgas-structure", provenance(traj, opt, n, L), structure_columns(opt.table));
   FrameStructure fs(n, traj.geometry());
-  for (std::size_t i = 0; i < dumps.size(); ++i) {
-    throw_if_interrupted(i, dumps.size(), "dumps");
-    if (i > 0) traj.read(dumps[i], frame);
+  Frame buffer;
+  traj.for_each_dump(dumps, buffer, [&](const Frame& frame) {
     const TableBlock b = structure_block(opt.table, fs, frame.time, frame.L, frame.position, frame.velocity,
                                          frame_weights(traj, frame), opt.peak_fraction, opt.direct_shells);
     if (opt.table == StructureTable::kSeries) out.append(b);  // a row per dump, not a block
     else out.write(b);
-  }
+  });
   final_out << os.str();
 }
 

@@ -58,11 +58,8 @@ void run_velocity(const VelocityOptions& opt, std::ostream& final_out) {
   ComponentHistogram hist(opt.bins, opt.ymax);
   Trajectory traj(opt.input, kVelocity | kAnyDimension);
   TsvWriter out(os, "coolgas-velocity", provenance(traj, opt), velocity_columns(opt.table));
-  Frame frame;
-  const std::vector<std::size_t> dumps = traj.dumps_nearest(opt.times, opt.exact_time);
-  for (std::size_t i = 0; i < dumps.size(); ++i) {
-    throw_if_interrupted(i, dumps.size(), "dumps");
-    traj.read(dumps[i], frame);
+  Frame buffer;
+  traj.for_each_dump(traj.dumps_nearest(opt.times, opt.exact_time), buffer, [&](const Frame& frame) {
     const VelocityStats s = velocity_stats(frame.velocity, hist, opt.tail_from, opt.min_count, traj.geometry());
     if (opt.table == VelocityTable::kTail && !s.fit) no_tail(traj, frame, opt, s.tail.size());
     const TableBlock b = velocity_block(opt.table, frame.time, hist, s, opt.tail_from);
@@ -72,7 +69,7 @@ void run_velocity(const VelocityOptions& opt, std::ostream& final_out) {
     } else {
       out.write(b);
     }
-  }
+  });
   final_out << os.str();
 }
 

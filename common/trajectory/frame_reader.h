@@ -23,6 +23,7 @@
 
 #include "common/geometry.h"
 #include "common/hdf5_file.h"
+#include "common/interrupt.h"
 #include "common/tsv.h"
 
 namespace coolgas {
@@ -85,6 +86,18 @@ class Trajectory {
   // Reads dump `dump` into `frame` (its buffers are reused). Non-finite
   // numbers in a double element are an InputError naming dump and particle.
   void read(std::size_t dump, Frame& frame) const;
+  // The tools' loop: reads each of `dumps` into `frame` in turn and calls
+  // f(frame), stopping between dumps on SIGINT or SIGTERM (Interrupted).
+  template <class F>
+  void for_each_dump(const std::vector<std::size_t>& dumps, Frame& frame, F f) const {
+    for (std::size_t i = 0; i < dumps.size(); ++i) {
+      throw_if_interrupted(i, dumps.size(), "dumps");
+      read(dumps[i], frame);
+      f(frame);
+    }
+  }
+  // The box side at dump `dump` (InputError for a box that is not one).
+  double box_side(std::size_t dump) const;
 
   // "input", then seed and the physics fields of /parameters
   // (run_parameters.h: N, L, phi, T0, model and the model's own), for the
@@ -95,7 +108,6 @@ class Trajectory {
   [[noreturn]] void missing(const std::string& what) const;
   void check_element(const std::string& element, bool vector, hsize_t per_particle);
   void keep_present(Frame& frame) const;
-  double box_side(std::size_t dump) const;
 
   std::string path_;
   unsigned fields_;

@@ -21,23 +21,6 @@ namespace coolgas {
 
 namespace {
 
-// The physics a checkpoint belongs to: the scene's [system] and [collision]
-// tables (run.* and output.* may change on resume).
-std::string physics_of(const Scene& s) {
-  Scene p;
-  p.N = s.N;
-  p.L = s.L;
-  p.phi = s.phi;
-  p.seed = s.seed;
-  p.init = s.init;
-  p.equilibrate = s.equilibrate;
-  p.model = s.model;
-  p.r0 = s.r0;
-  p.delta = s.delta;
-  p.viscoelastic_b = s.viscoelastic_b;
-  return p.to_toml();
-}
-
 std::vector<char> bytes_of(const std::string& s) { return {s.begin(), s.end()}; }
 
 // A checkpoint that cannot be written (disk full, quota, I/O error) is a
@@ -87,7 +70,7 @@ void write_checkpoint(const std::string& trajectory, const Scene& scene, const E
   if (!f) fail_io("cannot create '" + tmp + "'", path, errno);
   try {
     StateWriter out(f);
-    out.put("run/physics", bytes_of(physics_of(scene)));
+    out.put("run/physics", bytes_of(physics_toml(scene)));
     out.put("run/model", bytes_of(scene.model_name()));
     out.put_value("run/last_dump", last_dump);
     out.put("run/pending_observables", pending);
@@ -122,7 +105,7 @@ std::optional<RunCheckpoint> read_checkpoint(const std::string& trajectory, cons
   if (!bytes) return std::nullopt;
   const StateReader in(std::move(*bytes), path);
   const auto physics = in.get<char>("run/physics");
-  if (std::string(physics.begin(), physics.end()) != physics_of(scene))
+  if (std::string(physics.begin(), physics.end()) != physics_toml(scene))
     in.fail("it belongs to a run of other physics than '" + trajectory + "' (remove it to resume from the last dump)");
   RunCheckpoint c;
   c.last_dump = in.get_value<double>("run/last_dump");

@@ -17,7 +17,7 @@
 
 #include "common/trajectory/h5md_writer.h"
 #include "simulate/engine/engine_base.h"
-#include "simulate/run/scene.h"
+#include "simulate/scene/scene.h"
 
 namespace coolgas {
 

@@ -6,7 +6,7 @@
 #include "simulate/engine/aggregation_engine.h"
 #include "simulate/engine/engine.h"
 #include "simulate/engine/state_archive.h"
-#include "simulate/run/scene.h"
+#include "simulate/scene/scene.h"
 
 namespace coolgas {
 

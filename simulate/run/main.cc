@@ -7,7 +7,7 @@
 #include "common/tool_main.h"
 #include "common/interrupt.h"
 #include "simulate/run/run_plan.h"
-#include "simulate/run/scene.h"
+#include "simulate/scene/scene.h"
 #include "simulate/run/scene_file.h"
 #include "simulate/run/simulation.h"
 

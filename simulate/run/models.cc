@@ -44,27 +44,35 @@ std::unique_ptr<EngineBase> restore_aggregation(const Scene& s, const StateReade
 }
 
 template <class Rule, Rule (*rule_of)(const Scene&)>
-ModelRow rule_row(CollisionModel model, const char* name, RunEta (*eta)(const RunParameters&)) {
-  return {model, name, make_rule_engine<Rule, rule_of>, restore_rule_engine<Rule, rule_of>, eta};
+ModelRow rule_row(CollisionModel model, RunEta (*eta)(const RunParameters&)) {
+  return {model, make_rule_engine<Rule, rule_of>, restore_rule_engine<Rule, rule_of>, eta, &kGasCosts};
 }
 
 }  // namespace
 
 const std::vector<ModelRow>& model_rows() {
   static const std::vector<ModelRow> rows = {
-      rule_row<ElasticRule, elastic_rule>(CollisionModel::kElastic, "elastic", eta_without_cooling),
-      rule_row<ConstantRestitutionRule, inelastic_rule>(CollisionModel::kInelastic, "inelastic", eta_of_inelastic_gas),
-      rule_row<ViscoelasticRule, viscoelastic_rule>(CollisionModel::kViscoelastic, "viscoelastic", eta_of_cooling_gas),
-      {CollisionModel::kAggregation, "aggregation", make_aggregation, restore_aggregation, eta_of_aggregation},
+      rule_row<ElasticRule, elastic_rule>(CollisionModel::kElastic, eta_without_cooling),
+      rule_row<ConstantRestitutionRule, inelastic_rule>(CollisionModel::kInelastic, eta_of_inelastic_gas),
+      rule_row<ViscoelasticRule, viscoelastic_rule>(CollisionModel::kViscoelastic, eta_of_cooling_gas),
+      {CollisionModel::kAggregation, make_aggregation, restore_aggregation, eta_of_aggregation,
+       &kAggregationCosts},
   };
   return rows;
 }
 
 const ModelRow& model_row(CollisionModel model) { return model_rows().at(std::size_t(model)); }
 
+RunEta run_eta_for(const RunParameters& p, Geometry g) {
+  const ModelRow* row = find_model_row(p.model);
+  RunEta eta = row ? row->eta(p) : eta_of_cooling_gas(p);
+  eta.set_dimension(g.d());
+  return eta;
+}
+
 const ModelRow* find_model_row(std::string_view name) {
   for (const ModelRow& r : model_rows())
-    if (name == r.name) return &r;
+    if (name == r.name()) return &r;
   return nullptr;
 }
 

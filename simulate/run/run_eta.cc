@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "simulate/engine/aggregation_engine.h"
-#include "simulate/run/models.h"
 
 namespace coolgas {
 
@@ -23,6 +22,8 @@ constexpr double kFitWindow = 3;  // the exponent is fitted over t/3 .. t
 // 0.4: the collisions inside the clusters, below delta, fall off more slowly,
 // the more so the denser and the more dissipative the gas and the smaller
 // delta. The floor is linear in phi, r0 and log10 delta, within [0.3, 0.9].
+// The paper's point, at which the floors below were measured.
+constexpr double kPaperPhi = 0.208, kPaperR0 = 0.1, kPaperDelta = 1e-4;
 constexpr double kClusteringPaper = 0.6;  // phi = 0.208, r0 = 0.1, delta = 1e-4
 constexpr double kClusteringPerDecadeOfDelta = 0.1;  // per factor 10 smaller
 constexpr double kClusteringPerPhi = 0.8;            // 0.08 per 0.1 of phi
@@ -160,13 +161,13 @@ double log_growth(double t, double t_end, double a, double clustering, double t_
 }
 
 double crossing_floor(double phi) {
-  const double f = kCrossingPaper + kCrossingPerPhi * (phi - 0.208);
+  const double f = kCrossingPaper + kCrossingPerPhi * (phi - kPaperPhi);
   return std::isnan(f) ? kCrossingPaper : std::clamp(f, kCrossingLow, kCrossingHigh);
 }
 
 double clustering_floor(double phi, double r0, double delta) {
-  const double f = kClusteringPaper + kClusteringPerDecadeOfDelta * std::log10(1e-4 / delta) +
-                   kClusteringPerPhi * (phi - 0.208) + kClusteringPerR0 * (r0 - 0.1);
+  const double f = kClusteringPaper + kClusteringPerDecadeOfDelta * std::log10(kPaperDelta / delta) +
+                   kClusteringPerPhi * (phi - kPaperPhi) + kClusteringPerR0 * (r0 - kPaperR0);
   return std::isnan(f) ? kClusteringHigh : std::clamp(f, kClusteringLow, kClusteringHigh);
 }
 
@@ -178,13 +179,6 @@ RunEta eta_of_inelastic_gas(const RunParameters& p) {
 }
 RunEta eta_of_aggregation(const RunParameters& p) {
   return RunEta::aggregation(p.L, double(p.N), AggregationEngine::kCellsPerAggregateLimit);
-}
-
-RunEta run_eta_for(const RunParameters& p, Geometry g) {
-  const ModelRow* row = find_model_row(p.model);
-  RunEta eta = row ? row->eta(p) : eta_of_cooling_gas(p);
-  eta.set_dimension(g.d());
-  return eta;
 }
 
 void RunEta::set_dimension(int d) { crossover_exponent_ = (d + 2) / 2.0; }

@@ -158,12 +158,7 @@ double output_seconds_left(const std::vector<double>& dump_sizes, double engine_
 // (run_eta.cc says how much, and from which runs).
 double clustering_floor(double phi, double r0, double delta);
 
-// The ETA of a run of these parameters: an elastic gas has no finite-size
-// regime, aggregation at most N - 1 merges, the inelastic gas its own
-// clustering floor and its crossings modelled; other cooling gases
-// (viscoelastic) the floor 0.5.
-RunEta run_eta_for(const RunParameters& p, Geometry g);
-// The rules run_eta_for() picks by the run's model (simulate/run/models.h):
+// The rules each model's row picks (simulate/run/models.h, run_eta_for):
 // an elastic gas does not cool (no finite-size regime); a cooling gas with
 // the generic floor; the inelastic gas with its clustering and crossing
 // floors; ballistic aggregation by the aggregates left.

@@ -8,6 +8,7 @@
 #include "common/error.h"
 #include "simulate/engine/engine_base.h"
 #include "simulate/run/engine_factory.h"
+#include "simulate/run/models.h"
 #include "simulate/run/run_eta.h"
 #include "simulate/run/scene_file.h"
 #include "simulate/run/time_grid.h"
@@ -17,30 +18,9 @@ namespace coolgas {
 
 namespace {
 
-// What a collision, a merge, a particle and a dump cost on this project's
-// machine (the table of current figures in tests/bench/README.md names the
-// commands), per CPU second of whole runs, set-up and dumps included.
-// The gas: 3.497e7 collisions in 52.9 CPU-s (L = 68, N = 1.3e5, to t = 1e4)
-// and 7.815e7 in 192.0 (L = 136, N = 1e6, to t = 1e3); larger grids miss
-// the cache more often.
-constexpr double kCollisionsPerSecondSmall = 6.61e5, kCollisionsPerSecondLarge = 4.07e5;
-constexpr double kSmallRunParticles = 1.3e5;
-// Aggregation at N = 8e6 to t = 1e5 (the aggregation_bench): merges per
-// second and the set-up (a dilute start places and equilibrates slower),
-// interpolated in ln phi between the two densities measured.
-constexpr double kDensePhi = 0.208, kDilutePhi = 0.005;
-constexpr double kMergesPerSecondDense = 35971, kMergesPerSecondDilute = 12813;
-constexpr double kSetupSecondsDense = 153.2, kSetupSecondsDilute = 688.5, kSetupParticles = 8e6;
-constexpr double kAggregationBytesPerParticle = 187;  // peak at N = 1e6 (the gas: kBytesPerParticle)
-// A dump's compressed size per particle: the gas's largest measured (late,
-// clustered: 47 at L = 34, t = 1e5); aggregation adds id, mass and diameter,
-// counted at the gas's compression (47 + 20 x 42/61).
-constexpr double kDumpBytesGas = 47, kDumpBytesAggregation = 62;
 constexpr double kRequestExtraBytes = 256e6;  // the libraries and the output buffers
 
 constexpr std::int64_t kPilotEventsPerSlice = std::int64_t(1) << 30;  // far below the budget's overflow
-
-bool is_aggregation(const Scene& s) { return s.model == CollisionModel::kAggregation; }
 
 // The scene at kPilotParticles, at the same phi and everything else.
 Scene pilot_scene(const Scene& scene) {
@@ -71,17 +51,6 @@ double run_pilot(const Scene& pilot, double scale, double t_stop, RunEta& eta, I
   return reached;
 }
 
-double cpu_seconds(const Scene& s, double collisions) {
-  if (!is_aggregation(s)) {
-    const double rate = double(s.N) <= kSmallRunParticles ? kCollisionsPerSecondSmall : kCollisionsPerSecondLarge;
-    return (collisions + s.equilibrate * double(s.N) / 2) / rate;
-  }
-  const double f = std::log(s.phi / kDilutePhi) / std::log(kDensePhi / kDilutePhi);
-  const double merges = std::exp(std::log(kMergesPerSecondDilute) + f * std::log(kMergesPerSecondDense / kMergesPerSecondDilute));
-  const double setup = std::exp(std::log(kSetupSecondsDilute) + f * std::log(kSetupSecondsDense / kSetupSecondsDilute));
-  return collisions / merges + double(s.N) / kSetupParticles * setup;
-}
-
 int dumps_of(const Scene& s) {
   int dumps = 1;  // t = 0
   for (const StopTime& stop : stop_times(s)) dumps += stop.dump ? 1 : 0;
@@ -107,10 +76,11 @@ RunPlan plan_run(const Scene& scene, InterruptFlag interrupt) {
   plan.N = scene.N;
   // Without an extrapolation (a pilot stopped early, no merge in its window), the collisions seen so far.
   plan.collisions = std::isfinite(expected) ? expected : eta.expected_collisions(reached);
-  plan.cpu_seconds = cpu_seconds(scene, plan.collisions);
-  plan.peak_bytes = double(scene.N) * (is_aggregation(scene) ? kAggregationBytesPerParticle : kBytesPerParticle);
+  const ModelCosts& costs = *model_row(scene.model).costs;
+  plan.cpu_seconds = costs.cpu_seconds(scene, plan.collisions);
+  plan.peak_bytes = double(scene.N) * costs.bytes_per_particle;
   plan.dumps = dumps_of(scene);
-  plan.disk_bytes = plan.dumps * double(scene.N) * (is_aggregation(scene) ? kDumpBytesAggregation : kDumpBytesGas);
+  plan.disk_bytes = plan.dumps * double(scene.N) * costs.dump_bytes_per_particle;
   return plan;
 }
 

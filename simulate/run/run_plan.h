@@ -18,7 +18,7 @@
 #include <string>
 
 #include "common/interrupt.h"
-#include "simulate/run/scene.h"
+#include "simulate/scene/scene.h"
 
 namespace coolgas {
 

@@ -38,13 +38,14 @@ RunParameters parameters_of(const Scene& s) {
   p.phi = s.phi;
   p.T0 = initial_temperature(s);
   p.model = s.model_name();
-  // Only the parameters the model has (common/trajectory/collision_models.h).
-  const auto if_used = [&](const char* name, double v) {
-    return model_uses(p.model, name) ? std::optional<double>(v) : std::nullopt;
-  };
-  p.r0 = if_used("r0", s.r0);
-  p.delta = if_used("delta", s.delta);
-  p.viscoelastic_b = if_used("viscoelastic_b", s.viscoelastic_b);
+  // Only the parameters the model has (common/trajectory/collision_models.h),
+  // each the scene's key collision.<name>.
+  for (const ParameterField& f : run_parameter_fields()) {
+    if (!is_model_specific(f)) continue;
+    const auto member = std::get<std::optional<double> RunParameters::*>(f.member);
+    p.*member = model_uses(p.model, f.name) ? std::optional<double>(scene_number(s, "collision." + std::string(f.name)))
+                                            : std::nullopt;
+  }
   return p;
 }
 

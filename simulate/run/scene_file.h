@@ -3,7 +3,7 @@
 #include <string>
 
 #include "common/trajectory/run_parameters.h"
-#include "simulate/run/scene.h"
+#include "simulate/scene/scene.h"
 
 namespace coolgas {
 

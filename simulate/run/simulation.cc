@@ -25,6 +25,7 @@
 #include "common/output_file.h"
 #include "common/progress.h"
 #include "simulate/run/eta_gate.h"
+#include "simulate/run/models.h"
 #include "simulate/run/run_eta.h"
 #include "common/tsv.h"
 #include "simulate/run/checkpoint.h"
@@ -307,7 +308,8 @@ int start_new(const SimulationRequest& req) {
   WriterLock replaced = lock_replaced_file(out, req.force);
   std::unique_ptr<EngineBase> engine;
   if (scene.init == InitialPositions::kFile) {
-    FileStart start = start_from_file(scene);  // completes the scene (N, L, phi, T0)
+    FileStart start = start_from_file(scene);
+    scene = start.scene;  // completed from the file (N, L, phi, T0)
     if (!req.quiet) std::cerr << "coolgas-simulate: " << start.notice << "\n";
     engine = make_engine(scene, std::move(start.particles), 0.0, {}, start.aggregates ? &*start.aggregates : nullptr);
   } else {

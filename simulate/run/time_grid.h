@@ -3,7 +3,7 @@
 #pragma once
 #include <vector>
 
-#include "simulate/run/scene.h"
+#include "simulate/scene/scene.h"
 
 namespace coolgas {
 

@@ -131,7 +131,9 @@ std::string notice(const Scene& s, const FileConfiguration& c, const FileStart& 
 
 }  // namespace
 
-FileStart start_from_file(Scene& s) {
+FileStart start_from_file(const Scene& given) {
+  FileStart start;
+  Scene& s = start.scene = given;
   const std::string source = "system.from = '" + s.from + "'";
   FileConfiguration c = read_configuration(s.from, s.from_time);
   const std::size_t n = c.position.size() / 3;
@@ -148,7 +150,6 @@ FileStart start_from_file(Scene& s) {
   if (!own_T0) s.T0 = c.T0 ? *c.T0 : s.geometry().unit_time_temperature(double(n) / s.geometry().box_measure(c.L), s.phi);
   check_scene_size(s);
 
-  FileStart start;
   start.particles = particles_of(c, s);
   const bool drawn = c.velocity.empty();
   if (s.model == CollisionModel::kAggregation) {

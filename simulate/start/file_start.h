@@ -24,18 +24,20 @@
 
 #include "simulate/engine/aggregation_engine.h"
 #include "simulate/engine/particles.h"
-#include "simulate/run/scene.h"
+#include "simulate/scene/scene.h"
 
 namespace coolgas {
 
 struct FileStart {
+  Scene scene;  // the scene completed from the file: N, L, phi, T0 and from_time
   Particles particles;
   std::optional<AggregateState> aggregates;  // collision.model = "aggregation"
   std::string notice;  // one line saying what was read, for stderr
 };
 
-// Reads scene.from and completes `scene`: N, L, phi, T0 and from_time (the
-// frame's time, when the file has one). Throws InputError (one line).
-FileStart start_from_file(Scene& scene);
+// Reads scene.from and completes the scene from it: N, L, phi, T0 and
+// from_time (the frame's time, when the file has one). Throws InputError
+// (one line).
+FileStart start_from_file(const Scene& scene);
 
 }  // namespace coolgas

@@ -11,7 +11,7 @@
 
 #include "common/random.h"
 #include "simulate/engine/particles.h"
-#include "simulate/run/scene.h"
+#include "simulate/scene/scene.h"
 #include "simulate/start/setup_interrupt.h"
 
 namespace coolgas {

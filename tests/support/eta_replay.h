@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "simulate/run/models.h"
 #include "simulate/run/run_eta.h"
 
 namespace coolgas::test {

@@ -2,7 +2,7 @@
 #pragma once
 #include <cmath>
 
-#include "simulate/run/scene.h"
+#include "simulate/scene/scene.h"
 
 namespace coolgas::test {
 

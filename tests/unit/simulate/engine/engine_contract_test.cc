@@ -110,7 +110,7 @@ std::vector<ModelIn> every_model() {
   return models;
 }
 std::string case_name(const ::testing::TestParamInfo<ModelIn>& info) {
-  return std::string(model_row(info.param.model).name) + "_" + std::to_string(info.param.dimension) + "D";
+  return model_name(info.param.model) + "_" + std::to_string(info.param.dimension) + "D";
 }
 INSTANTIATE_TEST_SUITE_P(EveryModel, EngineContract, ::testing::ValuesIn(every_model()), case_name);
 

@@ -7,7 +7,7 @@
 #include <algorithm>
 
 #include "common/trajectory/collision_models.h"
-#include "simulate/run/scene.h"
+#include "simulate/scene/scene.h"
 
 namespace coolgas {
 namespace {
@@ -18,10 +18,10 @@ TEST(Models, TheSimulatorAndTheFileNameTheSameModels) {
   const auto& rows = model_rows();
   ASSERT_EQ(rows.size(), collision_models().size());
   for (std::size_t i = 0; i < rows.size(); ++i) {
-    EXPECT_EQ(std::size_t(rows[i].model), i) << rows[i].name;
-    EXPECT_NE(find_collision_model(rows[i].name), nullptr) << rows[i].name << " has no row in collision_models.cc";
-    EXPECT_EQ(find_model_row(rows[i].name), &rows[i]);
-    EXPECT_TRUE(rows[i].make && rows[i].restore && rows[i].eta) << rows[i].name;
+    EXPECT_EQ(std::size_t(rows[i].model), i) << rows[i].name();
+    EXPECT_NE(find_collision_model(rows[i].name()), nullptr) << rows[i].name() << " has no row in collision_models.cc";
+    EXPECT_EQ(find_model_row(rows[i].name()), &rows[i]);
+    EXPECT_TRUE(rows[i].make && rows[i].restore && rows[i].eta && rows[i].costs) << rows[i].name();
   }
   EXPECT_EQ(find_model_row("sticky"), nullptr);
 }
@@ -34,10 +34,10 @@ TEST(Models, TheSceneOffersEveryModelByItsName) {
   ASSERT_NE(key, keys.end());
   ASSERT_EQ(key->choices.size(), model_rows().size());
   for (const ModelRow& r : model_rows()) {
-    EXPECT_EQ(key->choices[std::size_t(r.model)], r.name);
+    EXPECT_EQ(key->choices[std::size_t(r.model)], r.name());
     Scene s;
     s.model = r.model;
-    EXPECT_EQ(s.model_name(), r.name);
+    EXPECT_EQ(s.model_name(), r.name());
   }
 }
 

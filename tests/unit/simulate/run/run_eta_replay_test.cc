@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "simulate/run/models.h"
 #include "simulate/run/run_eta.h"
 #include "tests/support/eta_replay.h"
 #include "tests/support/run_command.h"

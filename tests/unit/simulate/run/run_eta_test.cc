@@ -4,6 +4,7 @@
 // E ~ (1 + t/tau)^-2 and a collision rate ~ sqrt(E), C ~ ln(1 + x), x = t/tau,
 // whose local exponent is h(x) = x / ((1 + x) ln(1 + x)) and whose growth
 // from x0 to x1 is ln(ln(1 + x1) / ln(1 + x0)).
+#include "simulate/run/models.h"
 #include "simulate/run/run_eta.h"
 
 #include <gtest/gtest.h>

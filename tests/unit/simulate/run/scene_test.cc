@@ -1,6 +1,6 @@
 // Scenes: sizes derived consistently, the effective scene reads back to the
 // same scene, and bad values are refused with a message naming them.
-#include "simulate/run/scene.h"
+#include "simulate/scene/scene.h"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
-#include "simulate/run/scene.h"
+#include "simulate/scene/scene.h"
 
 namespace coolgas {
 namespace {

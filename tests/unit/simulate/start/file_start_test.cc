@@ -76,11 +76,11 @@ TEST(FileStart, TheSceneIsCompletedFromTheFileAndPositionsAreExact) {
   const XyzFrame f = lattice(6, true);
   Scene s = file_scene(write_xyz(dir, f));
   const FileStart start = start_from_file(s);
-  EXPECT_EQ(s.N, 216);
-  EXPECT_EQ(s.L, 9.0);
-  EXPECT_DOUBLE_EQ(s.phi, 216 * M_PI / (6 * 729.0));
-  EXPECT_EQ(s.from_time, 7.5);  // the frame's own time is recorded in the effective scene
-  EXPECT_EQ(s.T0, Geometry(3).unit_time_temperature(216 / 729.0, s.phi));  // no T0 in the file: Enskog, as for a fresh start
+  EXPECT_EQ(start.scene.N, 216);
+  EXPECT_EQ(start.scene.L, 9.0);
+  EXPECT_DOUBLE_EQ(start.scene.phi, 216 * M_PI / (6 * 729.0));
+  EXPECT_EQ(start.scene.from_time, 7.5);  // the frame's own time is recorded in the effective scene
+  EXPECT_EQ(start.scene.T0, Geometry(3).unit_time_temperature(216 / 729.0, start.scene.phi));  // no T0 in the file: Enskog, as for a fresh start
   ASSERT_EQ(start.particles.size(), 216u);
   for (std::size_t i = 0; i < 216; ++i)
     for (int d = 0; d < 3; ++d) {
@@ -90,9 +90,9 @@ TEST(FileStart, TheSceneIsCompletedFromTheFileAndPositionsAreExact) {
   EXPECT_FALSE(start.aggregates);
   EXPECT_NE(start.notice.find("velocities from the file"), std::string::npos) << start.notice;
   // The effective scene reads back to the same scene without the file being read.
-  const Scene t = parse_scene(s.to_toml(), "effective", {});
-  EXPECT_EQ(t.to_toml(), s.to_toml());
-  EXPECT_EQ(t.T0, s.T0);
+  const Scene t = parse_scene(start.scene.to_toml(), "effective", {});
+  EXPECT_EQ(t.to_toml(), start.scene.to_toml());
+  EXPECT_EQ(t.T0, start.scene.T0);
 }
 
 TEST(FileStart, VelocitiesAreDrawnAtExactlyT0WithZeroMomentum) {
@@ -119,14 +119,14 @@ TEST(FileStart, AggregatesKeepTheirDiametersAndMassesAndDrawMassWeightedVelociti
   EXPECT_EQ(start.aggregates->diameter, f.diameter);
   double volume = 0;
   for (double d : f.diameter) volume += d * d * d * M_PI / 6;
-  EXPECT_NEAR(s.phi, volume / 729, 1e-15);
+  EXPECT_NEAR(start.scene.phi, volume / 729, 1e-15);
   const auto [P, T] = momentum_and_temperature(start.particles, &start.aggregates->mass);
-  EXPECT_NEAR(T, s.T0, 1e-14 * s.T0);
+  EXPECT_NEAR(T, start.scene.T0, 1e-14 * start.scene.T0);
   for (int d = 0; d < 3; ++d) EXPECT_NEAR(P[d], 0, 1e-15);
   // Heavier aggregates move slower: <m v^2> is the same for each mass (equipartition), to sampling error.
   double v2[3] = {0, 0, 0};
   for (int i = 0; i < 216; ++i) v2[i % 3] += f.mass[i] * dot(start.particles.v[i], start.particles.v[i]) / 72;
-  for (double x : v2) EXPECT_NEAR(x / (3 * s.T0), 1, 0.25);  // 72 aggregates each: 3 sigma of chi^2 with 216 dof
+  for (double x : v2) EXPECT_NEAR(x / (3 * start.scene.T0), 1, 0.25);  // 72 aggregates each: 3 sigma of chi^2 with 216 dof
   // The gas models have unit spheres only.
   EXPECT_NE(error_of(file_scene(path, "inelastic", "")).find("particle 1 has diameter 1.2599"), std::string::npos)
       << error_of(file_scene(path, "inelastic"));
@@ -151,9 +151,9 @@ TEST(FileStart, ACoolgasTrajectoryGivesItsDumpNearestFromTimeAndItsOwnT0) {
   }
   Scene s = file_scene(path, "elastic", "from_time = 12");
   const FileStart start = start_from_file(s);
-  EXPECT_EQ(s.from_time, 10.0);
+  EXPECT_EQ(start.scene.from_time, 10.0);
   EXPECT_EQ(start.particles.v[0].x, 10.0);
-  EXPECT_EQ(s.T0, 0.123);  // its times go on in its own unit
+  EXPECT_EQ(start.scene.T0, 0.123);  // its times go on in its own unit
   EXPECT_NE(start.notice.find("T0 = 0.123 (the file's)"), std::string::npos) << start.notice;
 }
 
@@ -216,8 +216,8 @@ TEST(FileStart, AFrameTimeThatIsNotFiniteAndPositiveIsRefused) {
         << e;
   }
   Scene s = file_scene(write_h5md(dir, f, 2.5));
-  start_from_file(s);
-  EXPECT_EQ(s.from_time, 2.5);
+  const FileStart start = start_from_file(s);
+  EXPECT_EQ(start.scene.from_time, 2.5);
 }
 
 }  // namespace

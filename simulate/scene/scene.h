@@ -19,7 +19,11 @@ namespace coolgas {
 enum class InitialPositions { kRandom, kFcc, kFile };
 // kViscoelastic: velocity-dependent restitution (simulate/engine/collision_rules.h);
 // kAggregation: ballistic aggregation, spheres that touch merge (simulate/engine/aggregation_engine.h).
+// The order is that of the file side's table, common/trajectory/collision_models.h,
+// which names each model (tests/unit/simulate/run/models_test.cc).
 enum class CollisionModel { kElastic, kInelastic, kViscoelastic, kAggregation };
+// collision.model and /parameters/model of `m`: "elastic", ...
+std::string model_name(CollisionModel m);
 
 struct Scene {
   // system
@@ -144,5 +148,14 @@ void check_scene_size(const Scene& scene);
 
 // Keys a resumed run may change (run.* and output.*); others are rejected.
 bool key_changeable_on_resume(const std::string& key);
+
+// The scene's physics as TOML: every key a resume may not change, as the
+// scene has it (the others at their defaults). A checkpoint belongs to the
+// run whose physics it records.
+std::string physics_toml(const Scene& s);
+
+// The number the scene gives key `key` (a collision.* parameter);
+// std::logic_error for a key that is not a number.
+double scene_number(const Scene& s, const std::string& key);
 
 }  // namespace coolgas

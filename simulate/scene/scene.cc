@@ -1,4 +1,4 @@
-#include "simulate/run/scene.h"
+#include "simulate/scene/scene.h"
 
 #include <algorithm>
 #include <cctype>
@@ -12,8 +12,8 @@
 
 #include "common/did_you_mean.h"
 #include "common/error.h"
-#include "simulate/run/models.h"
 #include "common/memory.h"
+#include "common/trajectory/collision_models.h"
 #include "common/tsv.h"
 #include "simulate/engine/cell_grid.h"
 
@@ -37,7 +37,7 @@ const char* const kInitNames[] = {"random", "fcc", "file"};
 // The models' names, in the enum's order (simulate/run/models.h).
 std::vector<std::string> model_names() {
   std::vector<std::string> names;
-  for (const ModelRow& r : model_rows()) names.emplace_back(r.name);
+  for (const CollisionModelSpec& m : collision_models()) names.emplace_back(m.name);
   return names;
 }
 static_assert(std::size(kInitNames) == std::size_t(InitialPositions::kFile) + 1,
@@ -224,7 +224,7 @@ std::string scene_keys_help() {
     if (k.need == KeyNeed::kDefault) facts += ", default " + k.toml(Scene{});
     if (k.need == KeyNeed::kOptional) facts += ", optional";
     std::string models;
-    for (M m : k.models) models += std::string(models.empty() ? "" : ", ") + model_row(m).name;
+    for (M m : k.models) models += std::string(models.empty() ? "" : ", ") + model_name(m);
     if (!models.empty()) facts += "; model " + models;
     if (!k.inits.empty()) facts += "; init " + init_names(k);
     out += std::string("  ") + k.key + " (" + facts + "): " + k.help + "\n";
@@ -607,7 +607,7 @@ void check_unused_keys(const Scene& s, const KeyValues& kv) {
       throw InputError(std::string(k.key) + " is set but system.init = \"" + kInitNames[int(s.init)] +
                        "\" does not use it; remove it, or set init = " + init_names(k));
     std::string users;
-    for (M m : k.models) users += std::string(users.empty() ? "" : " or ") + "\"" + model_row(m).name + "\"";
+    for (M m : k.models) users += std::string(users.empty() ? "" : " or ") + "\"" + model_name(m) + "\"";
     throw InputError(std::string(k.key) + " is set but collision.model = \"" + s.model_name() +
                      "\" does not use it; remove it, or set model = " + users);
   }
@@ -663,7 +663,25 @@ Scene parse_scene(const std::string& toml_text, const std::string& source, const
   return build_scene(kv, overridden);
 }
 
-std::string Scene::model_name() const { return model_row(model).name; }
+std::string physics_toml(const Scene& s) {
+  Scene p;
+  for (const SceneKey& k : scene_keys()) {
+    const std::string value = k.toml(s);
+    if (key_changeable_on_resume(k.key) || value.empty()) continue;
+    k.set(p, to_value(k, parse_override(std::string(k.key) + "=" + value).second));
+  }
+  return p.to_toml();
+}
+
+double scene_number(const Scene& s, const std::string& key) {
+  const SceneKey& k = key_row(key.c_str());
+  if (k.type != KeyType::kFloat) throw std::logic_error("scene key " + key + " is not a number");
+  return std::get<double>(to_value(k, parse_override(key + "=" + k.toml(s)).second));
+}
+
+std::string model_name(CollisionModel m) { return std::string(collision_models().at(std::size_t(m)).name); }
+
+std::string Scene::model_name() const { return coolgas::model_name(model); }
 
 std::string Scene::to_toml() const {
   std::string out = "# coolgas scene: the effective values (file, --set overrides and defaults)\n";
