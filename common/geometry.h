@@ -77,6 +77,10 @@ class Geometry {
     if (d_ == 1) return N / phi;
     return d_ == 3 ? std::cbrt(N * M_PI / (6.0 * phi)) : std::sqrt(N * M_PI / (4.0 * phi));
   }
+  // Close packing, the densest covered fraction: rods touching round the
+  // ring (1), disks in a hexagonal lattice (π/(2√3)), spheres in FCC (π/(3√2)).
+  // Every start, generated or from a file, stays below it: at it nothing moves.
+  double close_packing() const { return pick(1.0, M_PI / (2 * std::sqrt(3.0)), M_PI / (3 * std::sqrt(2.0))); }
   // The formula of covered_fraction, as a message shows it.
   const char* covered_fraction_formula() const { return pick("N/L", "N pi/(4 L^2)", "N pi/(6 L^3)"); }
 

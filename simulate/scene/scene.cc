@@ -560,6 +560,17 @@ void set_size(Scene& s, const KeyValues& kv, const std::set<std::string>& overri
 // exceeded only beyond that round-off.
 bool exceeds(double phi, double limit) { return phi > limit * (1 + 1e-12); }
 
+}  // namespace
+
+std::string check_close_packing(const Scene& s) {
+  const Geometry g = s.geometry();
+  if (s.phi < g.close_packing()) return "";
+  return std::string("unit ") + g.particles() + " (system.dimension = " + std::to_string(g.d()) + ") cover at most " +
+         format_number(g.close_packing()) + " of the " + g.box() + " (close packing), where none can move; need phi below it";
+}
+
+namespace {
+
 // What 1D does not offer, each refused with its own line. Rods cover the
 // whole ring at phi = 1; below it the exact equilibrium placement
 // (simulate/start/rod_placement.h) reaches any density.
@@ -575,8 +586,8 @@ void check_rods(const Scene& s) {
 // What 2D does not offer, each refused with its own line.
 void check_dimension(const Scene& s) {
   if (s.dimension == 1) return check_rods(s);
-  if (exceeds(s.phi, kMaxFccPhi))  // the key allows up to 1, for rods
-    out_of_range("system.phi", s.phi, "must be a finite number in (0, 0.7404] (spheres and disks; below 1 for rods)");
+  const std::string close = check_close_packing(s);
+  if (!close.empty()) out_of_range("system.phi", s.phi, close);
   if (s.dimension == 3) return;
   if (s.init == InitialPositions::kFcc)
     throw InputError("system.init = \"fcc\" is a 3D lattice; in system.dimension = 2 use \"random\" (phi <= 0.45)");

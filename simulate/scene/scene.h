@@ -146,6 +146,10 @@ void check_scene_cost(const Scene& scene, double memory_bytes);
 // whose size is known only once the file is read, makes them then.
 void check_scene_size(const Scene& scene);
 
+// "" if s.phi is below close packing in s's dimension (every start, generated
+// or from a file, must be: at it nothing moves), else why not, for a message.
+std::string check_close_packing(const Scene& s);
+
 // Keys a resumed run may change (run.* and output.*); others are rejected.
 bool key_changeable_on_resume(const std::string& key);
 

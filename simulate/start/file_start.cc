@@ -140,6 +140,8 @@ FileStart start_from_file(const Scene& given) {
   check_dimension(s, c, source);
   set_spheres(c, s.model, source);
   take_size(s, n, c.L, volume_fraction(c, n), source);
+  const std::string close = check_close_packing(s);
+  if (!close.empty()) throw InputError(source + ": phi = " + format_number(s.phi) + " is out of range: " + close);
   // The frame's time becomes the run's start, which every --resume checks:
   // a NaN or negative time (another program's H5MD) is refused here, once.
   if (c.time && !(std::isfinite(*c.time) && *c.time >= 0))

@@ -220,5 +220,29 @@ TEST(FileStart, AFrameTimeThatIsNotFiniteAndPositiveIsRefused) {
   EXPECT_EQ(start.scene.from_time, 2.5);
 }
 
+// A file start stays below close packing, as a scene does, in every
+// dimension: rods filling the ring (phi = 1) are refused in one line, and a
+// hair less room than that is a start.
+TEST(FileStart, ClosePackingIsRefusedAsScenesRefuseIt) {
+  const std::string dir = test::scratch_dir("file_start_packed");
+  for (const double L : {40.0, 40.5}) {
+    XyzFrame f;
+    f.dimension = 1;
+    f.L = L;
+    for (int i = 0; i < 40; ++i)
+      for (double x : {L / 40 * (i + 0.5), 0.0, 0.0}) f.position.push_back(x);
+    Scene s = file_scene(write_xyz(dir, f), "elastic", "dimension = 1");
+    const std::string e = error_of(s);
+    if (L == 40.0) {
+      EXPECT_NE(e.find("phi = 1 is out of range: unit rods (system.dimension = 1) cover at most 1 of the ring (close "
+                       "packing)"),
+                std::string::npos)
+          << e;
+    } else {
+      EXPECT_EQ(e, "");
+    }
+  }
+}
+
 }  // namespace
 }  // namespace coolgas
