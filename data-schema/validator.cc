@@ -21,6 +21,8 @@ std::string path_of(std::string_view base, std::string_view name) {
 
 std::string attr_text(const AttributeRef& a) { return path_of(a.group, a.name); }
 
+constexpr const char* kDamagedText = "cannot be read: its object header is damaged";
+
 // "x, x" (n times x), as an array attribute is shown.
 std::string repeated(const std::string& x, int n) {
   std::string s;
@@ -47,8 +49,11 @@ class Checker {
     read_model();
     read_completion();
     for (const GroupSpec& g : profile_.groups) check_group(g);
-    d_ = layout::dimension_of(file_);
-    if (d_ < 1 || d_ > 3) d_ = 3;  // the attribute check reports any other value
+    try {
+      d_ = layout::dimension_of(file_);
+    } catch (const InputError&) {
+      d_ = 3;  // the attribute check reports any other value
+    }
     for (const AttributeSpec& a : profile_.attributes) check_attribute(a);
     read_box_parameters();
     for (const ElementSpec& e : profile_.elements) guarded(e.path, [&] { check_element(e); });
@@ -142,12 +147,15 @@ class Checker {
     const ObjectKind kind = kind_of(file_, g.path);
     if (kind == ObjectKind::kMissing && required(g.presence, g.since))
       problem(g.path, "missing group (" + std::string(g.meaning) + ")");
+    else if (kind == ObjectKind::kDamaged)
+      problem(g.path, kDamagedText);
     else if (kind != ObjectKind::kMissing && kind != ObjectKind::kGroup)
       problem(g.path, "is not a group");
   }
 
   void check_attribute(const AttributeSpec& a) {
-    if (kind_of(file_, a.group) == ObjectKind::kMissing) return;  // reported with the group
+    const ObjectKind group = kind_of(file_, a.group);
+    if (group == ObjectKind::kMissing || group == ObjectKind::kDamaged) return;  // reported with the group
     const std::string name = "attribute '" + std::string(a.name) + "'";
     AttributeFound found;
     if (!read_attribute(file_, a.group, a.name, found)) {
@@ -192,7 +200,9 @@ class Checker {
                                                              const std::vector<Extent>& row) {
     const ObjectKind kind = kind_of(file_, path);
     if (kind != ObjectKind::kDataset) {
-      problem(path, kind == ObjectKind::kMissing ? "missing dataset" : "is not a dataset");
+      problem(path, kind == ObjectKind::kMissing   ? "missing dataset"
+                    : kind == ObjectKind::kDamaged ? kDamagedText
+                                                   : "is not a dataset");
       return std::nullopt;
     }
     h5::Handle ds = h5::open_dataset(file_, path);
@@ -232,6 +242,7 @@ class Checker {
         problem(e.path, "missing element (" + std::string(e.meaning) + ")");
       return;
     }
+    if (kind == ObjectKind::kDamaged) return problem(e.path, kDamagedText);
     if (kind != ObjectKind::kGroup) return problem(e.path, "is not a group (an H5MD element holds step, time, value)");
     auto step = check_series(path_of(e.path, "step"), DataType::kInt64, e.rows, {});
     auto time = check_series(path_of(e.path, "time"), DataType::kFloat64, e.rows, {});

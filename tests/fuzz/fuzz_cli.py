@@ -12,7 +12,10 @@ run) and runs each:
   write     an output file option (--series-file) on a full device: exit
             code 5 and one line naming that file;
   overflow  Smoluchowski kernels whose solution overflows: exit code 2, one
-            line on stderr, no row of nan or inf on stdout.
+            line on stderr, no row of nan or inf on stdout;
+  invalid   coolgas-validate on a damaged file: exit code 2, nothing on
+            stderr, problem lines on stdout each naming the file.
+A refused case that names a file (damaged metadata) must name it in its line.
 Each case has a time limit: a hang is a failure too.
 
 usage: fuzz_cli.py BIN_DIR WORK_DIR [--list]
@@ -381,6 +384,79 @@ class Corpus:
                 self.add("refused", f"{what} with a damaged {element} chunk", cmd,
                          watch=path if what == "--resume" else None)
 
+    # Damaged attributes and metadata (issue 52, classes 1 and 6): a
+    # box/dimension that is an array, a string, 2.5 or out of range, an array
+    # /parameters/N, and object headers overwritten. Every reader refuses the
+    # file naming it (exit 2, one line, never a segfault or "internal error:
+    # HDF5"); coolgas-validate lists the problem on stdout (exit 2).
+    def damaged_metadata(self, run):
+        import h5py
+        import numpy as np
+        p = self.prog
+        scene = self.scene_file(toml({k: v for k, v in BASE.items() if k not in ("system.N", "system.phi")}))
+
+        def attribute(group, name, value):
+            def change(f):
+                del f[group].attrs[name]
+                f[group].attrs[name] = value
+            return change
+
+        def header(path):
+            def damage(copy):
+                with h5py.File(copy, "r") as f:
+                    at = h5py.h5o.get_info(f[path].id).addr
+                data = bytearray(open(copy, "rb").read())
+                data[at:at + 4] = b"\xff" * 4
+                open(copy, "wb").write(data)
+            return damage
+
+        box = "particles/all/box"
+        # Each fault with the readers that read what it damages (the energy
+        # table reads observables, not positions; a start reads no observables).
+        dumps = ["convert", "clusters", "velocity", "structure", "shape", "snapshot", "--resume", "start from"]
+        every = ["energy"] + dumps
+        faults = [("dimension [2, 2]", attribute(box, "dimension", np.array([2, 2])), every),
+                  ("dimension [3, 3, 3, 3, 3]", attribute(box, "dimension", np.full(5, 3)), every),
+                  ("dimension '3'", attribute(box, "dimension", "3"), every),
+                  ("dimension b'2'", attribute(box, "dimension", np.bytes_(b"2")), every),
+                  ("dimension 2.5", attribute(box, "dimension", 2.5), every),
+                  ("dimension 3.0", attribute(box, "dimension", 3.0), every),
+                  ("dimension 0", attribute(box, "dimension", np.int64(0)), every),
+                  ("dimension 4", attribute(box, "dimension", np.int64(4)), every),
+                  ("dimension -2**62", attribute(box, "dimension", np.int64(-2**62)), every),
+                  ("/parameters/N [200, 200]", attribute("parameters", "N", np.array([200, 200])),
+                   ["energy", "convert", "clusters", "--resume", "start from"]),
+                  ("/parameters/L [10, 10, 10]", attribute("parameters", "L", np.array([10.0, 10.0, 10.0])),
+                   ["energy", "convert", "clusters", "--resume", "start from"]),
+                  ("/parameters/model ['a', 'b']", attribute("parameters", "model", ["inelastic", "elastic"]),
+                   ["energy", "--resume"]),
+                  ("box header damaged", header(box), every),
+                  ("position header damaged", header("particles/all/position"),
+                   ["convert", "clusters", "structure", "shape", "snapshot", "--resume", "start from"]),
+                  ("observables header damaged", header("observables"), ["energy", "--resume"])]
+        for k, (what, change, tools) in enumerate(faults):
+            path = self.path(f"meta{k}.h5")
+            shutil.copy(run, path)
+            if change.__name__ == "damage":
+                change(path)
+            else:
+                with h5py.File(path, "r+") as f:
+                    change(f)
+            name = os.path.basename(path)
+            readers = {"convert": f"{p('coolgas-convert')} {path}",
+                       "energy": f"{p('coolgas-energy')} {path}",
+                       "clusters": f"{p('coolgas-clusters')} {path}",
+                       "velocity": f"{p('coolgas-velocity')} {path}",
+                       "structure": f"{p('coolgas-structure')} {path}",
+                       "shape": f"{p('coolgas-shape')} {path}",
+                       "snapshot": f"{p('coolgas-snapshot')} {path} --time 2 -o {self.path(f'meta{k}.png')}",
+                       "--resume": f"{p('coolgas-simulate')} -q --resume {path} --set run.t_end=4",
+                       "start from": self.start_command(scene, path)}
+            for tool in tools:
+                self.add("refused", f"{tool} with {what}", readers[tool], watch=path if tool == "--resume" else None,
+                         names=name)
+            self.add("invalid", f"validate with {what}", f"{p('coolgas-validate')} {path}", names=name)
+
     # Output names around the stated limit: every length the check passes
     # must work (the run adds .partial, .checkpoint, .checkpoint.partial);
     # the longer ones are refused.
@@ -451,6 +527,8 @@ def run_case(case, work):
             return "internal error: " + err
         if r.stdout:
             return "stdout not empty: " + r.stdout[:200].decode("utf-8", "replace")
+        if case["names"] and case["names"] not in err:
+            return f"the error line does not name {case['names']}: {err[:300]}"
         if case["watch"]:
             if digest is None and os.path.exists(case["watch"]):
                 return "output file written: " + case["watch"]
@@ -459,6 +537,14 @@ def run_case(case, work):
         after = sorted(os.listdir(work))
         if after != before:
             return "files written: " + ", ".join(sorted(set(after) - set(before)))
+    elif kind == "invalid":  # coolgas-validate: problems on stdout, one line each naming the file
+        out = r.stdout.decode("utf-8", "replace")
+        if r.returncode != 2 or err:
+            return f"exit code {r.returncode} and stderr {err[:300]!r}, expected 2 and nothing"
+        if not out or any(not line.split(": ")[0].endswith(case["names"]) for line in out.splitlines()):
+            return f"expected problem lines naming {case['names']}, got: {out[:300]}"
+        if "internal error" in out:
+            return "internal error: " + out[:300]
     elif kind == "no space":
         if r.returncode == 0:
             return "exit code 0 although stdout could not be written"
@@ -504,6 +590,7 @@ def main():
     corpus.lying_starts()
     corpus.bad_checkpoints(run)
     corpus.damaged_chunks(run)
+    corpus.damaged_metadata(run)
     corpus.overflowing_kernels()
     corpus.long_names()
     corpus.outputs(run, table)
