@@ -287,6 +287,31 @@ class Corpus:
             self.add("refused", f"--resume damaged {signature.decode()}",
                      f"{self.prog('coolgas-simulate')} -q --resume {path} --set run.t_end=4", watch=path)
 
+        # Series a resume cannot carry on (issue 52, class 7): once resumed
+        # with exit 5 after changing the file, as coolgas-validate passed them.
+        def fixed_size(path, rows=None):
+            def change(f):
+                data = f[path][()]
+                del f[path]
+                f[path] = data if rows is None else data[:rows]
+            return change
+
+        def shortened(element, by):
+            def change(f):
+                for x in ("step", "time", "value"):
+                    d = f[f"{element}/{x}"]
+                    d.resize(d.shape[0] - by, axis=0)
+            return change
+        fault("observable_of_fixed_size", fixed_size("observables/kinetic_energy/value"))
+        fault("observable_fixed_and_short", fixed_size("observables/collisions/time", 3))
+        fault("positions_of_fixed_size", fixed_size("particles/all/position/value"))
+        fault("reference_observable_3_rows_short", shortened("observables/kinetic_energy", 3))
+        fault("an_observable_5_rows_short", shortened("observables/total_momentum", 5))
+        for name in ["observable_of_fixed_size", "reference_observable_3_rows_short", "positions_of_fixed_size"]:
+            path = self.path(f"corrupt_{name}.h5")
+            self.add("invalid", f"validate {name}", f"{self.prog('coolgas-validate')} {path}",
+                     names=os.path.basename(path))
+
         def nan_velocity(f):
             v = f["particles/all/velocity/value"][-1]
             v[4] = [np.nan, 0, 0]
