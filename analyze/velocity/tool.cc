@@ -63,7 +63,13 @@ void run_velocity(const VelocityOptions& opt, std::ostream& final_out) {
   for (std::size_t i = 0; i < dumps.size(); ++i) {
     throw_if_interrupted(i, dumps.size(), "dumps");
     traj.read(dumps[i], frame);
-    const VelocityStats s = velocity_stats(frame.velocity, hist, opt.tail_from, opt.min_count, traj.dimension());
+    const VelocityStats s = [&] {
+      try {
+        return velocity_stats(frame.velocity, hist, opt.tail_from, opt.min_count, traj.dimension());
+      } catch (const InputError& e) {  // the dump the statistics refuse
+        throw InputError(opt.input + ": dump at t = " + format_number(frame.time) + ": " + e.what());
+      }
+    }();
     if (opt.table == VelocityTable::kTail && !s.fit) no_tail(traj, frame, opt, s.tail.size());
     const TableBlock b = velocity_block(opt.table, frame.time, hist, s, opt.tail_from);
     if (opt.table == VelocityTable::kSeries) {
