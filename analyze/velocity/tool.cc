@@ -59,6 +59,7 @@ void run_velocity(const VelocityOptions& opt, std::ostream& final_out) {
   Trajectory traj(opt.input, kVelocity | kAnyDimension);
   TsvWriter out(os, "coolgas-velocity", provenance(traj, opt), velocity_columns(opt.table));
   Frame frame;
+  std::vector<std::string> notes;  // printed once every dump is read: an error stays one line
   const std::vector<std::size_t> dumps = traj.dumps_nearest(opt.times, opt.exact_time);
   for (std::size_t i = 0; i < dumps.size(); ++i) {
     throw_if_interrupted(i, dumps.size(), "dumps");
@@ -73,12 +74,13 @@ void run_velocity(const VelocityOptions& opt, std::ostream& final_out) {
     if (opt.table == VelocityTable::kTail && !s.fit) no_tail(traj, frame, opt, s.tail.size());
     const TableBlock b = velocity_block(opt.table, frame.time, hist, s, opt.tail_from);
     if (opt.table == VelocityTable::kSeries) {
-      if (!s.fit) note(no_tail_text(traj, frame, opt, s.tail.size()) + "; beta is nan in that row");
+      if (!s.fit) notes.push_back(no_tail_text(traj, frame, opt, s.tail.size()) + "; beta is nan in that row");
       out.append(b);  // a row per dump, not a block
     } else {
       out.write(b);
     }
   }
+  for (const std::string& text : notes) note(text);
   final_out << os.str();
 }
 

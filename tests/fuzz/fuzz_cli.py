@@ -53,11 +53,11 @@ BAD = {
     "collision.model": ['"sticky"', '"Elastic"', '""', "2", '"inelastic\\n"'],
     "collision.r0": ["0", "-0.5", "1.0000001", "2", "1e300"],
     "collision.delta": ["-1e-4", "-1e300"],
-    "run.t_end": ["0", "-5", "-1e-300"],
+    "run.t_end": ["0", "-5", "-1e-300", "1e400"],
     "output.observables_per_decade": ["0", "-1", "4294967297", "2147483648", "1e5", "100000", "1e9", "0.5"],
     "output.dumps_per_decade": ["0", "-3", "4294967297", "2147483648", "1e9", "1000000", "2.5"],
     "output.t_min": ["0", "-1", "-1e-300"],
-    "output.dump_times": ["[-1]", "[nan]", "[inf]", "5", '["a"]', "[[1]]", "[1, -2]"],
+    "output.dump_times": ["[-1]", "[nan]", "[inf]", "5", '["a"]', "[[1]]", "[1, -2]", "[1e400]", "[1, 2, -1e400]"],
 }
 KEYS = list(BAD)
 STRING_KEYS = {"system.init", "collision.model"}
@@ -482,6 +482,35 @@ class Corpus:
                          names=name)
             self.add("invalid", f"validate with {what}", f"{p('coolgas-validate')} {path}", names=name)
 
+    # Values a tool would print as nan (issue 52, class 8): a NaN dump time,
+    # velocities of 1e300 (their moments overflow). Refused naming the file.
+    def non_finite_values(self, run):
+        import h5py
+        import numpy as np
+        p = self.prog
+        path = self.path("nan_time.h5")
+        shutil.copy(run, path)
+        with h5py.File(path, "r+") as f:
+            for element in ("position", "velocity", "image"):
+                d = f[f"particles/all/{element}/time"]
+                t = d[()]
+                t[self.rng.randrange(1, len(t))] = np.nan
+                d[...] = t
+        for tool in ["clusters", "velocity", "structure", "shape"]:
+            self.add("refused", f"{tool} --series with a NaN dump time", f"{p('coolgas-' + tool)} --series {path}",
+                     names=os.path.basename(path))
+        self.add("refused", "convert with a NaN dump time", f"{p('coolgas-convert')} {path}", names=os.path.basename(path))
+        path = self.path("fast.h5")
+        shutil.copy(run, path)
+        with h5py.File(path, "r+") as f:
+            d = f["particles/all/velocity/value"]
+            v = d[()]
+            v[-1] = 1e300
+            d[...] = v
+        for table in ["--series", "--tail", ""]:
+            self.add("refused", f"velocity {table} with velocities of 1e300", f"{p('coolgas-velocity')} {table} {path}",
+                     names=os.path.basename(path))
+
     # Output names around the stated limit: every length the check passes
     # must work (the run adds .partial, .checkpoint, .checkpoint.partial);
     # the longer ones are refused.
@@ -616,6 +645,7 @@ def main():
     corpus.bad_checkpoints(run)
     corpus.damaged_chunks(run)
     corpus.damaged_metadata(run)
+    corpus.non_finite_values(run)
     corpus.overflowing_kernels()
     corpus.long_names()
     corpus.outputs(run, table)
