@@ -107,6 +107,16 @@ Handle vlen_string_type() {
   return t;
 }
 
+// The memory type for reading a variable-length string stored as `stored`:
+// its character set kept (HDF5 converts no ASCII string to UTF-8, and h5py
+// writes bytes as ASCII).
+Handle vlen_string_type_like(hid_t stored) {
+  Handle t = vlen_string_type();
+  const H5T_cset_t cset = H5Tget_cset(stored);
+  if (cset >= 0) check_status(H5Tset_cset(t.id(), cset), "string charset");
+  return t;
+}
+
 Handle replace_attr(hid_t obj, const std::string& name, hid_t type, hid_t space) {
   if (H5Aexists(obj, name.c_str()) > 0) H5Adelete(obj, name.c_str());
   return Handle(check(H5Acreate2(obj, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT),
@@ -635,7 +645,7 @@ std::string read_attr_string(hid_t obj, const std::string& name) {
   const OpenAttr a = open_one_string(obj, name);
   const std::string what = "read " + attr_text(obj, name);
   if (H5Tis_variable_str(a.type.id()) > 0) {
-    Handle type = vlen_string_type();
+    Handle type = vlen_string_type_like(a.type.id());
     char* p = nullptr;
     if (H5Aread(a.attr.id(), type.id(), &p) < 0) fail_reading(obj, what);
     std::string s = p ? p : "";
@@ -657,7 +667,7 @@ std::vector<std::string> read_attr_strings(hid_t obj, const std::string& name) {
   const auto n = static_cast<std::size_t>(a.count);
   std::vector<std::string> out;
   if (H5Tis_variable_str(a.type.id()) > 0) {
-    Handle type = vlen_string_type();
+    Handle type = vlen_string_type_like(a.type.id());
     Handle space(check_reading(H5Aget_space(a.attr.id()), obj, what));
     std::vector<char*> p(n, nullptr);
     if (H5Aread(a.attr.id(), type.id(), p.data()) < 0) fail_reading(obj, what);

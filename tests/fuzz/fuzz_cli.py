@@ -349,6 +349,22 @@ class Corpus:
                 f.create_dataset("particles/all/box/edges", data=[10.0, 10.0, 10.0])
             self.add("refused", f"start from H5MD of shape {shape}", self.start_command(scene, path))
 
+        # issue 52: a foreign file whose time rows outnumber its frames
+        # (7 times, 2 frames) named the wrong frame's time; its boundary in
+        # ASCII strings, as h5py writes bytes, must not be what refuses it.
+        path = self.path("times_and_frames.h5")
+        with h5py.File(path, "w") as f:
+            f.create_group("h5md")
+            grid = np.column_stack([1 + np.arange(200) % 8, 1 + np.arange(200) // 8 % 8, 1 + np.arange(200) // 64])
+            f["particles/all/position/value"] = np.stack([grid.astype(float)] * 2)
+            f["particles/all/position/time"] = np.arange(7, dtype=float)
+            f["particles/all/position/step"] = np.arange(7)
+            f["particles/all/box/edges"] = [10.0, 10.0, 10.0]
+            f["particles/all/box"].attrs["dimension"] = 3
+            f["particles/all/box"].attrs["boundary"] = [b"periodic"] * 3
+        self.add("refused", "start from H5MD of 2 frames and 7 times", self.start_command(scene, path),
+                 names="7 times for 2 frames")
+
     def start_command(self, scene, path):
         out = self.path(f"out{len(self.cases)}.h5")
         return f"{self.prog('coolgas-simulate')} -q {scene} -o {out} --set system.init=file --set system.from={path}"

@@ -124,6 +124,29 @@ TEST(Hdf5File, AnAttributeOfTheWrongShapeOrKindIsRefusedNamingItsValue) {
   EXPECT_EQ(h5::read_attr_int(g.id(), "one"), 7);          // a one-element array is one value
 }
 
+// Variable-length strings in ASCII, as h5py writes bytes (a foreign box's
+// `boundary`): read as they are, not refused as a damaged attribute.
+TEST(Hdf5File, AsciiStringAttributesAreRead) {
+  const std::string path = test::scratch_dir("hdf5_file_ascii") + "/ascii.h5";
+  {
+    h5::Handle f = h5::open_file(path, h5::Mode::kCreateTruncate);
+    h5::Handle type(H5Tcopy(H5T_C_S1));
+    H5Tset_size(type.id(), H5T_VARIABLE);
+    H5Tset_cset(type.id(), H5T_CSET_ASCII);
+    const hsize_t n = 3;
+    h5::Handle space(H5Screate_simple(1, &n, nullptr)), scalar(H5Screate(H5S_SCALAR));
+    h5::Handle a(H5Acreate2(f.id(), "boundary", type.id(), space.id(), H5P_DEFAULT, H5P_DEFAULT));
+    const char* values[3] = {"periodic", "periodic", "none"};
+    ASSERT_GE(H5Awrite(a.id(), type.id(), values), 0);
+    h5::Handle b(H5Acreate2(f.id(), "unit", type.id(), scalar.id(), H5P_DEFAULT, H5P_DEFAULT));
+    const char* unit = "nm";
+    ASSERT_GE(H5Awrite(b.id(), type.id(), &unit), 0);
+  }
+  h5::Handle f = h5::open_file(path, h5::Mode::kReadOnly);
+  EXPECT_EQ(h5::read_attr_strings(f.id(), "boundary"), (std::vector<std::string>{"periodic", "periodic", "none"}));
+  EXPECT_EQ(h5::read_attr_string(f.id(), "unit"), "nm");
+}
+
 // An object header overwritten: opening the object, or looking up a path
 // through it, is Damaged (an InputError) naming the file and the object,
 // never "internal error: HDF5: open group".
