@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 
@@ -48,6 +49,30 @@ void check_status(herr_t st, const std::string& what) {
   if (st < 0) fail(what);
 }
 
+// A failure the library met while writing to the file (its cache flushing
+// what a writer changed): the writer's to report (WriteError), not damage.
+bool is_write_failure(const std::string& cause) {
+  for (const int err : {ENOSPC, EDQUOT, EFBIG})
+    if (cause == std::strerror(err)) return true;
+  return false;
+}
+
+// Reading the file's structure failed (an object header, a link, an
+// attribute table or message HDF5 cannot decode): the file is damaged, an
+// InputError naming the file and the object. A write failure met on the
+// way stays an Error, which a writer reports as a failed write.
+[[noreturn]] void fail_reading(hid_t loc, const std::string& what) {
+  const std::string cause = system_cause();
+  if (is_write_failure(cause)) throw Error("HDF5: " + what, cause);
+  throw Damaged("'" + file_of(loc) + "': cannot " + what + ": the file is damaged" +
+                (cause.empty() ? "" : " (" + cause + ")"));
+}
+
+hid_t check_reading(hid_t id, hid_t loc, const std::string& what) {
+  if (id < 0) fail_reading(loc, what);
+  return id;
+}
+
 hid_t mem_type(Type t) {
   switch (t) {
     case Type::kFloat64: return H5T_NATIVE_DOUBLE;
@@ -82,18 +107,53 @@ Handle vlen_string_type() {
   return t;
 }
 
+// The memory type for reading a variable-length string stored as `stored`:
+// its character set kept (HDF5 converts no ASCII string to UTF-8, and h5py
+// writes bytes as ASCII).
+Handle vlen_string_type_like(hid_t stored) {
+  Handle t = vlen_string_type();
+  const H5T_cset_t cset = H5Tget_cset(stored);
+  if (cset >= 0) check_status(H5Tset_cset(t.id(), cset), "string charset");
+  return t;
+}
+
 Handle replace_attr(hid_t obj, const std::string& name, hid_t type, hid_t space) {
   if (H5Aexists(obj, name.c_str()) > 0) H5Adelete(obj, name.c_str());
   return Handle(check(H5Acreate2(obj, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT),
                       "create attribute '" + name + "'"));
 }
 
+// "attribute 'dimension' of '/particles/all/box'", for messages.
+std::string attr_text(hid_t obj, const std::string& name) {
+  return "attribute '" + name + "' of '" + name_of(obj) + "'";
+}
+
 Handle open_attr(hid_t obj, const std::string& name) {
-  if (H5Aexists(obj, name.c_str()) <= 0) throw InputError("missing attribute '" + name + "'");
-  return Handle(check(H5Aopen(obj, name.c_str(), H5P_DEFAULT), "open attribute '" + name + "'"));
+  const htri_t found = H5Aexists(obj, name.c_str());
+  if (found < 0) fail_reading(obj, "look up " + attr_text(obj, name));
+  if (found == 0) throw InputError("'" + file_of(obj) + "': missing " + attr_text(obj, name));
+  return Handle(check_reading(H5Aopen(obj, name.c_str(), H5P_DEFAULT), obj, "open " + attr_text(obj, name)));
 }
 
 }  // namespace
+
+std::string name_of(hid_t object) {
+  const ssize_t n = H5Iget_name(object, nullptr, 0);
+  if (n <= 0) return "(unnamed)";
+  std::string s(std::size_t(n) + 1, '\0');
+  H5Iget_name(object, s.data(), s.size());
+  s.resize(std::size_t(n));
+  return s;
+}
+
+std::string file_of(hid_t object) {
+  const ssize_t n = H5Fget_name(object, nullptr, 0);
+  if (n <= 0) return "(unnamed file)";
+  std::string s(std::size_t(n) + 1, '\0');
+  H5Fget_name(object, s.data(), s.size());
+  s.resize(std::size_t(n));
+  return s;
+}
 
 void Handle::close() {
   if (id_ < 0) return;
@@ -399,20 +459,55 @@ hsize_t chunk_bytes(hid_t dataset) {
   return bytes;
 }
 
+namespace {
+
+// What `path` is (H5I_GROUP, H5I_DATASET, ...), for a link known to exist;
+// H5I_BADID if its object header cannot be read.
+H5I_type_t object_type(hid_t loc, const std::string& path) {
+  Handle o(H5Oopen(loc, path.c_str(), H5P_DEFAULT));
+  return o.valid() ? H5Iget_type(o.id()) : H5I_BADID;
+}
+
+// Opens the existing `path` as a `want` (H5I_GROUP or H5I_DATASET) with
+// `open`: a missing path, an object of the other kind and a damaged object
+// are InputErrors naming the file and the path.
+Handle open_object(hid_t loc, const std::string& path, H5I_type_t want, hid_t (*open)(hid_t, const char*, hid_t)) {
+  const std::string kind = want == H5I_GROUP ? "group" : "dataset";
+  if (!exists(loc, path)) throw InputError("'" + file_of(loc) + "': missing " + kind + " '" + path + "'");
+  const hid_t id = open(loc, path.c_str(), H5P_DEFAULT);
+  if (id >= 0) return Handle(id);
+  const H5I_type_t found = object_type(loc, path);
+  if (found == H5I_GROUP || found == H5I_DATASET)
+    throw InputError("'" + file_of(loc) + "': '" + path + "' is a " + (found == H5I_GROUP ? "group" : "dataset") +
+                     ", not a " + kind);
+  fail_reading(loc, "open " + kind + " '" + path + "'");
+}
+
+}  // namespace
+
 bool exists(hid_t loc, const std::string& path) {
   std::size_t pos = 0;
   while (true) {
     pos = path.find('/', pos + 1);
     const std::string prefix = path.substr(0, pos);
-    if (!prefix.empty() && H5Lexists(loc, prefix.c_str(), H5P_DEFAULT) <= 0) return false;
+    if (!prefix.empty()) {
+      const htri_t found = H5Lexists(loc, prefix.c_str(), H5P_DEFAULT);
+      if (found == 0) return false;
+      if (found < 0) {
+        // Not found because the parent is no group (a dataset), or because
+        // the parent's links cannot be read: the file is damaged.
+        const std::size_t slash = prefix.find_last_of('/');
+        const std::string parent = slash == std::string::npos ? "." : slash == 0 ? "/" : prefix.substr(0, slash);
+        const H5I_type_t type = object_type(loc, parent);
+        if (type == H5I_GROUP || type == H5I_BADID) fail_reading(loc, "look up '" + prefix + "'");
+        return false;
+      }
+    }
     if (pos == std::string::npos) return true;
   }
 }
 
-Handle open_group(hid_t loc, const std::string& path) {
-  if (!exists(loc, path)) throw InputError("missing group '" + path + "'");
-  return Handle(check(H5Gopen2(loc, path.c_str(), H5P_DEFAULT), "open group '" + path + "'"));
-}
+Handle open_group(hid_t loc, const std::string& path) { return open_object(loc, path, H5I_GROUP, H5Gopen2); }
 
 Handle create_group(hid_t loc, const std::string& path) {
   Handle lcpl(check(H5Pcreate(H5P_LINK_CREATE), "link property list"));
@@ -421,10 +516,7 @@ Handle create_group(hid_t loc, const std::string& path) {
                       "create group '" + path + "'"));
 }
 
-Handle open_dataset(hid_t loc, const std::string& path) {
-  if (!exists(loc, path)) throw InputError("missing dataset '" + path + "'");
-  return Handle(check(H5Dopen2(loc, path.c_str(), H5P_DEFAULT), "open dataset '" + path + "'"));
-}
+Handle open_dataset(hid_t loc, const std::string& path) { return open_object(loc, path, H5I_DATASET, H5Dopen2); }
 
 void write_attr(hid_t obj, const std::string& name, const std::string& value) {
   Handle type = vlen_string_type();
@@ -465,82 +557,156 @@ void write_attr(hid_t obj, const std::string& name, const std::vector<std::int32
 
 bool has_attr(hid_t obj, const std::string& name) {
   const htri_t found = H5Aexists(obj, name.c_str());
-  if (found < 0) fail("look up attribute '" + name + "'");  // a damaged attribute table is not "missing"
+  if (found < 0) fail_reading(obj, "look up " + attr_text(obj, name));  // a damaged attribute table is not "missing"
   return found > 0;
 }
 
-H5T_class_t attr_class(hid_t obj, const std::string& name) {
-  Handle a = open_attr(obj, name);
-  Handle type(check(H5Aget_type(a.id()), "attribute type"));
-  return H5Tget_class(type.id());
+namespace {
+
+// An open attribute with its type and the number of values it holds.
+struct OpenAttr {
+  Handle attr, type;
+  hssize_t count = 0;
+  H5T_class_t cls = H5T_NO_CLASS;
+};
+
+OpenAttr open_attr_typed(hid_t obj, const std::string& name) {
+  OpenAttr a{open_attr(obj, name), {}, 0, H5T_NO_CLASS};
+  const std::string what = attr_text(obj, name);
+  a.type = Handle(check_reading(H5Aget_type(a.attr.id()), obj, "read the type of " + what));
+  Handle space(check_reading(H5Aget_space(a.attr.id()), obj, "read the shape of " + what));
+  a.count = H5Sget_simple_extent_npoints(space.id());
+  if (a.count < 0) fail_reading(obj, "read the shape of " + what);
+  a.cls = H5Tget_class(a.type.id());
+  return a;
 }
 
+// Up to `most` values of a numeric attribute as text ("2", "2.5", "[2, 2]",
+// "[1, 2, 3, … (10 values)]"), for messages.
+std::string numbers_text(const OpenAttr& a, hid_t obj, const std::string& name, std::size_t most = 4) {
+  std::vector<double> v(static_cast<std::size_t>(a.count));
+  if (a.count == 0) return "[] (no value)";
+  if (H5Aread(a.attr.id(), H5T_NATIVE_DOUBLE, v.data()) < 0) fail_reading(obj, "read " + attr_text(obj, name));
+  std::string s;
+  for (std::size_t k = 0; k < std::min(most, v.size()); ++k) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.17g", v[k]);
+    std::string x = b;
+    if (a.cls == H5T_FLOAT && x.find_first_not_of("-0123456789") == std::string::npos) x += ".0";
+    s += (k ? ", " : "") + x;
+  }
+  if (v.size() == 1) return s;
+  if (v.size() > most) s += ", … (" + std::to_string(v.size()) + " values)";
+  return "[" + s + "]";
+}
+
+// What a non-numeric attribute holds, for messages: its strings, or its class.
+std::string other_text(const OpenAttr& a, hid_t obj, const std::string& name) {
+  if (a.cls != H5T_STRING) return "not a number (HDF5 type class " + std::to_string(int(a.cls)) + ")";
+  const std::vector<std::string> v = read_attr_strings(obj, name);
+  std::string s;
+  for (std::size_t k = 0; k < std::min<std::size_t>(v.size(), 4); ++k) s += (k ? ", " : "") + ("'" + shown(v[k]) + "'");
+  return "the string " + (v.size() == 1 ? s : "array [" + s + (v.size() > 4 ? ", …" : "") + "]");
+}
+
+// The attribute opened for reading one number: a scalar or a one-element
+// array of an integer class (or, unless `integer`, a float class). Anything
+// else (an array, a string, 2.5 for an integer) is an InputError naming the
+// file, the object, the attribute and what it holds: never a read of several
+// values into one.
+OpenAttr open_one_number(hid_t obj, const std::string& name, bool integer) {
+  OpenAttr a = open_attr_typed(obj, name);
+  const bool number = a.cls == H5T_INTEGER || a.cls == H5T_FLOAT;
+  const bool right_class = a.cls == H5T_INTEGER || (!integer && a.cls == H5T_FLOAT);
+  if (right_class && a.count == 1) return a;
+  throw InputError("'" + file_of(obj) + "': " + attr_text(obj, name) + " is " +
+                   (number ? numbers_text(a, obj, name) : other_text(a, obj, name)) + "; expected one " +
+                   (integer ? "integer" : "number"));
+}
+
+// The attribute opened for reading one string (a scalar or a one-element array).
+OpenAttr open_one_string(hid_t obj, const std::string& name) {
+  OpenAttr a = open_attr_typed(obj, name);
+  if (a.cls != H5T_STRING)
+    throw InputError("'" + file_of(obj) + "': " + attr_text(obj, name) + " is " +
+                     (a.cls == H5T_INTEGER || a.cls == H5T_FLOAT ? numbers_text(a, obj, name) : other_text(a, obj, name)) +
+                     "; expected a string");
+  if (a.count != 1)
+    throw InputError("'" + file_of(obj) + "': " + attr_text(obj, name) + " holds " + std::to_string(a.count) +
+                     " strings; expected one");
+  return a;
+}
+
+}  // namespace
+
+H5T_class_t attr_class(hid_t obj, const std::string& name) { return open_attr_typed(obj, name).cls; }
+
 std::string read_attr_string(hid_t obj, const std::string& name) {
-  Handle a = open_attr(obj, name);
-  Handle ftype(check(H5Aget_type(a.id()), "attribute type"));
-  if (H5Tget_class(ftype.id()) != H5T_STRING) throw InputError("attribute '" + name + "' is not a string");
-  if (H5Tis_variable_str(ftype.id()) > 0) {
-    Handle type = vlen_string_type();
+  const OpenAttr a = open_one_string(obj, name);
+  const std::string what = "read " + attr_text(obj, name);
+  if (H5Tis_variable_str(a.type.id()) > 0) {
+    Handle type = vlen_string_type_like(a.type.id());
     char* p = nullptr;
-    check_status(H5Aread(a.id(), type.id(), &p), "read attribute '" + name + "'");
+    if (H5Aread(a.attr.id(), type.id(), &p) < 0) fail_reading(obj, what);
     std::string s = p ? p : "";
     H5free_memory(p);
     return s;
   }
-  const std::size_t n = H5Tget_size(ftype.id());
+  const std::size_t n = H5Tget_size(a.type.id());
   std::string s(n, '\0');
-  check_status(H5Aread(a.id(), ftype.id(), s.data()), "read attribute '" + name + "'");
+  if (H5Aread(a.attr.id(), a.type.id(), s.data()) < 0) fail_reading(obj, what);
   s.erase(s.find_last_not_of('\0') + 1);
   return s;
 }
 
 std::vector<std::string> read_attr_strings(hid_t obj, const std::string& name) {
-  Handle a = open_attr(obj, name);
-  Handle ftype(check(H5Aget_type(a.id()), "attribute type"));
-  if (H5Tget_class(ftype.id()) != H5T_STRING) throw InputError("attribute '" + name + "' is not a string");
-  Handle space(check(H5Aget_space(a.id()), "attribute space"));
-  const hssize_t n = H5Sget_simple_extent_npoints(space.id());
-  if (n < 0) throw Error("size of attribute '" + name + "'", "");
+  const OpenAttr a = open_attr_typed(obj, name);
+  if (a.cls != H5T_STRING)
+    throw InputError("'" + file_of(obj) + "': " + attr_text(obj, name) + " is not a string");
+  const std::string what = "read " + attr_text(obj, name);
+  const auto n = static_cast<std::size_t>(a.count);
   std::vector<std::string> out;
-  if (H5Tis_variable_str(ftype.id()) > 0) {
-    Handle type = vlen_string_type();
-    std::vector<char*> p(static_cast<std::size_t>(n), nullptr);
-    check_status(H5Aread(a.id(), type.id(), p.data()), "read attribute '" + name + "'");
+  if (H5Tis_variable_str(a.type.id()) > 0) {
+    Handle type = vlen_string_type_like(a.type.id());
+    Handle space(check_reading(H5Aget_space(a.attr.id()), obj, what));
+    std::vector<char*> p(n, nullptr);
+    if (H5Aread(a.attr.id(), type.id(), p.data()) < 0) fail_reading(obj, what);
     for (char* c : p) out.emplace_back(c ? c : "");
     H5Dvlen_reclaim(type.id(), space.id(), H5P_DEFAULT, p.data());
     return out;
   }
-  const std::size_t size = H5Tget_size(ftype.id());
-  std::string buf(size * static_cast<std::size_t>(n), '\0');
-  check_status(H5Aread(a.id(), ftype.id(), buf.data()), "read attribute '" + name + "'");
-  for (hssize_t i = 0; i < n; ++i) {
-    std::string s = buf.substr(static_cast<std::size_t>(i) * size, size);
+  const std::size_t size = H5Tget_size(a.type.id());
+  std::string buf(size * n, '\0');
+  if (H5Aread(a.attr.id(), a.type.id(), buf.data()) < 0) fail_reading(obj, what);
+  for (std::size_t i = 0; i < n; ++i) {
+    std::string s = buf.substr(i * size, size);
     out.push_back(s.erase(s.find_last_not_of('\0') + 1));
   }
   return out;
 }
 
 bool is_group(hid_t loc, const std::string& path) {
-  Handle o(check(H5Oopen(loc, path.c_str(), H5P_DEFAULT), "open '" + path + "'"));
-  return H5Iget_type(o.id()) == H5I_GROUP;
+  const H5I_type_t type = object_type(loc, path);
+  if (type == H5I_BADID) fail_reading(loc, "open '" + path + "'");
+  return type == H5I_GROUP;
 }
 
 double read_attr_double(hid_t obj, const std::string& name) {
-  Handle a = open_attr(obj, name);
+  const OpenAttr a = open_one_number(obj, name, false);
   double v = 0;
-  check_status(H5Aread(a.id(), H5T_NATIVE_DOUBLE, &v), "read attribute '" + name + "'");
+  if (H5Aread(a.attr.id(), H5T_NATIVE_DOUBLE, &v) < 0) fail_reading(obj, "read " + attr_text(obj, name));
   return v;
 }
 
 std::int64_t read_attr_int(hid_t obj, const std::string& name) {
-  Handle a = open_attr(obj, name);
+  const OpenAttr a = open_one_number(obj, name, true);
   std::int64_t v = 0;
-  check_status(H5Aread(a.id(), H5T_NATIVE_INT64, &v), "read attribute '" + name + "'");
+  if (H5Aread(a.attr.id(), H5T_NATIVE_INT64, &v) < 0) fail_reading(obj, "read " + attr_text(obj, name));
   return v;
 }
 
 std::vector<hsize_t> shape(hid_t dataset) {
-  Handle space(check(H5Dget_space(dataset), "dataspace"));
+  Handle space(check_reading(H5Dget_space(dataset), dataset, "read the shape of '" + name_of(dataset) + "'"));
   const int rank = H5Sget_simple_extent_ndims(space.id());
   std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
   H5Sget_simple_extent_dims(space.id(), dims.data(), nullptr);
@@ -600,9 +766,6 @@ void resize_rows(hid_t dataset, hsize_t n) {
 
 namespace {
 
-std::string name_of(hid_t dataset);
-std::string file_of(hid_t object);
-
 // A read of stored values failed: a damaged chunk (its filter fails), bytes
 // cut off or an I/O error. That is damaged input, named with its file and
 // dataset, never an internal error.
@@ -635,26 +798,6 @@ void read_rows(hid_t dataset, Type type, hsize_t first, hsize_t count_rows, void
 }
 
 namespace {
-
-// The dataset's path in its file, for messages.
-std::string name_of(hid_t dataset) {
-  const ssize_t n = H5Iget_name(dataset, nullptr, 0);
-  if (n <= 0) return "(unnamed)";
-  std::string s(std::size_t(n) + 1, '\0');
-  H5Iget_name(dataset, s.data(), s.size());
-  s.resize(std::size_t(n));
-  return s;
-}
-
-// The name of the file an object lies in, for messages.
-std::string file_of(hid_t object) {
-  const ssize_t n = H5Fget_name(object, nullptr, 0);
-  if (n <= 0) return "(unnamed file)";
-  std::string s(std::size_t(n) + 1, '\0');
-  H5Fget_name(object, s.data(), s.size());
-  s.resize(std::size_t(n));
-  return s;
-}
 
 // Dimensions [from, end) as "(a, b, c)" of the whole shape.
 std::string shape_text(const std::vector<hsize_t>& dims) {

@@ -12,6 +12,8 @@
 #include <utility>
 #include <vector>
 
+#include "common/error.h"
+
 namespace coolgas::h5 {
 
 // An HDF5 call failed. `cause` is the operating system's reason when the
@@ -20,6 +22,14 @@ namespace coolgas::h5 {
 struct Error : std::runtime_error {
   Error(const std::string& what, std::string cause) : std::runtime_error(what), cause(std::move(cause)) {}
   std::string cause;
+};
+
+// Reading the file's structure failed: an object header, a link table or
+// an attribute HDF5 cannot decode. An InputError (exit code 2) naming the
+// file and the object; every reading function below throws it for a damaged
+// file, never an Error.
+struct Damaged : InputError {
+  using InputError::InputError;
 };
 
 // Owns one hid_t and closes it with the matching H5*close.
@@ -48,6 +58,11 @@ class Handle {
  private:
   hid_t id_ = H5I_INVALID_HID;
 };
+
+// For messages: the path of an object in its file, and the name of the file
+// it lies in.
+std::string name_of(hid_t object);
+std::string file_of(hid_t object);
 
 // Turns off HDF5's own error printing; coolgas reports errors itself.
 void silence_library_errors();
@@ -106,7 +121,11 @@ void reserve_space(const Handle& file, hsize_t bytes);
 // Gives back what the last reservation left unused (the end of a run).
 void release_reserve(const Handle& file);
 
-bool exists(hid_t loc, const std::string& path);  // link exists (each path component checked)
+// Whether the link exists (each path component checked); Damaged if a
+// group on the way cannot be read.
+bool exists(hid_t loc, const std::string& path);
+// A missing path, an object of the other kind (a dataset for a group) or a
+// damaged one: InputError naming the file and the path.
 Handle open_group(hid_t loc, const std::string& path);
 Handle create_group(hid_t loc, const std::string& path);  // creates parents as needed
 Handle open_dataset(hid_t loc, const std::string& path);
@@ -117,10 +136,13 @@ void write_attr(hid_t obj, const std::string& name, const std::vector<std::strin
 void write_attr(hid_t obj, const std::string& name, double value);
 void write_attr(hid_t obj, const std::string& name, std::int64_t value);
 void write_attr(hid_t obj, const std::string& name, const std::vector<std::int32_t>& values);
-bool has_attr(hid_t obj, const std::string& name);  // Error if the attribute table cannot be read
+bool has_attr(hid_t obj, const std::string& name);  // Damaged if the attribute table cannot be read
 H5T_class_t attr_class(hid_t obj, const std::string& name);  // H5T_INTEGER, H5T_FLOAT, H5T_STRING, ...
+// One value: a scalar or a one-element array. An array of more, or a value
+// of another kind (a string for a number, 2.5 for an integer), is an
+// InputError naming the file, the object, the attribute and what it holds.
 std::string read_attr_string(hid_t obj, const std::string& name);
-double read_attr_double(hid_t obj, const std::string& name);
+double read_attr_double(hid_t obj, const std::string& name);  // an integer or a float
 std::int64_t read_attr_int(hid_t obj, const std::string& name);
 // A string or an array of strings, variable or fixed length (as other programs write them).
 std::vector<std::string> read_attr_strings(hid_t obj, const std::string& name);

@@ -58,9 +58,17 @@ std::vector<std::string> vlen_strings(hid_t attr, hsize_t n) {
 }  // namespace
 
 ObjectKind kind_of(hid_t file, std::string_view path) {
-  if (!h5::exists(file, std::string(path))) return ObjectKind::kMissing;
+  try {
+    if (!h5::exists(file, std::string(path))) return ObjectKind::kMissing;
+  } catch (const h5::Damaged&) {  // a group on the way cannot be read
+    return ObjectKind::kDamaged;
+  }
   h5::Handle obj(H5Oopen(file, std::string(path).c_str(), H5P_DEFAULT));
-  if (!obj.valid()) return ObjectKind::kMissing;  // e.g. a dangling soft link
+  if (!obj.valid()) {  // a dangling soft link, or a damaged object
+    H5L_info_t link{};
+    const bool hard = H5Lget_info(file, std::string(path).c_str(), &link, H5P_DEFAULT) >= 0 && link.type == H5L_TYPE_HARD;
+    return hard ? ObjectKind::kDamaged : ObjectKind::kMissing;
+  }
   switch (H5Iget_type(obj.id())) {
     case H5I_GROUP:
       return ObjectKind::kGroup;

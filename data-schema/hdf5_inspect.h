@@ -12,7 +12,8 @@
 
 namespace coolgas::schema {
 
-enum class ObjectKind { kMissing, kGroup, kDataset, kOther };
+// kDamaged: its object header, or a group on its path, cannot be read.
+enum class ObjectKind { kMissing, kGroup, kDataset, kOther, kDamaged };
 ObjectKind kind_of(hid_t file, std::string_view path);
 
 // "int32", "uint8", "float32", "vlen str", "fixed str", "compound", ...

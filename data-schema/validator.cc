@@ -21,6 +21,8 @@ std::string path_of(std::string_view base, std::string_view name) {
 
 std::string attr_text(const AttributeRef& a) { return path_of(a.group, a.name); }
 
+constexpr const char* kDamagedText = "cannot be read: its object header is damaged";
+
 // "x, x" (n times x), as an array attribute is shown.
 std::string repeated(const std::string& x, int n) {
   std::string s;
@@ -47,8 +49,11 @@ class Checker {
     read_model();
     read_completion();
     for (const GroupSpec& g : profile_.groups) check_group(g);
-    d_ = layout::dimension_of(file_);
-    if (d_ < 1 || d_ > 3) d_ = 3;  // the attribute check reports any other value
+    try {
+      d_ = layout::dimension_of(file_);
+    } catch (const InputError&) {
+      d_ = 3;  // the attribute check reports any other value
+    }
     for (const AttributeSpec& a : profile_.attributes) check_attribute(a);
     read_box_parameters();
     for (const ElementSpec& e : profile_.elements) guarded(e.path, [&] { check_element(e); });
@@ -109,6 +114,7 @@ class Checker {
     const std::vector<double> times = h5::read_all<double>(t.id());
     if (times.empty()) return;
     complete_[RowCount::kFrames] = times.size();
+    last_dump_ = times.back();
     const std::string ot = path_of(profile_.observable_rows_from, "time");
     if (kind_of(file_, ot) != ObjectKind::kDataset) return;
     h5::Handle o = h5::open_dataset(file_, ot);
@@ -116,6 +122,13 @@ class Checker {
     const std::vector<double> obs = h5::read_all<double>(o.id());
     complete_[RowCount::kObservableRows] =
         hsize_t(std::upper_bound(obs.begin(), obs.end(), times.back()) - obs.begin());
+  }
+
+  // The rows of a time series up to the last complete dump (its times do not
+  // decrease, or that is reported).
+  hsize_t rows_until(hid_t time) const {
+    const std::vector<double> t = h5::read_all<double>(time);
+    return hsize_t(std::upper_bound(t.begin(), t.end(), *last_dump_) - t.begin());
   }
 
   std::optional<hsize_t> complete(RowCount kind) const {
@@ -142,12 +155,15 @@ class Checker {
     const ObjectKind kind = kind_of(file_, g.path);
     if (kind == ObjectKind::kMissing && required(g.presence, g.since))
       problem(g.path, "missing group (" + std::string(g.meaning) + ")");
+    else if (kind == ObjectKind::kDamaged)
+      problem(g.path, kDamagedText);
     else if (kind != ObjectKind::kMissing && kind != ObjectKind::kGroup)
       problem(g.path, "is not a group");
   }
 
   void check_attribute(const AttributeSpec& a) {
-    if (kind_of(file_, a.group) == ObjectKind::kMissing) return;  // reported with the group
+    const ObjectKind group = kind_of(file_, a.group);
+    if (group == ObjectKind::kMissing || group == ObjectKind::kDamaged) return;  // reported with the group
     const std::string name = "attribute '" + std::string(a.name) + "'";
     AttributeFound found;
     if (!read_attribute(file_, a.group, a.name, found)) {
@@ -192,7 +208,9 @@ class Checker {
                                                              const std::vector<Extent>& row) {
     const ObjectKind kind = kind_of(file_, path);
     if (kind != ObjectKind::kDataset) {
-      problem(path, kind == ObjectKind::kMissing ? "missing dataset" : "is not a dataset");
+      problem(path, kind == ObjectKind::kMissing   ? "missing dataset"
+                    : kind == ObjectKind::kDamaged ? kDamagedText
+                                                   : "is not a dataset");
       return std::nullopt;
     }
     h5::Handle ds = h5::open_dataset(file_, path);
@@ -202,6 +220,18 @@ class Checker {
       return std::nullopt;
     }
     const std::vector<hsize_t> dims = h5::shape(ds.id());
+    // A resume resizes and appends to every series: one of fixed size (an
+    // other program's rewrite) would fail half-way, after changing the file.
+    if (!dims.empty()) {
+      h5::Handle space(H5Dget_space(ds.id()));
+      std::vector<hsize_t> now(dims.size()), most(dims.size());
+      if (space.valid() && H5Sget_simple_extent_dims(space.id(), now.data(), most.data()) >= 0 &&
+          most[0] != H5S_UNLIMITED) {
+        problem(path, "has a fixed size of " + std::to_string(most[0]) +
+                          " rows; a series must be chunked with unlimited rows (coolgas appends to it)");
+        return std::nullopt;
+      }
+    }
     if (!shape_fits(dims, row)) {
       std::string what = "shape " + shape_text(dims) + " but the profile requires " + shape_rule(rows, row, d_);
       if (d_ != 3 && std::any_of(row.begin(), row.end(), [](const Extent& e) { return e.dimension; }))
@@ -232,6 +262,7 @@ class Checker {
         problem(e.path, "missing element (" + std::string(e.meaning) + ")");
       return;
     }
+    if (kind == ObjectKind::kDamaged) return problem(e.path, kDamagedText);
     if (kind != ObjectKind::kGroup) return problem(e.path, "is not a group (an H5MD element holds step, time, value)");
     auto step = check_series(path_of(e.path, "step"), DataType::kInt64, e.rows, {});
     auto time = check_series(path_of(e.path, "time"), DataType::kFloat64, e.rows, {});
@@ -241,7 +272,11 @@ class Checker {
     if (!step || !time || !value) return;
     const hsize_t least = std::min({step->second, time->second, value->second});
     const hsize_t most = std::max({step->second, time->second, value->second});
-    const auto done = complete(e.rows);
+    // An observable's complete rows are its own rows up to the last complete
+    // dump: every observable must hold the same number (check_shared_rows),
+    // as a resume appends to all of them from there.
+    const auto done = e.rows == RowCount::kObservableRows && last_dump_ ? std::optional(rows_until(time->first.id()))
+                                                                         : complete(e.rows);
     // Rows beyond the complete ones may be ragged: the burst that wrote them was cut short.
     if (done ? least < *done && least != most : least != most)
       return problem(e.path, "step, time and value have " + std::to_string(step->second) + ", " +
@@ -341,6 +376,7 @@ class Checker {
   Report report_;
   int file_version_ = 0;
   int d_ = 3;  // box/dimension
+  std::optional<double> last_dump_;  // the time of the last complete dump
   std::set<std::string> good_attributes_;
   std::optional<std::int64_t> N_;
   std::optional<double> L_;

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <initializer_list>
+#include <optional>
 #include <utility>
 #include <span>
 #include <string>
@@ -32,25 +33,62 @@ py::array_t<T> to_numpy(std::vector<T>&& v, std::vector<py::ssize_t> shape) {
   return py::array_t<T>(shape, owned->data(), free_it);
 }
 
+// The box side of a kernel: finite and > 0. InputError otherwise.
+inline double box_side(double L) {
+  if (!(std::isfinite(L) && L > 0)) throw InputError("L = " + format_number(L) + " is not a box side (a finite number > 0)");
+  return L;
+}
+
+// A numeric argument as C-contiguous float64. Integers and floats are
+// converted; complex numbers (whose imaginary part would be dropped),
+// booleans, strings and objects are refused: InputError naming the argument
+// and its dtype. The one gate every array a kernel takes passes.
+inline Doubles real_numbers(const py::object& given, const std::string& name) {
+  if (py::isinstance<py::str>(given) || py::isinstance<py::bytes>(given))
+    throw py::type_error(name + " must be an array of numbers, got a string");
+  const py::array a = py::array::ensure(given);
+  if (!a) {
+    PyErr_Clear();
+    throw py::type_error(name + " must be an array of numbers, got " + std::string(py::str(py::type::of(given))));
+  }
+  const char kind = a.dtype().kind();
+  if (kind == 'c')
+    throw InputError(name + " is complex (dtype " + std::string(py::str(a.dtype())) +
+                     "); give real numbers (its imaginary part would be dropped)");
+  if (kind != 'f' && kind != 'i' && kind != 'u')
+    throw InputError(name + " has dtype " + shown(std::string(py::str(a.dtype()))) +
+                     "; give real numbers (integers are converted to float64)");
+  return py::cast<Doubles>(a);
+}
+
 // An (N, 3) array of finite numbers (positions, velocities) as x0 y0 z0 x1 ...,
 // or, for disks, an (N, 2) array as the same 3-vectors with z = 0, for rods
 // an (N, 1) array with y = z = 0 (a copy: the libraries take 3 numbers per
 // particle); InputError naming the argument, its shape or the first bad value.
+// Positions given with their box side L must lie in [0, L): a value outside
+// (or an L smaller than the data) is refused, naming both.
 class PointRows {
  public:
   PointRows(const PointRows&) = delete;  // xyz() may point into the object itself
   PointRows& operator=(const PointRows&) = delete;
-  PointRows(const Doubles& a, const char* name) {
+  PointRows(const py::object& given, const char* name, std::optional<double> L = std::nullopt)
+      : array_(real_numbers(given, name)) {
+    const Doubles& a = array_;
     if (a.ndim() != 2 || a.shape(1) < 1 || a.shape(1) > 3)
       throw InputError(std::string(name) + " must be an array of shape (N, 3), or (N, 2) for disks, (N, 1) for rods, got " +
                        std::to_string(a.ndim()) + " dimensions" +
                        (a.ndim() == 2 ? " (N, " + std::to_string(a.shape(1)) + ")" : ""));
     dimension_ = int(a.shape(1));
+    if (L) box_side(*L);
     const std::span<const double> s(a.data(), std::size_t(a.size()));
-    for (std::size_t i = 0; i < s.size(); ++i)
-      if (!std::isfinite(s[i]))
-        throw InputError(std::string(name) + "[" + std::to_string(i / dimension_) + ", " +
-                         std::to_string(i % dimension_) + "] = " + format_number(s[i]) + " is not a finite number");
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      const std::string at = std::string(name) + "[" + std::to_string(i / std::size_t(dimension_)) + ", " +
+                             std::to_string(i % std::size_t(dimension_)) + "] = " + format_number(s[i]);
+      if (!std::isfinite(s[i])) throw InputError(at + " is not a finite number");
+      if (L && !(s[i] >= 0 && s[i] < *L))
+        throw InputError(at + " is outside the box [0, L) of side L = " + format_number(*L) +
+                         " (wrap positions into the box, or give the box they were wrapped into)");
+    }
     if (dimension_ == 3) {
       xyz_ = s;
       return;
@@ -63,6 +101,7 @@ class PointRows {
   int dimension() const { return dimension_; }
 
  private:
+  Doubles array_;  // the float64 array xyz() may point into
   int dimension_ = 3;
   std::vector<double> widened_;  // 2D and 1D only
   std::span<const double> xyz_;
@@ -79,16 +118,34 @@ py::array_t<T> rows_of(std::vector<T>&& v, std::size_t n, int d) {
   return to_numpy(std::move(v), {py::ssize_t(n), py::ssize_t(d)});
 }
 
-// A 1-D array of finite numbers (masses, times, energies).
-inline std::span<const double> values(const Doubles& a, const char* name) {
+// A 1-D array of finite numbers (masses, times, energies), copied.
+inline std::vector<double> values(const py::object& given, const char* name) {
+  const Doubles a = real_numbers(given, name);
   if (a.ndim() != 1)
     throw InputError(std::string(name) + " must be a 1-D array, got " + std::to_string(a.ndim()) + " dimensions");
-  std::span<const double> s(a.data(), std::size_t(a.size()));
+  std::vector<double> s(a.data(), a.data() + a.size());
   for (std::size_t i = 0; i < s.size(); ++i)
     if (!std::isfinite(s[i]))
       throw InputError(std::string(name) + "[" + std::to_string(i) + "] = " + format_number(s[i]) +
                        " is not a finite number");
   return s;
+}
+
+// Masses: values() of `expected` entries (one per position; 0: any
+// number), each > 0 and at most `most`; `particles`: counted in particles,
+// so at least 1. InputError naming the first that is not (a mass of 1e300
+// would index far beyond the tables the kernels fill).
+inline std::vector<double> masses(const py::object& given, const char* name, std::size_t expected, double most,
+                                  bool particles) {
+  std::vector<double> m = values(given, name);
+  if (expected > 0 && m.size() != expected)
+    throw InputError(std::string(name) + " holds " + std::to_string(m.size()) + " values for " +
+                     std::to_string(expected) + " positions; give one per position");
+  for (std::size_t i = 0; i < m.size(); ++i)
+    if (!((particles ? m[i] >= 1 : m[i] > 0) && m[i] <= most))
+      throw InputError(std::string(name) + "[" + std::to_string(i) + "] = " + format_number(m[i]) + " is not a mass " +
+                       (particles ? "of 1 to " + format_number(most) + " particles" : "> 0 and <= " + format_number(most)));
+  return m;
 }
 
 // The value named `name` among `choices`; InputError "<what> = '<name>' is

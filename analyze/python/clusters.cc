@@ -3,6 +3,7 @@
 #include "analyze/clusters/cluster_table.h"
 #include "analyze/labelling/particle_labels.h"
 #include "analyze/python/arrays.h"
+#include "common/limits.h"
 
 namespace coolgas::python {
 namespace {
@@ -16,8 +17,8 @@ ClusterTable table_of(const std::string& name) {
 }
 
 // Labels and the size table: (rank per particle, mass per cluster, smallest cell per cluster), largest first.
-py::tuple label(const Doubles& positions, double L) {
-  const PointRows rows(positions, "positions");
+py::tuple label(const py::object& positions, double L) {
+  const PointRows rows(positions, "positions", L);
   const ClusterGrid grid(L, Geometry(rows.dimension()));
   ClusterLabeller labeller;
   labeller.label(grid, rows.xyz());
@@ -35,15 +36,21 @@ py::tuple label(const Doubles& positions, double L) {
 
 // One frame's coolgas-clusters rows. Gas: `positions`; aggregation: `masses`
 // (the aggregates are the clusters) and the slots N of the file, which size the bins.
-py::dict table(const Doubles& positions, double L, double t, const std::string& table, int bins_per_decade,
-               const std::optional<Doubles>& masses, std::int64_t slots) {
+py::dict table(const py::object& positions, double L, double t, const std::string& table, int bins_per_decade,
+               const std::optional<py::object>& masses, std::optional<std::int64_t> slots) {
   if (bins_per_decade < 1) throw InputError("bins_per_decade must be >= 1, got " + std::to_string(bins_per_decade));
+  if (!std::isfinite(t)) throw InputError("t = " + format_number(t) + " is not a finite number");
   const ClusterTable kind = table_of(table);
-  const PointRows rows(positions, "positions");
+  const PointRows rows(positions, "positions", L);
   const auto pos = rows.xyz();
-  const auto agg = masses ? values(*masses, "masses") : std::span<const double>();
-  const std::int64_t n = slots > 0 ? slots : std::int64_t(pos.size() / 3);
+  if (slots && (*slots < 1 || *slots > kMaxIndex32))
+    throw InputError("slots = " + std::to_string(*slots) + " is not a particle count (1 to " +
+                     std::to_string(kMaxIndex32) + ")");
+  const std::int64_t n = slots ? *slots : std::int64_t(pos.size() / 3);
   if (n < 1) throw InputError("positions holds no particle; a cluster table needs at least one");
+  // An aggregate holds 1 to N (the slots) particles: the histogram's bins end there.
+  const std::vector<double> agg =
+      masses ? coolgas::python::masses(*masses, "masses", pos.size() / 3, double(n), true) : std::vector<double>();
   MassHistogram hist(bins_per_decade, n);
   ClusterLabeller labeller;
   fill_cluster_masses(hist, labeller, L, pos, agg, Geometry(rows.dimension()));
@@ -56,7 +63,7 @@ py::dict table(const Doubles& positions, double L, double t, const std::string& 
 void bind_clusters(py::module_& m) {
   m.def("label_clusters", &label, py::arg("positions"), py::arg("L"));
   m.def("cluster_table", &table, py::arg("positions"), py::arg("L"), py::arg("t"), py::arg("table"),
-        py::arg("bins_per_decade"), py::arg("masses") = py::none(), py::arg("slots") = 0);
+        py::arg("bins_per_decade"), py::arg("masses") = py::none(), py::arg("slots") = py::none());
 }
 
 }  // namespace coolgas::python

@@ -16,8 +16,8 @@ std::vector<Table> tables_of(const py::list& curves) {
     const double L = d["L"].cast<double>();
     if (!(L > 0) || !std::isfinite(L))
       throw InputError(source + ": L = " + format_number(L) + " is not a box side (a number > 0)");
-    tables.push_back(table_of(d["columns"].cast<std::vector<std::string>>(), d["rows"].cast<Doubles>(), source,
-                              {{"L", format_number(L)}}));
+    tables.push_back(table_of(d["columns"].cast<std::vector<std::string>>(), real_numbers(d["rows"], source + ": rows"),
+                              source, {{"L", format_number(L)}}));
   }
   return tables;
 }

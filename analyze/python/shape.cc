@@ -2,6 +2,7 @@
 // asphericity, prolateness) and the mass-radius d_f of one frame
 // (analyze/shape/shape_table.h), as coolgas-shape computes them.
 #include "analyze/python/arrays.h"
+#include "common/limits.h"
 #include "analyze/shape/shape_table.h"
 
 namespace coolgas::python {
@@ -17,18 +18,18 @@ ShapeTable table_of(const std::string& name) {
 
 // Gas: the paper's clusters of `positions`; aggregation: `masses` (the
 // aggregates, solid spheres; positions unused).
-py::dict table(const Doubles& positions, double L, double t, const std::string& table, int bins_per_decade,
-               const std::string& fit_mass, std::int64_t min_mass, const std::optional<Doubles>& masses) {
+py::dict table(const py::object& positions, double L, double t, const std::string& table, int bins_per_decade,
+               const std::string& fit_mass, std::int64_t min_mass, const std::optional<py::object>& masses) {
   const ShapeTable kind = table_of(table);
   check_shape_options(bins_per_decade, min_mass);
   const Window fit = parse_window(fit_mass, "fit_mass");
-  const PointRows rows(positions, "positions");
+  if (!std::isfinite(t)) throw InputError("t = " + format_number(t) + " is not a finite number");
+  const PointRows rows(positions, "positions", L);
   const auto pos = rows.xyz();
   const int d = rows.dimension();
-  const auto agg = masses ? values(*masses, "masses") : std::span<const double>();
-  for (std::size_t i = 0; i < agg.size(); ++i)
-    if (!(agg[i] >= 1))
-      throw InputError("masses[" + std::to_string(i) + "] = " + format_number(agg[i]) + " is not a mass >= 1 particle");
+  // Aggregates (positions unused): each 1 to 2^31 - 1 particles, as a file holds.
+  const std::vector<double> agg =
+      masses ? coolgas::python::masses(*masses, "masses", 0, double(kMaxIndex32), true) : std::vector<double>();
   if (pos.empty() && agg.empty()) throw InputError("positions holds no particle; a shape table needs at least one");
   ClusterShapes shapes;
   const std::vector<ClusterShape> s = masses ? aggregate_shapes(agg, Geometry(d)) : shapes.of_particles(ClusterGrid(L, Geometry(d)), pos);

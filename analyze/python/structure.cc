@@ -1,6 +1,7 @@
 // Structure, wrapped: S(k), L_t and the correlation lengths of one frame
 // (analyze/structure/structure_table.h), as coolgas-structure computes them.
 #include "analyze/python/arrays.h"
+#include "common/limits.h"
 #include "analyze/structure/structure_table.h"
 
 namespace coolgas::python {
@@ -14,13 +15,13 @@ StructureTable table_of(const std::string& name) {
                                 "table", "a structure table");
 }
 
-py::dict table(const Doubles& positions, double L, double t, const std::string& table,
-               const std::optional<Doubles>& velocities, const std::optional<Doubles>& masses, int grid,
+py::dict table(const py::object& positions, double L, double t, const std::string& table,
+               const std::optional<py::object>& velocities, const std::optional<py::object>& masses, int grid,
                double peak_fraction, int direct_shells) {
   const StructureTable kind = table_of(table);
   check_structure_options(grid, peak_fraction, direct_shells);
-  if (!(L > 0 && std::isfinite(L))) throw InputError("L = " + format_number(L) + " is not a box side (a number > 0)");
-  const PointRows rows(positions, "positions");
+  if (!std::isfinite(t)) throw InputError("t = " + format_number(t) + " is not a finite number");
+  const PointRows rows(positions, "positions", L);
   const auto pos = rows.xyz();
   const std::size_t n = pos.size() / 3;
   if (n == 0) throw InputError("positions holds no particle; S(k) needs at least one");
@@ -33,11 +34,9 @@ py::dict table(const Doubles& positions, double L, double t, const std::string& 
                      std::to_string(rows.dimension()) + "), got " +
                      (vel_rows ? "(" + std::to_string(vel.size() / 3) + ", " + std::to_string(vel_rows->dimension()) + ")"
                                : std::string("none")));
-  const auto w = masses ? values(*masses, "masses") : std::span<const double>();
-  if (masses && w.size() != n)
-    throw InputError("masses holds " + std::to_string(w.size()) + " values for " + std::to_string(n) + " positions");
-  for (std::size_t i = 0; i < w.size(); ++i)
-    if (!(w[i] > 0)) throw InputError("masses[" + std::to_string(i) + "] = " + format_number(w[i]) + " is not > 0");
+  // Weights of the density: > 0, at most what a file's aggregate holds.
+  const std::vector<double> w =
+      masses ? coolgas::python::masses(*masses, "masses", n, double(kMaxIndex32), false) : std::vector<double>();
   const int points = structure_grid_points(grid, L);
   FrameStructure fs(points, Geometry(rows.dimension()));
   const TableBlock b = structure_block(kind, fs, t, L, pos, vel, w, peak_fraction, direct_shells);

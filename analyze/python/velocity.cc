@@ -14,9 +14,10 @@ VelocityTable table_of(const std::string& name) {
                                "table", "a velocity table");
 }
 
-py::dict table(const Doubles& velocities, double t, const std::string& table, int bins, double ymax, double tail_from,
+py::dict table(const py::object& velocities, double t, const std::string& table, int bins, double ymax, double tail_from,
                double min_count) {
   const VelocityTable kind = table_of(table);
+  if (!std::isfinite(t)) throw InputError("t = " + format_number(t) + " is not a finite number");
   const PointRows v(velocities, "velocities");
   check_tail_options(tail_from, min_count);
   ComponentHistogram hist(bins, ymax);

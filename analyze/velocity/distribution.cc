@@ -41,8 +41,17 @@ SpeedMoments speed_moments(std::span<const double> v, Geometry g) {
   var4 /= N - 1;
   cov /= N - 1;
   const double var_r = (var4 / std::pow(b, 4) - 4 * a * cov / std::pow(b, 5) + 4 * a * a * var2 / std::pow(b, 6)) / N;
-  return {std::int64_t(n), std::sqrt(b / dimension), a / (b * b) - maxwellian_speed_ratio(dimension),
-          std::sqrt(std::max(var_r, 0.0))};
+  const SpeedMoments m{std::int64_t(n), std::sqrt(b / dimension), a / (b * b) - maxwellian_speed_ratio(dimension),
+                       std::sqrt(std::max(var_r, 0.0))};
+  // kappa's error sums s^8: velocities beyond about 1e38 overflow it, and the
+  // table would hold inf or nan (issue 52). Refused, naming the largest.
+  if (!(std::isfinite(m.v_rms) && std::isfinite(m.kappa) && std::isfinite(m.kappa_err))) {
+    double largest = 0;
+    for (const double x : v) largest = std::max(largest, std::fabs(x));
+    throw InputError("velocities up to |v| = " + format_number(largest) +
+                     " overflow their moments (kappa's error sums |v|^8); give velocities below 1e38");
+  }
+  return m;
 }
 
 ComponentHistogram::ComponentHistogram(int bins, double ymax) : ymax_(ymax) {

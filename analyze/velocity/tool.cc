@@ -59,17 +59,25 @@ void run_velocity(const VelocityOptions& opt, std::ostream& final_out) {
   Trajectory traj(opt.input, kVelocity | kAnyDimension);
   TsvWriter out(os, "coolgas-velocity", provenance(traj, opt), velocity_columns(opt.table));
   Frame buffer;
+  std::vector<std::string> notes;  // printed once every dump is read: an error stays one line
   traj.for_each_dump(traj.dumps_nearest(opt.times, opt.exact_time), buffer, [&](const Frame& frame) {
-    const VelocityStats s = velocity_stats(frame.velocity, hist, opt.tail_from, opt.min_count, traj.geometry());
+    const VelocityStats s = [&] {
+      try {
+        return velocity_stats(frame.velocity, hist, opt.tail_from, opt.min_count, traj.geometry());
+      } catch (const InputError& e) {  // the dump the statistics refuse
+        throw InputError(opt.input + ": dump at t = " + format_number(frame.time) + ": " + e.what());
+      }
+    }();
     if (opt.table == VelocityTable::kTail && !s.fit) no_tail(traj, frame, opt, s.tail.size());
     const TableBlock b = velocity_block(opt.table, frame.time, hist, s, opt.tail_from);
     if (opt.table == VelocityTable::kSeries) {
-      if (!s.fit) note(no_tail_text(traj, frame, opt, s.tail.size()) + "; beta is nan in that row");
+      if (!s.fit) notes.push_back(no_tail_text(traj, frame, opt, s.tail.size()) + "; beta is nan in that row");
       out.append(b);  // a row per dump, not a block
     } else {
       out.write(b);
     }
   });
+  for (const std::string& text : notes) note(text);
   final_out << os.str();
 }
 

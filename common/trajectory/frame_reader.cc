@@ -8,6 +8,7 @@
 #include "common/error.h"
 #include "common/memory.h"
 #include "common/tool_main.h"
+#include "common/tsv.h"
 #include "common/trajectory/compact_slots.h"
 #include "common/trajectory/layout.h"
 #include "common/trajectory/run_parameters.h"
@@ -78,6 +79,12 @@ Trajectory::Trajectory(const std::string& path, unsigned fields) : path_(path), 
   if (frames == 0) throw InputError(path_ + ": the trajectory holds no dumps");
   times_.resize(frames);
   steps_.resize(frames);
+  // Every tool writes the dump's time in its rows: a NaN there is a row of nan
+  // with exit 0 (coolgas-validate reports such a file).
+  for (std::size_t k = 0; k < frames; ++k)
+    if (!std::isfinite(times_[k]))
+      throw InputError(path_ + ": dump " + std::to_string(k) + " has time " + format_number(times_[k]) +
+                       "; dump times must be finite (coolgas-validate lists the file's problems)");
 }
 
 void Trajectory::missing(const std::string& what) const {

@@ -62,8 +62,10 @@ struct Reader {
       v.resize(frames);
       for (std::size_t i = 0; i < frames; ++i) v[i] = offset + double(i) * step;
     }
-    if (v.size() < frames) fail(t + " holds " + std::to_string(v.size()) + " times for " + std::to_string(frames) + " frames");
-    v.resize(frames);
+    // H5MD gives step, time and value one row per frame: any other count is
+    // a damaged or half-written file, whose times would name the wrong frames.
+    if (v.size() != frames)
+      fail(t + " holds " + std::to_string(v.size()) + " times for " + std::to_string(frames) + " frames");
     return v;
   }
 

@@ -1,5 +1,6 @@
 #include "common/trajectory/layout.h"
 
+#include "common/error.h"
 #include "common/hdf5_file.h"
 
 namespace coolgas::layout {
@@ -29,8 +30,12 @@ int dimension_of(hid_t file) {
   const std::string box(kBox);
   if (!h5::exists(file, box)) return 3;
   h5::Handle g = h5::open_group(file, box);
-  if (!h5::has_attr(g.id(), "dimension") || h5::attr_class(g.id(), "dimension") != H5T_INTEGER) return 3;
-  return int(h5::read_attr_int(g.id(), "dimension"));
+  if (!h5::has_attr(g.id(), "dimension")) return 3;
+  const std::int64_t d = h5::read_attr_int(g.id(), "dimension");
+  if (d < 1 || d > 3)
+    throw InputError("'" + h5::file_of(file) + "': attribute 'dimension' of '" + box + "' is " + std::to_string(d) +
+                     "; a coolgas file has dimension 1, 2 or 3");
+  return int(d);
 }
 
 Layout layout_of(hid_t file) { return h5::exists(file, value_of(kId)) ? Layout::kAggregation : Layout::kGas; }

@@ -74,8 +74,9 @@ std::optional<double> last_dump_time(hid_t file);
 bool is_coolgas(hid_t file);
 
 // The file's dimension: the H5MD box's `dimension` attribute (3 for spheres,
-// 2 for disks); 3 when it is absent or not an integer (the validator reports
-// such a file).
+// 2 for disks, 1 for rods); 3 when it is absent (files before 2D). Any other
+// value (an array, a string, 2.5, 0 or 4) is an InputError naming the file,
+// the attribute and the value.
 int dimension_of(hid_t file);
 
 enum class Layout { kGas, kAggregation };

@@ -62,6 +62,8 @@ void read_field(hid_t g, const std::string& path, const ParameterField& f, RunPa
   } catch (const h5::Error& e) {
     throw InputError(path + ": /parameters attribute '" + std::string(f.name) + "' cannot be read: the file is damaged" +
                      (e.cause.empty() ? "" : " (" + e.cause + ")"));
+  } catch (const h5::Damaged&) {
+    throw InputError(path + ": /parameters attribute '" + std::string(f.name) + "' cannot be read: the file is damaged");
   }
 }
 
@@ -151,6 +153,8 @@ RunParameters read_file_parameters(hid_t file, const std::string& path) {
   } catch (const h5::Error& e) {
     throw InputError(path + ": " + group + " cannot be opened: the file is damaged" +
                      (e.cause.empty() ? "" : " (" + e.cause + ")"));
+  } catch (const h5::Damaged&) {
+    throw InputError(path + ": " + group + " cannot be opened: the file is damaged");
   }
   return read_parameters(g.id(), path);
 }

@@ -121,7 +121,7 @@ void AggregationEngine::check_aggregates(const StateReader& in, std::int64_t ali
       in.fail("aggregation/id[" + std::to_string(i) + "] = " + std::to_string(id) + ": ids must be 0.." +
               std::to_string(n - 1) + ", each once, or -1 (an empty slot)");
     seen[std::size_t(id)] = true;
-    check_motion(in, "aggregation/", i, m_[i], now_);
+    check_motion(in, "aggregation/", i, m_[i], now_, L_);
     if (!(std::isfinite(mass_[i]) && mass_[i] > 0 && std::isfinite(diam_[i]) && diam_[i] > 0 && diam_[i] <= L_))
       in.fail("aggregation/slot " + std::to_string(i) + ": mass " + std::to_string(mass_[i]) + ", diameter " +
               std::to_string(diam_[i]) + "; must be > 0, the diameter at most L");

@@ -146,7 +146,7 @@ void Engine<Rule, D>::check_records(const StateReader& in) const {
   const std::size_t n = m_.size();
   std::vector<bool> seen(n, false);
   for (std::size_t i = 0; i < n; ++i) {
-    check_motion(in, "engine/", i, m_[i], now_);
+    check_motion(in, "engine/", i, m_[i], now_, L_);
     const std::int32_t id = id_[i];
     if (id < 0 || std::size_t(id) >= n || seen[std::size_t(id)])
       in.fail("engine/id[" + std::to_string(i) + "] = " + std::to_string(id) + ": ids must be 0.." +

@@ -24,13 +24,22 @@ void check_scalars(const StateReader& in, const std::string& prefix, double L, d
             "; must be >= 0 with below_delta <= collisions and stale <= events");
 }
 
-void check_motion(const StateReader& in, const std::string& prefix, std::size_t i, const Motion& m, double now) {
+void check_motion(const StateReader& in, const std::string& prefix, std::size_t i, const Motion& m, double now,
+                  double L) {
   if (!finite(m.r) || !finite(m.v) || !std::isfinite(dot(m.v, m.v)))
     in.fail(prefix + "motion[" + std::to_string(i) + "]: position " + text(m.r) + ", velocity " + text(m.v) +
             "; both must be finite");
-  if (!(std::isfinite(m.t) && m.t <= now))
-    in.fail(prefix + "motion[" + std::to_string(i) + "]: own time " + text(m.t) + "; must be finite and <= now = " +
-            text(now));
+  if (!(std::isfinite(m.t) && m.t >= 0 && m.t <= now))
+    in.fail(prefix + "motion[" + std::to_string(i) + "]: own time " + text(m.t) + "; must be finite and in [0, now = " +
+            text(now) + "]");
+  // Moving it to now wraps the position back into the box one side at a
+  // time: a displacement of 1e300 would never end. Between two of its
+  // events a particle crosses at most one cell, so never a whole box side.
+  for (int d = 0; d < 3; ++d)
+    if (!(std::fabs(m.v[d]) * (now - m.t) <= L))
+      in.fail(prefix + "motion[" + std::to_string(i) + "]: velocity " + text(m.v) + " since its own time " + text(m.t) +
+              " moves it " + text(std::fabs(m.v[d]) * (now - m.t)) + " by now = " + text(now) +
+              "; a particle moves less than the box side L = " + text(L) + " between its events");
 }
 
 void check_in_cell(const StateReader& in, const std::string& prefix, std::size_t i, const Vec3& r,

@@ -23,8 +23,10 @@ inline bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v
 void check_scalars(const StateReader& in, const std::string& prefix, double L, double now, const EngineCounters& c);
 
 // A particle's record: position and velocity finite (and its speed squared),
-// its own time finite and not after `now`.
-void check_motion(const StateReader& in, const std::string& prefix, std::size_t i, const Motion& m, double now);
+// its own time finite and in [0, now], and its motion since then shorter
+// than the box side L (what moving it to now can wrap in a few steps).
+void check_motion(const StateReader& in, const std::string& prefix, std::size_t i, const Motion& m, double now,
+                  double L);
 
 // A particle's position at its own time lies in its logical cell, to within
 // half a cell (it was there at its last event; the margin is round-off's).

@@ -14,6 +14,7 @@
 #include "common/durable_file.h"
 #include "common/error.h"
 #include "common/memory.h"
+#include "common/tsv.h"
 #include "simulate/engine/state_archive.h"
 #include "simulate/run/engine_factory.h"
 
@@ -57,6 +58,29 @@ std::optional<std::vector<char>> checkpoint_bytes(const std::string& path) {
   if (!f || !f.read(bytes.data(), std::streamsize(bytes.size())) || f.peek() != std::ifstream::traits_type::eof())
     refuse(path, "it cannot be read whole (it changed while being read, or a read failed)");
   return bytes;
+}
+
+// The run's times beside the engine's: the last dump and the pending rows
+// lie in [0, now], the rows in order after the dump, their values finite (a
+// forged checkpoint would otherwise write them into the trajectory).
+void check_run_times(const StateReader& in, const RunCheckpoint& c) {
+  const double now = c.engine->now();
+  if (!(std::isfinite(c.last_dump) && c.last_dump >= 0 && c.last_dump <= now))
+    in.fail("run/last_dump = " + format_number(c.last_dump) + "; must be finite and in [0, now = " +
+            format_number(now) + "]");
+  double previous = c.last_dump;
+  for (std::size_t k = 0; k < c.pending.size(); ++k) {
+    const ObservableRow& r = c.pending[k];
+    const bool finite = std::isfinite(r.kinetic_energy) && std::isfinite(r.momentum[0]) &&
+                        std::isfinite(r.momentum[1]) && std::isfinite(r.momentum[2]) && std::isfinite(r.mean_mass) &&
+                        std::isfinite(r.largest_mass);
+    if (!(std::isfinite(r.time) && r.time >= previous && r.time <= now) || !finite || r.collisions < 0 ||
+        r.below_delta < 0 || r.aggregates < 0)
+      in.fail("run/pending_observables[" + std::to_string(k) + "] at t = " + format_number(r.time) +
+              ": times must not decrease from the last dump (t = " + format_number(c.last_dump) + ") up to now = " +
+              format_number(now) + ", values be finite and counts >= 0");
+    previous = r.time;
+  }
 }
 
 }  // namespace
@@ -111,6 +135,7 @@ std::optional<RunCheckpoint> read_checkpoint(const std::string& trajectory, cons
   c.last_dump = in.get_value<double>("run/last_dump");
   c.pending = in.get<ObservableRow>("run/pending_observables");
   c.engine = restore_engine(scene, in);
+  check_run_times(in, c);
   return c;
 }
 

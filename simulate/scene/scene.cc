@@ -368,7 +368,15 @@ std::int64_t to_integer(const std::string& key, const toml::value& v) {
 }
 
 double to_float(const std::string& key, const toml::value& v) {
-  if (v.is_floating()) return v.as_floating();
+  if (v.is_floating()) {
+    // The TOML parser reads a literal beyond a double's range (1e400) as the
+    // largest double, not as inf: refused as the overflow it is.
+    const double x = v.as_floating();
+    if (std::fabs(x) == std::numeric_limits<double>::max())
+      throw InputError(key + " holds a number beyond a double's range (read as " + shown_toml(v) +
+                       "; 1e400 overflows); give a finite number");
+    return x;
+  }
   if (v.is_integer()) return double(v.as_integer());
   throw InputError(key + " must be a number, got " + shown_toml(v));
 }

@@ -4,7 +4,8 @@
 Generated from a fixed seed (the same corpus on every run); each case has a
 time limit, so a hang fails too:
   crafted   checkpoints of three models with one field made out of range or
-            not finite and the hash made to match again: --resume exits 2
+            not finite (issue 52: an own time of -1e300, which hung at 100 %
+            CPU) and the hash made to match again: --resume exits 2
             with one line naming the checkpoint, and the trajectory stays
             valid (coolgas-validate);
   collapse  r0 <= 1e-13 with delta = 1e-4 at N = 500 (time stuck at one
@@ -110,6 +111,16 @@ def engine_mutations(ck, rng, prefix):
         ("position far outside its cell", lambda: ck.put(prefix + "motion", i, 0, "d", 1e300)),
         ("velocity inf", lambda: ck.put(prefix + "motion", i, 24 + 8 * rng.randrange(3), "d", INF)),
         ("own time after now", lambda: ck.put(prefix + "motion", i, 48, "d", 1e9)),
+        # issue 52: moving a particle to now wrapped 1e300 one box side at a time, for ever
+        ("own time -1e300", lambda: ck.put(prefix + "motion", i, 48, "d", -1e300)),
+        ("own time negative", lambda: ck.put(prefix + "motion", i, 48, "d", -rng.uniform(1e-3, 10))),
+        ("velocity 1e150 (beyond the box by now)",
+         lambda: (ck.put(prefix + "motion", i, 24 + 8 * rng.randrange(3), "d", 1e150),
+                  ck.put(prefix + "motion", i, 48, "d", 0.0))),
+        ("time 1e300", lambda: ck.put(prefix + "scalars", 0, 8, "d", 1e300)),
+        ("last dump NaN", lambda: ck.put("run/last_dump", 0, 0, "d", NAN)),
+        ("last dump -1e300", lambda: ck.put("run/last_dump", 0, 0, "d", -1e300)),
+        ("last dump after now", lambda: ck.put("run/last_dump", 0, 0, "d", 1e300)),
         ("cell link beyond N", lambda: ck.put(prefix + "motion", i, 60, "i", n + rng.randrange(1, 1 << 20))),
         ("cell link negative", lambda: ck.put(prefix + "motion", i, 60, "i", -rng.randrange(2, 1 << 20))),
         ("cell head beyond N", lambda: ck.put(prefix + "grid/heads", rng.randrange(cells), 0, "i", n + 3)),

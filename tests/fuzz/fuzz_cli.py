@@ -12,7 +12,10 @@ run) and runs each:
   write     an output file option (--series-file) on a full device: exit
             code 5 and one line naming that file;
   overflow  Smoluchowski kernels whose solution overflows: exit code 2, one
-            line on stderr, no row of nan or inf on stdout.
+            line on stderr, no row of nan or inf on stdout;
+  invalid   coolgas-validate on a damaged file: exit code 2, nothing on
+            stderr, problem lines on stdout each naming the file.
+A refused case that names a file (damaged metadata) must name it in its line.
 Each case has a time limit: a hang is a failure too.
 
 usage: fuzz_cli.py BIN_DIR WORK_DIR [--list]
@@ -50,11 +53,11 @@ BAD = {
     "collision.model": ['"sticky"', '"Elastic"', '""', "2", '"inelastic\\n"'],
     "collision.r0": ["0", "-0.5", "1.0000001", "2", "1e300"],
     "collision.delta": ["-1e-4", "-1e300"],
-    "run.t_end": ["0", "-5", "-1e-300"],
+    "run.t_end": ["0", "-5", "-1e-300", "1e400"],
     "output.observables_per_decade": ["0", "-1", "4294967297", "2147483648", "1e5", "100000", "1e9", "0.5"],
     "output.dumps_per_decade": ["0", "-3", "4294967297", "2147483648", "1e9", "1000000", "2.5"],
     "output.t_min": ["0", "-1", "-1e-300"],
-    "output.dump_times": ["[-1]", "[nan]", "[inf]", "5", '["a"]', "[[1]]", "[1, -2]"],
+    "output.dump_times": ["[-1]", "[nan]", "[inf]", "5", '["a"]', "[[1]]", "[1, -2]", "[1e400]", "[1, 2, -1e400]"],
 }
 KEYS = list(BAD)
 STRING_KEYS = {"system.init", "collision.model"}
@@ -284,6 +287,31 @@ class Corpus:
             self.add("refused", f"--resume damaged {signature.decode()}",
                      f"{self.prog('coolgas-simulate')} -q --resume {path} --set run.t_end=4", watch=path)
 
+        # Series a resume cannot carry on (issue 52, class 7): once resumed
+        # with exit 5 after changing the file, as coolgas-validate passed them.
+        def fixed_size(path, rows=None):
+            def change(f):
+                data = f[path][()]
+                del f[path]
+                f[path] = data if rows is None else data[:rows]
+            return change
+
+        def shortened(element, by):
+            def change(f):
+                for x in ("step", "time", "value"):
+                    d = f[f"{element}/{x}"]
+                    d.resize(d.shape[0] - by, axis=0)
+            return change
+        fault("observable_of_fixed_size", fixed_size("observables/kinetic_energy/value"))
+        fault("observable_fixed_and_short", fixed_size("observables/collisions/time", 3))
+        fault("positions_of_fixed_size", fixed_size("particles/all/position/value"))
+        fault("reference_observable_3_rows_short", shortened("observables/kinetic_energy", 3))
+        fault("an_observable_5_rows_short", shortened("observables/total_momentum", 5))
+        for name in ["observable_of_fixed_size", "reference_observable_3_rows_short", "positions_of_fixed_size"]:
+            path = self.path(f"corrupt_{name}.h5")
+            self.add("invalid", f"validate {name}", f"{self.prog('coolgas-validate')} {path}",
+                     names=os.path.basename(path))
+
         def nan_velocity(f):
             v = f["particles/all/velocity/value"][-1]
             v[4] = [np.nan, 0, 0]
@@ -320,6 +348,22 @@ class Corpus:
                 f.create_dataset("particles/all/position/time", data=np.arange(shape[0], dtype="f8"))
                 f.create_dataset("particles/all/box/edges", data=[10.0, 10.0, 10.0])
             self.add("refused", f"start from H5MD of shape {shape}", self.start_command(scene, path))
+
+        # issue 52: a foreign file whose time rows outnumber its frames
+        # (7 times, 2 frames) named the wrong frame's time; its boundary in
+        # ASCII strings, as h5py writes bytes, must not be what refuses it.
+        path = self.path("times_and_frames.h5")
+        with h5py.File(path, "w") as f:
+            f.create_group("h5md")
+            grid = np.column_stack([1 + np.arange(200) % 8, 1 + np.arange(200) // 8 % 8, 1 + np.arange(200) // 64])
+            f["particles/all/position/value"] = np.stack([grid.astype(float)] * 2)
+            f["particles/all/position/time"] = np.arange(7, dtype=float)
+            f["particles/all/position/step"] = np.arange(7)
+            f["particles/all/box/edges"] = [10.0, 10.0, 10.0]
+            f["particles/all/box"].attrs["dimension"] = 3
+            f["particles/all/box"].attrs["boundary"] = [b"periodic"] * 3
+        self.add("refused", "start from H5MD of 2 frames and 7 times", self.start_command(scene, path),
+                 names="7 times for 2 frames")
 
     def start_command(self, scene, path):
         out = self.path(f"out{len(self.cases)}.h5")
@@ -380,6 +424,108 @@ class Corpus:
             for what, cmd in readers:
                 self.add("refused", f"{what} with a damaged {element} chunk", cmd,
                          watch=path if what == "--resume" else None)
+
+    # Damaged attributes and metadata (issue 52, classes 1 and 6): a
+    # box/dimension that is an array, a string, 2.5 or out of range, an array
+    # /parameters/N, and object headers overwritten. Every reader refuses the
+    # file naming it (exit 2, one line, never a segfault or "internal error:
+    # HDF5"); coolgas-validate lists the problem on stdout (exit 2).
+    def damaged_metadata(self, run):
+        import h5py
+        import numpy as np
+        p = self.prog
+        scene = self.scene_file(toml({k: v for k, v in BASE.items() if k not in ("system.N", "system.phi")}))
+
+        def attribute(group, name, value):
+            def change(f):
+                del f[group].attrs[name]
+                f[group].attrs[name] = value
+            return change
+
+        def header(path):
+            def damage(copy):
+                with h5py.File(copy, "r") as f:
+                    at = h5py.h5o.get_info(f[path].id).addr
+                data = bytearray(open(copy, "rb").read())
+                data[at:at + 4] = b"\xff" * 4
+                open(copy, "wb").write(data)
+            return damage
+
+        box = "particles/all/box"
+        # Each fault with the readers that read what it damages (the energy
+        # table reads observables, not positions; a start reads no observables).
+        dumps = ["convert", "clusters", "velocity", "structure", "shape", "snapshot", "--resume", "start from"]
+        every = ["energy"] + dumps
+        faults = [("dimension [2, 2]", attribute(box, "dimension", np.array([2, 2])), every),
+                  ("dimension [3, 3, 3, 3, 3]", attribute(box, "dimension", np.full(5, 3)), every),
+                  ("dimension '3'", attribute(box, "dimension", "3"), every),
+                  ("dimension b'2'", attribute(box, "dimension", np.bytes_(b"2")), every),
+                  ("dimension 2.5", attribute(box, "dimension", 2.5), every),
+                  ("dimension 3.0", attribute(box, "dimension", 3.0), every),
+                  ("dimension 0", attribute(box, "dimension", np.int64(0)), every),
+                  ("dimension 4", attribute(box, "dimension", np.int64(4)), every),
+                  ("dimension -2**62", attribute(box, "dimension", np.int64(-2**62)), every),
+                  ("/parameters/N [200, 200]", attribute("parameters", "N", np.array([200, 200])),
+                   ["energy", "convert", "clusters", "--resume", "start from"]),
+                  ("/parameters/L [10, 10, 10]", attribute("parameters", "L", np.array([10.0, 10.0, 10.0])),
+                   ["energy", "convert", "clusters", "--resume", "start from"]),
+                  ("/parameters/model ['a', 'b']", attribute("parameters", "model", ["inelastic", "elastic"]),
+                   ["energy", "--resume"]),
+                  ("box header damaged", header(box), every),
+                  ("position header damaged", header("particles/all/position"),
+                   ["convert", "clusters", "structure", "shape", "snapshot", "--resume", "start from"]),
+                  ("observables header damaged", header("observables"), ["energy", "--resume"])]
+        for k, (what, change, tools) in enumerate(faults):
+            path = self.path(f"meta{k}.h5")
+            shutil.copy(run, path)
+            if change.__name__ == "damage":
+                change(path)
+            else:
+                with h5py.File(path, "r+") as f:
+                    change(f)
+            name = os.path.basename(path)
+            readers = {"convert": f"{p('coolgas-convert')} {path}",
+                       "energy": f"{p('coolgas-energy')} {path}",
+                       "clusters": f"{p('coolgas-clusters')} {path}",
+                       "velocity": f"{p('coolgas-velocity')} {path}",
+                       "structure": f"{p('coolgas-structure')} {path}",
+                       "shape": f"{p('coolgas-shape')} {path}",
+                       "snapshot": f"{p('coolgas-snapshot')} {path} --time 2 -o {self.path(f'meta{k}.png')}",
+                       "--resume": f"{p('coolgas-simulate')} -q --resume {path} --set run.t_end=4",
+                       "start from": self.start_command(scene, path)}
+            for tool in tools:
+                self.add("refused", f"{tool} with {what}", readers[tool], watch=path if tool == "--resume" else None,
+                         names=name)
+            self.add("invalid", f"validate with {what}", f"{p('coolgas-validate')} {path}", names=name)
+
+    # Values a tool would print as nan (issue 52, class 8): a NaN dump time,
+    # velocities of 1e300 (their moments overflow). Refused naming the file.
+    def non_finite_values(self, run):
+        import h5py
+        import numpy as np
+        p = self.prog
+        path = self.path("nan_time.h5")
+        shutil.copy(run, path)
+        with h5py.File(path, "r+") as f:
+            for element in ("position", "velocity", "image"):
+                d = f[f"particles/all/{element}/time"]
+                t = d[()]
+                t[self.rng.randrange(1, len(t))] = np.nan
+                d[...] = t
+        for tool in ["clusters", "velocity", "structure", "shape"]:
+            self.add("refused", f"{tool} --series with a NaN dump time", f"{p('coolgas-' + tool)} --series {path}",
+                     names=os.path.basename(path))
+        self.add("refused", "convert with a NaN dump time", f"{p('coolgas-convert')} {path}", names=os.path.basename(path))
+        path = self.path("fast.h5")
+        shutil.copy(run, path)
+        with h5py.File(path, "r+") as f:
+            d = f["particles/all/velocity/value"]
+            v = d[()]
+            v[-1] = 1e300
+            d[...] = v
+        for table in ["--series", "--tail", ""]:
+            self.add("refused", f"velocity {table} with velocities of 1e300", f"{p('coolgas-velocity')} {table} {path}",
+                     names=os.path.basename(path))
 
     # Output names around the stated limit: every length the check passes
     # must work (the run adds .partial, .checkpoint, .checkpoint.partial);
@@ -451,6 +597,8 @@ def run_case(case, work):
             return "internal error: " + err
         if r.stdout:
             return "stdout not empty: " + r.stdout[:200].decode("utf-8", "replace")
+        if case["names"] and case["names"] not in err:
+            return f"the error line does not name {case['names']}: {err[:300]}"
         if case["watch"]:
             if digest is None and os.path.exists(case["watch"]):
                 return "output file written: " + case["watch"]
@@ -459,6 +607,14 @@ def run_case(case, work):
         after = sorted(os.listdir(work))
         if after != before:
             return "files written: " + ", ".join(sorted(set(after) - set(before)))
+    elif kind == "invalid":  # coolgas-validate: problems on stdout, one line each naming the file
+        out = r.stdout.decode("utf-8", "replace")
+        if r.returncode != 2 or err:
+            return f"exit code {r.returncode} and stderr {err[:300]!r}, expected 2 and nothing"
+        if not out or any(not line.split(": ")[0].endswith(case["names"]) for line in out.splitlines()):
+            return f"expected problem lines naming {case['names']}, got: {out[:300]}"
+        if "internal error" in out:
+            return "internal error: " + out[:300]
     elif kind == "no space":
         if r.returncode == 0:
             return "exit code 0 although stdout could not be written"
@@ -504,6 +660,8 @@ def main():
     corpus.lying_starts()
     corpus.bad_checkpoints(run)
     corpus.damaged_chunks(run)
+    corpus.damaged_metadata(run)
+    corpus.non_finite_values(run)
     corpus.overflowing_kernels()
     corpus.long_names()
     corpus.outputs(run, table)

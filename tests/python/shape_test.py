@@ -42,8 +42,10 @@ def test_bad_arguments_raise_python_errors():
     with pytest.raises(coolgas.InputError, match="fit_mass"):
         coolgas.shape(pos, L=10, fit_mass="10")
     with pytest.raises(coolgas.InputError, match="need L >= 1"):
-        coolgas.shape(pos, L=0.5)
-    with pytest.raises(coolgas.InputError, match="not a mass >= 1"):
+        coolgas.shape(pos * 0.04, L=0.5)
+    with pytest.raises(coolgas.InputError, match=r"outside the box \[0, L\) of side L = 5"):
+        coolgas.shape(pos, L=5)
+    with pytest.raises(coolgas.InputError, match="not a mass of 1 to"):
         coolgas.shape(pos, L=10, masses=[0.0, 3.0])
     with pytest.raises(TypeError):
         coolgas.shape(pos, L=10, bins_per_decade="ten")

@@ -49,7 +49,7 @@ def test_bad_arguments_raise_python_errors():
     with pytest.raises(coolgas.InputError, match="--grid must be an even number"):
         coolgas.structure(pos, L=10, grid=9)
     with pytest.raises(coolgas.InputError, match="too small"):
-        coolgas.structure(pos, L=6)
+        coolgas.structure(pos * 0.6, L=6)
     with pytest.raises(coolgas.InputError, match="not a box side"):
         coolgas.structure(pos, L=float("nan"), grid=8)
     with pytest.raises(coolgas.InputError, match="masses holds 3 values for 50"):

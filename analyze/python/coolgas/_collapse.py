@@ -13,14 +13,15 @@ def _curve(i, c):
         if "L" not in c.attrs:
             raise ValueError(f"curves[{i}] has no L: give df.attrs['L'] (read_table of a coolgas-energy table has it) "
                              "or a tuple (L, t, E[, E_err])")
-        return {"columns": [str(n) for n in c.columns], "rows": c.to_numpy(dtype=float), "L": float(c.attrs["L"]),
+        return {"columns": [str(n) for n in c.columns], "rows": c.to_numpy(), "L": float(c.attrs["L"]),
                 "source": str(c.attrs.get("source", f"curves[{i}]"))}
     if isinstance(c, dict):
         c = (c["L"], c["t"], c["E"], c.get("E_err"))
     if not isinstance(c, (tuple, list)) or len(c) not in (3, 4):
         raise TypeError(f"curves[{i}] must be a DataFrame with attrs['L'], a dict or a tuple (L, t, E[, E_err]), "
                         f"got {type(c).__name__}")
-    L, columns = c[0], [np.asarray(a, dtype=float) for a in c[1:] if a is not None]
+    # dtypes as given: the kernel converts integers and refuses complex numbers (arrays.h)
+    L, columns = c[0], [np.asarray(a) for a in c[1:] if a is not None]
     if any(a.ndim != 1 or len(a) != len(columns[0]) for a in columns):
         raise ValueError(f"curves[{i}]: t, E (and E_err) must be 1-D arrays of one length, got shapes "
                          f"{[a.shape for a in columns]}")

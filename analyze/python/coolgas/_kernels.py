@@ -48,7 +48,7 @@ def clusters(frame, L=None, t=None, table="distribution", bins_per_decade=10, ma
     if f is not None and f.masses is not None and masses is None:
         masses, slots = f.masses, f.slots
     return frame_of(_core.cluster_table(positions, float(L), float(t), table, bins_per_decade, masses,
-                                        0 if slots is None else int(slots)))
+                                        None if slots is None else int(slots)))
 
 
 def velocity(frame, t=None, table="Phi", bins=120, ymax=6.0, tail_from=1.5, min_count=25):

@@ -110,7 +110,10 @@ class Frames:
         """Position of the frame nearest time t (the earlier one on a tie)."""
         if self.times is None:
             raise ValueError(f"{self._path}: its positions have no times; index the frames by position")
-        return int(np.argmin(np.abs(self.times - float(t))))  # the first minimum: Trajectory::nearest_dump's rule
+        t = float(t)
+        if not np.isfinite(t):
+            raise _core.InputError(f"{self._path}: time t = {t} is not a finite number (give a finite time)")
+        return int(np.argmin(np.abs(self.times - t)))  # the first minimum: Trajectory::nearest_dump's rule
 
     def at(self, t):
         """The frame nearest time t."""

@@ -12,7 +12,7 @@ from ._kernels import _given
 def _initial(initial):
     """"mono", a table's path, or a DataFrame with columns m, N [, dm] (a coolgas-clusters distribution)."""
     if isinstance(initial, pd.DataFrame):
-        return {"columns": [str(n) for n in initial.columns], "rows": initial.to_numpy(dtype=float),
+        return {"columns": [str(n) for n in initial.columns], "rows": initial.to_numpy(),
                 "source": "the initial DataFrame"}
     if isinstance(initial, (str, os.PathLike)):
         return os.fspath(initial)

@@ -86,5 +86,97 @@ TEST(Hdf5File, ADamagedChunkIsDamagedInputNamingTheFileAndDataset) {
   EXPECT_NE(all.find("dataset '/x' cannot be read (rows 0 to 2)"), std::string::npos) << all;
 }
 
+// An attribute that holds more than the one value a reader takes, or a value
+// of another kind: one InputError naming the file, the object, the attribute
+// and what it holds (an array was read into one number: a stack overwrite).
+TEST(Hdf5File, AnAttributeOfTheWrongShapeOrKindIsRefusedNamingItsValue) {
+  const std::string path = test::scratch_dir("hdf5_file_attributes") + "/attributes.h5";
+  {
+    h5::Handle f = h5::open_file(path, h5::Mode::kCreateTruncate);
+    h5::Handle g = h5::create_group(f.id(), "/box");
+    h5::write_attr(g.id(), "pair", std::vector<std::int32_t>{2, 2});
+    h5::write_attr(g.id(), "many", std::vector<std::int32_t>(100, 3));
+    h5::write_attr(g.id(), "text", std::string("3"));
+    h5::write_attr(g.id(), "texts", std::vector<std::string>{"a", "b"});
+    h5::write_attr(g.id(), "half", 2.5);
+    h5::write_attr(g.id(), "whole", std::int64_t{3});
+    h5::write_attr(g.id(), "one", std::vector<std::int32_t>{7});
+  }
+  h5::Handle f = h5::open_file(path, h5::Mode::kReadOnly);
+  h5::Handle g = h5::open_group(f.id(), "/box");
+  const std::string where = "'" + path + "': attribute ";
+  EXPECT_EQ(input_error_of([&] { h5::read_attr_int(g.id(), "pair"); }),
+            where + "'pair' of '/box' is [2, 2]; expected one integer");
+  EXPECT_EQ(input_error_of([&] { h5::read_attr_double(g.id(), "many"); }),
+            where + "'many' of '/box' is [3, 3, 3, 3, … (100 values)]; expected one number");
+  EXPECT_EQ(input_error_of([&] { h5::read_attr_int(g.id(), "text"); }),
+            where + "'text' of '/box' is the string '3'; expected one integer");
+  EXPECT_EQ(input_error_of([&] { h5::read_attr_int(g.id(), "half"); }),
+            where + "'half' of '/box' is 2.5; expected one integer");
+  EXPECT_EQ(input_error_of([&] { h5::read_attr_string(g.id(), "texts"); }),
+            where + "'texts' of '/box' holds 2 strings; expected one");
+  EXPECT_EQ(input_error_of([&] { h5::read_attr_string(g.id(), "whole"); }),
+            where + "'whole' of '/box' is 3; expected a string");
+  EXPECT_EQ(input_error_of([&] { h5::read_attr_int(g.id(), "absent"); }),
+            "'" + path + "': missing attribute 'absent' of '/box'");
+  EXPECT_EQ(h5::read_attr_int(g.id(), "whole"), 3);
+  EXPECT_EQ(h5::read_attr_double(g.id(), "whole"), 3.0);  // integers are numbers
+  EXPECT_EQ(h5::read_attr_int(g.id(), "one"), 7);          // a one-element array is one value
+}
+
+// Variable-length strings in ASCII, as h5py writes bytes (a foreign box's
+// `boundary`): read as they are, not refused as a damaged attribute.
+TEST(Hdf5File, AsciiStringAttributesAreRead) {
+  const std::string path = test::scratch_dir("hdf5_file_ascii") + "/ascii.h5";
+  {
+    h5::Handle f = h5::open_file(path, h5::Mode::kCreateTruncate);
+    h5::Handle type(H5Tcopy(H5T_C_S1));
+    H5Tset_size(type.id(), H5T_VARIABLE);
+    H5Tset_cset(type.id(), H5T_CSET_ASCII);
+    const hsize_t n = 3;
+    h5::Handle space(H5Screate_simple(1, &n, nullptr)), scalar(H5Screate(H5S_SCALAR));
+    h5::Handle a(H5Acreate2(f.id(), "boundary", type.id(), space.id(), H5P_DEFAULT, H5P_DEFAULT));
+    const char* values[3] = {"periodic", "periodic", "none"};
+    ASSERT_GE(H5Awrite(a.id(), type.id(), values), 0);
+    h5::Handle b(H5Acreate2(f.id(), "unit", type.id(), scalar.id(), H5P_DEFAULT, H5P_DEFAULT));
+    const char* unit = "nm";
+    ASSERT_GE(H5Awrite(b.id(), type.id(), &unit), 0);
+  }
+  h5::Handle f = h5::open_file(path, h5::Mode::kReadOnly);
+  EXPECT_EQ(h5::read_attr_strings(f.id(), "boundary"), (std::vector<std::string>{"periodic", "periodic", "none"}));
+  EXPECT_EQ(h5::read_attr_string(f.id(), "unit"), "nm");
+}
+
+// An object header overwritten: opening the object, or looking up a path
+// through it, is Damaged (an InputError) naming the file and the object,
+// never "internal error: HDF5: open group".
+TEST(Hdf5File, ADamagedObjectHeaderIsDamagedInputNamingTheFileAndObject) {
+  const std::string path = test::scratch_dir("hdf5_file_header") + "/header.h5";
+  haddr_t at = 0;
+  {
+    h5::Handle f = h5::open_file(path, h5::Mode::kCreateTruncate);
+    h5::Handle g = h5::create_group(f.id(), "/particles/box");
+    h5::write_attr(g.id(), "dimension", std::int64_t{3});
+    h5::Handle d = h5::create_series(g.id(), "edges", h5::Type::kFloat64, {3}, 1);
+    H5O_info_t info{};
+    ASSERT_GE(H5Oget_info2(g.id(), &info, H5O_INFO_BASIC), 0);
+    at = info.addr;
+  }
+  {
+    std::fstream file(path, std::ios::in | std::ios::out | std::ios::binary);
+    file.seekp(std::streamoff(at));
+    file.write("\xff\xff\xff\xff", 4);
+  }
+  h5::Handle f = h5::open_file(path, h5::Mode::kReadOnly);
+  const std::string group = input_error_of([&] { h5::open_group(f.id(), "/particles/box"); });
+  EXPECT_EQ(group, "'" + path + "': cannot open group '/particles/box': the file is damaged");
+  const std::string through = input_error_of([&] { h5::exists(f.id(), "/particles/box/edges"); });
+  EXPECT_EQ(through, "'" + path + "': cannot look up '/particles/box/edges': the file is damaged");
+  EXPECT_THROW(h5::open_dataset(f.id(), "/particles/box/edges"), h5::Damaged);
+  EXPECT_EQ(input_error_of([&] { h5::open_dataset(f.id(), "/particles"); }),
+            "'" + path + "': '/particles' is a group, not a dataset");
+  EXPECT_EQ(input_error_of([&] { h5::open_group(f.id(), "/nothing"); }), "'" + path + "': missing group '/nothing'");
+}
+
 }  // namespace
 }  // namespace coolgas
