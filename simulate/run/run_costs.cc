@@ -13,10 +13,12 @@ namespace {
 // the cache more often.
 constexpr double kCollisionsPerSecondSmall = 6.61e5, kCollisionsPerSecondLarge = 4.07e5;
 constexpr double kSmallRunParticles = 1.3e5;
-// Disks and rods collide faster per CPU second than spheres: W5D2 runs x1.29
-// and W5D1 x1.74 the collisions per CPU second of W5, the same gas in 3D
-// (tests/bench/README.md), by d.
-constexpr double kRateOfDimension[4] = {0, 1.74, 1.29, 1.0};
+// Disks and rods collide faster per CPU second than spheres, by d: small
+// runs (the gas at N = 2e4 to t = 1000, in turns: rods x2.77 and disks x3.04
+// the spheres' rate, tests/bench/dimension_rates.sh); large ones W5D1 x1.74
+// and W5D2 x1.29 the collisions per CPU second of W5, 10^6 particles
+// (tests/bench/README.md).
+constexpr double kSmallRunFactor[4] = {0, 2.77, 3.04, 1.0}, kLargeRunFactor[4] = {0, 1.74, 1.29, 1.0};
 
 // Aggregation at N = 8e6 to t = 1e5 (the aggregation_bench): merges per
 // second and the set-up (a dilute start places and equilibrates slower),
@@ -32,8 +34,9 @@ constexpr double kAggregationBytesPerParticle = 187;  // peak at N = 1e6 (the ga
 constexpr double kDumpBytesGas = 47, kDumpBytesAggregation = 62;
 
 double gas_cpu_seconds(const Scene& s, double collisions) {
-  const double rate = (double(s.N) <= kSmallRunParticles ? kCollisionsPerSecondSmall : kCollisionsPerSecondLarge) *
-                      kRateOfDimension[s.geometry().d()];
+  const int d = s.geometry().d();
+  const double rate = double(s.N) <= kSmallRunParticles ? kCollisionsPerSecondSmall * kSmallRunFactor[d]
+                                                         : kCollisionsPerSecondLarge * kLargeRunFactor[d];
   return (collisions + s.equilibrate * double(s.N) / 2) / rate;
 }
 

@@ -183,6 +183,8 @@ RunEta eta_of_aggregation(const RunParameters& p) {
 
 void RunEta::set_dimension(int d) { crossover_exponent_ = (d + 2) / 2.0; }
 
+double RunEta::knee(double L) const { return kKnee * std::pow(L, crossover_exponent_); }
+
 RunEta RunEta::aggregation(double L, double N, double regrid_factor) {
   RunEta eta(L, N - 1);
   eta.aggregates_ = N;
@@ -239,8 +241,7 @@ double RunEta::expected_collisions(double t_end) const {
   if (!std::isnan(aggregates_)) return expected_merges(t_end);
   const double a = exponent(t / kFitWindow, t);
   if (!std::isfinite(a)) return NAN;
-  const double knee = kKnee * std::pow(L_, crossover_exponent_);
-  return std::min(most_, now.collisions * std::exp(log_growth(t, t_end, a, clustering_, knee, kTail, kTailFall)));
+  return std::min(most_, now.collisions * std::exp(log_growth(t, t_end, a, clustering_, knee(L_), kTail, kTailFall)));
 }
 
 double RunEta::expected_merges(double t_end) const {

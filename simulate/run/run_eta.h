@@ -74,6 +74,8 @@ class RunEta {
   // The dimension d of the box, which sets its finite-size crossover,
   // t ~ L^z with the mean field's z = (d + 2)/2 (3 unless set).
   void set_dimension(int d);
+  // Where the finite-size regime of a box of side L begins, kKnee L^z.
+  double knee(double L) const;
   // Keeps samples log-spaced in t (one per 1 % of t at most); the last
   // sample is always the newest.
   void add(const RunSample& s);

@@ -30,13 +30,16 @@ Scene pilot_scene(const Scene& scene) {
 
 // The pilot's collisions at its log-spaced times up to t_stop, scaled to
 // the run's N, fed to `eta`; returns the last time reached (earlier than
-// t_stop if the pilot stopped: a collapse, an aggregate too large).
+// t_stop past kPilotTime once its collisions reach the budget, or if the
+// pilot stopped: a collapse, an aggregate too large).
 double run_pilot(const Scene& pilot, double scale, double t_stop, RunEta& eta, InterruptFlag interrupt) {
   std::unique_ptr<EngineBase> engine = make_engine(pilot, initial_state(pilot, interrupt), 0.0);
   std::vector<double> times = log_grid(pilot.t_min, t_stop, 20);
   times.push_back(t_stop);
   double reached = 0;
+  const double budget = kPilotCollisionsPerParticle * double(pilot.N);
   for (double t : times) {
+    if (t > kPilotTime && double(engine->counters().collisions) >= budget) break;
     try {
       RunStatus status;
       while ((status = engine->run_until(t, kPilotEventsPerSlice, interrupt)) == RunStatus::kEventBudget) {
@@ -65,7 +68,7 @@ RunPlan plan_run(const Scene& scene, InterruptFlag interrupt) {
                      "cannot be scaled down to a pilot run");
   const Scene pilot = pilot_scene(scene);
   RunEta eta = run_eta_for(parameters_of(scene), scene.geometry());
-  const double t_stop = std::min(scene.t_end, kPilotTime);
+  const double t_stop = std::min(scene.t_end, std::max(kPilotTime, eta.knee(pilot.L)));
   const double reached = run_pilot(pilot, double(scene.N) / double(pilot.N), t_stop, eta, interrupt);
   if (!(reached > 0))
     throw InputError("the pilot run of this scene stopped before its first sample (an inelastic collapse or an "

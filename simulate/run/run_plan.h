@@ -6,7 +6,8 @@
 // The CPU time comes from the same cost model as the progress line's time
 // left (run_eta.h), so that the two cannot disagree: a pilot of the scene
 // (the same gas at kPilotParticles, or the run itself if smaller) is
-// simulated to t = min(t_end, kPilotTime), its collisions, scaled to the
+// simulated to t = min(t_end, kPilotTime) and on while it is cheap
+// (kPilotCollisionsPerParticle), its collisions, scaled to the
 // run's N, are fed to the run's own RunEta as a run's samples would be, and
 // its extrapolation to t_end gives the collisions (aggregation: merges)
 // expected. Before the finite-size crossover the collisions per particle do
@@ -24,6 +25,11 @@ namespace coolgas {
 
 inline constexpr std::int64_t kPilotParticles = 10000;
 inline constexpr double kPilotTime = 100;  // a whole fit window of run_eta.h (t/3 .. t) past the first collisions
+// Past kPilotTime the pilot goes on towards t_end, up to the finite-size
+// knee of its own box, while it has done fewer collisions than this per
+// particle: a gas whose collisions speed up later (rods clustering, disks
+// past Haff's law) is seen doing it, at a few CPU seconds at most.
+inline constexpr double kPilotCollisionsPerParticle = 200;
 inline constexpr double kRequestMargin = 1.5;  // a request's memory and time over the expected
 
 struct RunPlan {
