@@ -47,7 +47,6 @@ class Geometry {
   const char* boxes() const { return pick("rings", "squares", "cubes"); }
   const char* box_adjective() const { return pick("ring", "square", "cubic"); }
   const char* space() const { return pick("line", "plane", "space"); }  // where the particles lie
-  const char* measure() const { return pick("length", "area", "volume"); }
   // "" in 3D, " in 2D" or " in 1D" otherwise (appended to a notice).
   std::string in_d() const { return d_ == 3 ? std::string() : " in " + std::to_string(d_) + "D"; }
 

@@ -1,5 +1,6 @@
 #include "simulate/run/run_plan.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -68,7 +69,7 @@ RunPlan plan_run(const Scene& scene, InterruptFlag interrupt) {
                      "cannot be scaled down to a pilot run");
   const Scene pilot = pilot_scene(scene);
   RunEta eta = run_eta_for(parameters_of(scene), scene.geometry());
-  const double t_stop = std::min(scene.t_end, std::max(kPilotTime, eta.knee(pilot.L)));
+  const double t_stop = std::min({scene.t_end, kPilotTimeMost, std::max(kPilotTime, eta.knee(pilot.L))});
   const double reached = run_pilot(pilot, double(scene.N) / double(pilot.N), t_stop, eta, interrupt);
   if (!(reached > 0))
     throw InputError("the pilot run of this scene stopped before its first sample (an inelastic collapse or an "

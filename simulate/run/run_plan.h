@@ -25,10 +25,12 @@ namespace coolgas {
 
 inline constexpr std::int64_t kPilotParticles = 10000;
 inline constexpr double kPilotTime = 100;  // a whole fit window of run_eta.h (t/3 .. t) past the first collisions
-// Past kPilotTime the pilot goes on towards t_end, up to the finite-size
-// knee of its own box, while it has done fewer collisions than this per
-// particle: a gas whose collisions speed up later (rods clustering, disks
-// past Haff's law) is seen doing it, at a few CPU seconds at most.
+// Past kPilotTime the pilot goes on towards t_end, up to kPilotTimeMost and
+// the finite-size knee of its own box, while it has done fewer collisions
+// than kPilotCollisionsPerParticle: a gas whose collisions change course
+// there (rods clustering, disks leaving t^1.2) is seen doing it, for about a
+// CPU second at most (a pilot of the 3D gas: 0.3 s to t = 100, 0.6 s to 300).
+inline constexpr double kPilotTimeMost = 300;
 inline constexpr double kPilotCollisionsPerParticle = 200;
 inline constexpr double kRequestMargin = 1.5;  // a request's memory and time over the expected
 

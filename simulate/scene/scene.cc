@@ -34,7 +34,7 @@ std::string toml_float(double x) {
 std::string toml_string(const std::string& x) { return "\"" + x + "\""; }
 
 const char* const kInitNames[] = {"random", "fcc", "file"};
-// The models' names, in the enum's order (simulate/run/models.h).
+// The models' names, in the enum's order (common/trajectory/collision_models.h).
 std::vector<std::string> model_names() {
   std::vector<std::string> names;
   for (const CollisionModelSpec& m : collision_models()) names.emplace_back(m.name);
