@@ -16,25 +16,6 @@ namespace coolgas {
 namespace fault_detail {
 namespace {
 
-struct PointName {
-  FaultPoint point;
-  const char* name;
-};
-
-// The named points, as COOLGAS_FAULT spells them (docs/reliability.md
-// lists them with where each is reached).
-constexpr PointName kPoints[] = {
-    {FaultPoint::kEvents, "events"},
-    {FaultPoint::kCheckpointWrite, "checkpoint-write"},
-    {FaultPoint::kCheckpointRename, "checkpoint-rename"},
-    {FaultPoint::kReplaceRename, "replace-rename"},
-    {FaultPoint::kConvert, "convert"},
-    {FaultPoint::kResumeClaimed, "resume-claimed"},
-    {FaultPoint::kResumeReopened, "resume-reopened"},
-    {FaultPoint::kDumpFrame, "dump-frame"},
-    {FaultPoint::kDumpFlushed, "dump-flushed"},
-};
-
 struct SignalName {
   int signal;
   const char* name;
@@ -85,11 +66,11 @@ const char* arm() {
   const std::vector<std::string> fields = fields_of(value);
   if (fields.size() > 3) refuse(value, "more than three fields");
   FaultPoint point = FaultPoint::kNone;
-  for (const PointName& p : kPoints)
+  for (const FaultPointName& p : kFaultPoints)
     if (fields[0] == p.name) point = p.point;
   if (point == FaultPoint::kNone) {
     std::vector<std::string> names;
-    for (const PointName& p : kPoints) names.emplace_back(p.name);
+    for (const FaultPointName& p : kFaultPoints) names.emplace_back(p.name);
     refuse(value, "no point named '" + shown(fields[0]) + "'" + did_you_mean(fields[0], names));
   }
   Fault f;

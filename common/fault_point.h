@@ -7,10 +7,10 @@
 // This lets a test stop a run at a chosen moment of its life instead of at a
 // moment of wall time (docs/reliability.md, "Faults at named points").
 //
-// The variable is read once, by arm_fault_from_environment(); a point costs
-// one comparison with a global where it is reached, and every point lies on
-// a path that writes or reads a file. The points are listed in one table,
-// fault_point.cc, with what each means.
+// The variable is read once, by arm_fault_from_environment(). A point costs
+// one comparison with a global where it is reached, on a path that writes
+// or reads a file; `events` only bounds the run driver's slice of events,
+// so the engine's loop is untouched. The points are listed here, once.
 #pragma once
 #include <cstdint>
 
@@ -27,6 +27,22 @@ enum class FaultPoint : std::uint8_t {
   kResumeReopened,    // a resume with the file open for appending, an interrupted burst dropped
   kDumpFrame,         // a dump's rows written, nothing flushed
   kDumpFlushed,       // a dump's rows flushed, its completion row not yet written
+};
+
+struct FaultPointName {
+  FaultPoint point;
+  const char* name;  // as COOLGAS_FAULT spells it
+};
+inline constexpr FaultPointName kFaultPoints[] = {
+    {FaultPoint::kEvents, "events"},
+    {FaultPoint::kCheckpointWrite, "checkpoint-write"},
+    {FaultPoint::kCheckpointRename, "checkpoint-rename"},
+    {FaultPoint::kReplaceRename, "replace-rename"},
+    {FaultPoint::kConvert, "convert"},
+    {FaultPoint::kResumeClaimed, "resume-claimed"},
+    {FaultPoint::kResumeReopened, "resume-reopened"},
+    {FaultPoint::kDumpFrame, "dump-frame"},
+    {FaultPoint::kDumpFlushed, "dump-flushed"},
 };
 
 namespace fault_detail {
