@@ -12,6 +12,7 @@
 #include <filesystem>
 
 #include "common/error.h"
+#include "common/fault_point.h"
 #include "common/interrupt.h"
 
 namespace coolgas {
@@ -103,6 +104,7 @@ void sync_directory(const std::string& dir) {
 }
 
 void replace_file(const std::string& from, const std::string& to) {
+  fault_point(FaultPoint::kReplaceRename);
   if (std::rename(from.c_str(), to.c_str()) != 0) fail(from, "moving it to '" + to + "'", errno);
   sync_directory(parent_folder(to));
 }

@@ -8,6 +8,7 @@
 
 #include "common/durable_file.h"
 #include "common/error.h"
+#include "common/fault_point.h"
 #include "common/interrupt.h"
 #include "common/trajectory/collision_models.h"
 #include "common/trajectory/h5md_profile.h"
@@ -154,6 +155,7 @@ WriterLock H5mdWriter::claim(const std::string& path) {
   } catch (const h5::Error& e) {
     throw WriteError("cannot write '" + path + "': " + e.cause);
   }
+  fault_point(FaultPoint::kResumeClaimed);
   return lock;
 }
 
@@ -182,6 +184,7 @@ H5mdWriter H5mdWriter::reopen(const std::string& path, const std::string* new_sc
     h5::extend_allocation_past_file_end(w.file_, largest_frame_chunk(f, w.layout_) + (hsize_t{1} << 16));
     w.drop_interrupted_burst();
   });
+  fault_point(FaultPoint::kResumeReopened);
   return w;
 }
 
@@ -209,7 +212,10 @@ WriterLock H5mdWriter::rewrite_through_copy(const std::string& path, const std::
   try {
     if (migrate) {
       h5::Handle from = h5::open_file(path, h5::Mode::kReadOnly);
-      h5::copy_into_new_file(from, copy, [] { throw_if_interrupted("while converting the trajectory; it is unchanged"); });
+      h5::copy_into_new_file(from, copy, [] {
+        fault_point(FaultPoint::kConvert);
+        throw_if_interrupted("while converting the trajectory; it is unchanged");
+      });
     }
     WriterLock lock = WriterLock::take(copy);
     if (scene) {
@@ -335,7 +341,9 @@ void H5mdWriter::add_frame(const FrameView& fr) {
     begin_appending();
     write_pending();
     write_frame(fr);
+    fault_point(FaultPoint::kDumpFrame);
     flush_file();  // the frame is on disk before the row that declares it complete
+    fault_point(FaultPoint::kDumpFlushed);
     write_restart_row(fr);
     flush_file();
   });

@@ -13,6 +13,7 @@
 
 #include "common/durable_file.h"
 #include "common/error.h"
+#include "common/fault_point.h"
 #include "common/memory.h"
 #include "common/tsv.h"
 #include "simulate/engine/state_archive.h"
@@ -99,6 +100,7 @@ void write_checkpoint(const std::string& trajectory, const Scene& scene, const E
     out.put_value("run/last_dump", last_dump);
     out.put("run/pending_observables", pending);
     engine.save(out);
+    fault_point(FaultPoint::kCheckpointWrite);
     out.finish();
   } catch (const std::exception&) {
     const int error = errno;
@@ -114,6 +116,7 @@ void write_checkpoint(const std::string& trajectory, const Scene& scene, const E
     std::remove(tmp.c_str());
     fail_io("flushing to disk failed", path, error);
   }
+  fault_point(FaultPoint::kCheckpointRename);
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
     error = errno;
     std::remove(tmp.c_str());

@@ -17,6 +17,7 @@
 #include <sstream>
 
 #include "common/error.h"
+#include "common/fault_point.h"
 #include "common/interrupt.h"
 #include "common/trajectory/collision_models.h"
 #include "common/trajectory/h5md_writer.h"
@@ -170,8 +171,12 @@ class Driver {
   bool advance_to(double t) {
     while (true) {
       const auto slice_start = clock::now();
-      const RunStatus status = engine_.run_until(t, kEventsPerSlice, interrupt_flag());
+      // A test's fault after K events ends a slice there: the engine stops at
+      // its budget exactly, so nothing is added to its per-event loop.
+      const std::int64_t budget = std::min(kEventsPerSlice, fault_events_left(events_done()));
+      const RunStatus status = engine_.run_until(t, budget, interrupt_flag());
       busy_seconds_ += seconds_since(slice_start);
+      fault_after_events(events_done());
       if (status == RunStatus::kInterrupted) return false;
       if (seconds_since(last_checkpoint_) >= interval_) checkpoint();
       show_progress();
@@ -211,6 +216,9 @@ class Driver {
     progress_.show(s.str());
   }
 
+  // Events this process has run (a test's fault counts them: common/fault_point.h).
+  std::int64_t events_done() const { return engine_.counters().events - first_event_; }
+
   // How far t is from t = 0 to t_end on the run's logarithmic clock, in [0, 1]
   // (its dumps and observables are log-spaced in t).
   double log_clock(double t) const { return std::clamp(std::log1p(t) / std::log1p(scene_.t_end), 0.0, 1.0); }
@@ -240,6 +248,7 @@ class Driver {
   clock::time_point last_checkpoint_;
   double written_ = -1;    // the file holds every output up to this time
   double last_dump_ = -1;  // the time of the file's last complete dump
+  std::int64_t first_event_ = engine_.counters().events;
   std::vector<ObservableRow> pending_;  // observables written after that dump
 };
 
@@ -404,6 +413,8 @@ int run_simulation(const SimulationRequest& req) {
   // Installed first, so a signal during set-up is noticed (a shell starts
   // background jobs with SIGINT ignored, and the default would leave no message).
   watch_interrupts();
+  const std::string fault = arm_fault_from_environment();
+  if (!fault.empty() && !req.quiet) std::cerr << "coolgas-simulate: note: COOLGAS_FAULT = '" << fault << "' (a test's fault)\n";
   return req.resume.empty() ? start_new(req) : resume(req);
 }
 

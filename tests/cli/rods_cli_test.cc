@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common/hdf5_file.h"
+#include "tests/support/fault_points.h"
 #include "tests/support/run_command.h"
 #include "tests/support/same_trajectory.h"
 #include "tests/support/simulate_cli.h"
@@ -69,18 +70,16 @@ TEST_F(RodsCli, AnExtendedRunIsBitForBitTheWholeOne) {
   test::expect_same_trajectory(whole(), out);
 }
 
-// Killed mid-run (checkpoints every 0.1 s), resumed from its checkpoint.
+// Killed mid-run (halfway through the whole run's collisions, a checkpoint
+// after every slice of events), resumed from its checkpoint.
 TEST_F(RodsCli, AKilledRunResumesBitForBit) {
   const std::string out = *dir_ + "/killed.h5";
-  const auto killed = run_command("COOLGAS_CHECKPOINT_INTERVAL=0.1 " + rods(*scene_ + " -o " + out) +
-                                  " & pid=$!; n=0; while [ ! -f " + out +
-                                  ".checkpoint ] && [ $n -lt 600 ]; do sleep 0.05; n=$((n+1)); done; sleep 0.3; "
-                                  "kill -KILL $pid; wait $pid");
-  ASSERT_TRUE(killed.exit_code == 128 + 9 || killed.exit_code == 0) << killed.err;
-  if (killed.exit_code != 0) {
-    const auto r = run_command(test::simulate("--resume " + out));
-    ASSERT_EQ(r.exit_code, 0) << r.err;
-  }
+  const auto killed = run_command("COOLGAS_CHECKPOINT_INTERVAL=0 " +
+                                  test::fault(test::events_at(0.5, test::collisions_of(whole()))) +
+                                  rods(*scene_ + " -o " + out));
+  ASSERT_EQ(killed.exit_code, test::kKilled) << killed.err;
+  const auto r = run_command(test::simulate("--resume " + out));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
   test::expect_same_trajectory(whole(), out);
 }
 

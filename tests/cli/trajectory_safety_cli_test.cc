@@ -1,18 +1,18 @@
 // The trajectory file survives what real runs meet (common/trajectory/
-// h5md_writer.h): SIGKILL at any moment leaves every earlier dump valid and
-// the file resumable; the analysis tools read a file that is still being
+// h5md_writer.h): SIGKILL at any moment (named points over the whole run,
+// common/fault_point.h) leaves every earlier dump valid and the file resumable; the analysis tools read a file that is still being
 // written; a write that fails (here: a file-size limit, as a full disk
 // would) is one line naming the file and the cause, exit code 5, the earlier
 // dumps intact, and --resume completes the run once the limit is lifted.
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "common/error.h"
 #include "common/hdf5_file.h"
+#include "tests/support/fault_points.h"
 #include "tests/support/run_command.h"
 #include "tests/support/simulate_cli.h"
 
@@ -51,53 +51,56 @@ class TrajectorySafety : public ::testing::Test {
   void SetUp() override {
     dir = test::scratch_dir("trajectory_safety");
     scene = write_scene(dir);
-    const auto start = std::chrono::steady_clock::now();
     const auto r = run_command(bin("coolgas-simulate") + " " + scene + " -q -o " + dir + "/whole.h5");
-    wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     ASSERT_EQ(r.exit_code, 0) << r.err;
     whole = dump_times(dir + "/whole.h5");
   }
   std::string dir, scene;
   std::vector<double> whole;  // the dump times of the uninterrupted run
-  double wall = 0;            // its wall time [s]: kills are placed as fractions of it, so a slow machine tests the same
 };
 
-// Kills spread over the run, from set-up to the last dumps: whatever was
-// being written at that moment, the dumps before it are complete and valid,
-// and --resume runs the rest (it has work to do: none of these kills comes
-// after the last dump).
+// Kills spread over the run, from its first dumps to its last: after a
+// number of events, amid a dump's rows (before they are flushed, and
+// flushed before the row that marks the dump complete), amid a mid-run
+// checkpoint and before its rename. Whatever was being written at that
+// moment, the dumps before it are complete and valid, and --resume runs the
+// rest to the uninterrupted run's dumps.
 TEST_F(TrajectorySafety, SigkillAtAnyMomentLeavesEveryEarlierDumpValidAndResumable) {
-  int files = 0, tried = 0;
-  // The last four only when the machine's load moved the first five's kills
-  // off the run (a run slower or faster than the fixture's timed one).
-  for (const double fraction : {0.2, 0.35, 0.5, 0.65, 0.8, 0.1, 0.42, 0.58, 0.9}) {
-    if (tried++ >= 5 && files >= 3) break;
-    const std::string delay = std::to_string(fraction * wall);
-    const std::string out = dir + "/killed_" + std::to_string(fraction) + ".h5";
-    const auto k = run_command("(" + bin("coolgas-simulate") + " " + scene + " -q -o " + out + " & p=$!; sleep " +
-                               delay + "; kill -KILL $p; wait $p)");
-    if (k.exit_code == 0) continue;  // the run finished first: nothing to test at this delay
-    if (run_command("test -e " + out).exit_code != 0) continue;  // killed before its first dump
-    EXPECT_EQ(validate(out), "") << "killed after " << delay << " s";
+  const std::int64_t collisions = test::collisions_of(dir + "/whole.h5");
+  const auto dumps = long(whole.size());
+  ASSERT_GE(dumps, 10);
+  // (Every point, in every kind of run: fault_points_cli_test.cc.)
+  const std::vector<std::string> points = {
+      test::events_at(0.2, collisions), test::events_at(0.5, collisions), test::events_at(0.8, collisions),
+      "dump-frame:2", "dump-flushed:" + std::to_string(dumps / 2), "dump-flushed:" + std::to_string(dumps),
+      "checkpoint-write:3"};
+  for (const std::string& point : points) {
+    const std::string out = dir + "/killed_" + point.substr(0, point.find(':')) + "_" +
+                            point.substr(point.find(':') + 1) + ".h5";
+    // A checkpoint after every slice of events, so the checkpoint points land mid-run.
+    const auto k = run_command("COOLGAS_CHECKPOINT_INTERVAL=0 " + test::fault(point) + bin("coolgas-simulate") + " " +
+                               scene + " -q -o " + out);
+    ASSERT_EQ(k.exit_code, test::kKilled) << point << ": the fault did not stop the run: " << k.err;
+    EXPECT_EQ(validate(out), "") << "killed at " << point;
     const auto before = dump_times(out);
-    if (before.size() == whole.size()) continue;  // killed after its last dump, while closing: nothing to resume
-    ++files;
-    EXPECT_EQ(before, std::vector<double>(whole.begin(), whole.begin() + long(before.size())));
+    ASSERT_LT(before.size(), whole.size()) << point;
+    EXPECT_EQ(before, std::vector<double>(whole.begin(), whole.begin() + long(before.size()))) << point;
     const auto r = run_command(bin("coolgas-simulate") + " -q --resume " + out);
-    EXPECT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_EQ(validate(out), "") << "resumed after a kill at " << delay << " s";
-    EXPECT_EQ(dump_times(out), whole);
+    EXPECT_EQ(r.exit_code, 0) << point << ": " << r.err;
+    EXPECT_EQ(validate(out), "") << "resumed after a kill at " << point;
+    EXPECT_EQ(dump_times(out), whole) << point;
   }
-  EXPECT_GE(files, 3) << "too few kills landed during the run to test anything";
 }
 
 // A reader opens the file while coolgas-simulate writes it (HDF5 SWMR) and
 // sees the complete dumps so far; a second writer is refused. (t_end = 1e8
-// keeps the writer busy, however fast the machine, until it is killed.)
+// keeps the writer busy, however fast the machine, until it is killed; the
+// reader starts once the first dump is in place, however slow the machine.)
 TEST_F(TrajectorySafety, ToolsReadAFileWhileItIsWrittenAndASecondWriterIsRefused) {
   const std::string out = dir + "/live.h5";
   const auto r = run_command(
-      "(" + bin("coolgas-simulate") + " " + scene + " -q -o " + out + " --set run.t_end=1e8 & p=$!; sleep 1; " +
+      "(" + bin("coolgas-simulate") + " " + scene + " -q -o " + out + " --set run.t_end=1e8 & p=$!; n=0; " +
+      "while [ ! -f " + out + " ] && [ $n -lt 600 ]; do sleep 0.05; n=$((n+1)); done; " +
       bin("coolgas-validate") + " " + out + " && " + bin("coolgas-energy") + " " + out + " | tail -1 && " +
       bin("coolgas-clusters") + " --series " + out + " | tail -1; " + bin("coolgas-simulate") + " -q --resume " + out +
       "; echo resume=$?; kill -KILL $p; wait $p)");
@@ -113,8 +116,9 @@ TEST_F(TrajectorySafety, ToolsReadAFileWhileItIsWrittenAndASecondWriterIsRefused
 // (h5dump, h5diff, MDAnalysis) open the file.
 TEST_F(TrajectorySafety, AResumeWithNothingToDoClosesAKilledRunsFileProperly) {
   const std::string out = dir + "/killed.h5";
-  run_command("(" + bin("coolgas-simulate") + " " + scene + " -q -o " + out + " --set run.t_end=1e8 & p=$!; sleep 1; " +
-              "kill -KILL $p; wait $p)");
+  ASSERT_EQ(run_command(test::fault("dump-frame:4") + bin("coolgas-simulate") + " " + scene + " -q -o " + out +
+                        " --set run.t_end=1e8").exit_code,
+            test::kKilled);  // killed writing its 4th dump: three complete
   const hid_t plain = H5Fopen(out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   ASSERT_LT(plain, 0) << "the killed writer left no flags: nothing to test";
   const auto times = dump_times(out);

@@ -1,0 +1,70 @@
+// Test-only faults at named points: COOLGAS_FAULT=POINT[:COUNT][:SIGNAL]
+// makes coolgas-simulate stop at the COUNT-th passage (default 1) of POINT
+// as if it had been sent SIGKILL there: raise(SIGKILL), so nothing is
+// flushed and no handler runs, and the exit status is a killed process's.
+// With SIGNAL = INT, TERM or HUP that signal is raised instead, once, and
+// its handler (common/interrupt.h) takes over as for a signal from outside.
+// This lets a test stop a run at a chosen moment of its life instead of at a
+// moment of wall time (docs/reliability.md, "Faults at named points").
+//
+// The variable is read once, by arm_fault_from_environment(). A point costs
+// one comparison with a global where it is reached, on a path that writes
+// or reads a file; `events` only bounds the run driver's slice of events,
+// so the engine's loop is untouched. The points are listed here, once.
+#pragma once
+#include <cstdint>
+
+namespace coolgas {
+
+enum class FaultPoint : std::uint8_t {
+  kNone,
+  kEvents,            // after the COUNT-th event of the run (the run driver's slice ends there)
+  kCheckpointWrite,   // a checkpoint partly written under its temporary name
+  kCheckpointRename,  // a checkpoint synced under its temporary name, not renamed
+  kReplaceRename,     // a file's replacement synced under its temporary name, not renamed
+  kConvert,           // converting an earlier version's file, before its COUNT-th object
+  kResumeClaimed,     // a resume holding the file's lock, its recorded end covered
+  kResumeReopened,    // a resume with the file open for appending, an interrupted burst dropped
+  kDumpFrame,         // a dump's rows written, nothing flushed
+  kDumpFlushed,       // a dump's rows flushed, its completion row not yet written
+};
+
+struct FaultPointName {
+  FaultPoint point;
+  const char* name;  // as COOLGAS_FAULT spells it
+};
+inline constexpr FaultPointName kFaultPoints[] = {
+    {FaultPoint::kEvents, "events"},
+    {FaultPoint::kCheckpointWrite, "checkpoint-write"},
+    {FaultPoint::kCheckpointRename, "checkpoint-rename"},
+    {FaultPoint::kReplaceRename, "replace-rename"},
+    {FaultPoint::kConvert, "convert"},
+    {FaultPoint::kResumeClaimed, "resume-claimed"},
+    {FaultPoint::kResumeReopened, "resume-reopened"},
+    {FaultPoint::kDumpFrame, "dump-frame"},
+    {FaultPoint::kDumpFlushed, "dump-flushed"},
+};
+
+namespace fault_detail {
+inline FaultPoint armed = FaultPoint::kNone;
+void reached();
+}  // namespace fault_detail
+
+// Reads COOLGAS_FAULT (unset or empty: no fault). InputError naming the
+// variable when it is malformed. Returns the text of an armed fault, or "".
+const char* arm_fault_from_environment();
+
+// The named point `p`: nothing unless it is armed.
+inline void fault_point(FaultPoint p) {
+  if (fault_detail::armed == p) [[unlikely]]
+    fault_detail::reached();
+}
+
+// For the run driver, whose slices of events end where an `events` fault is
+// due: the events still allowed after `done` events of the run (a large
+// number when no such fault is armed), and the point itself, reached once
+// `done` events were processed.
+std::int64_t fault_events_left(std::int64_t done);
+void fault_after_events(std::int64_t done);
+
+}  // namespace coolgas
