@@ -62,3 +62,10 @@ install(FILES ${PROJECT_SOURCE_DIR}/pipelines/README.md DESTINATION ${COOLGAS_DO
 install(FILES ${PROJECT_SOURCE_DIR}/tests/physics/README.md DESTINATION ${COOLGAS_DOC_DIR}/tests/physics)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/pipelines/ DESTINATION share/coolgas/pipelines USE_SOURCE_PERMISSIONS)
 
+# Last: where the Python package went, and how its interpreter finds it.
+get_property(python_dir GLOBAL PROPERTY COOLGAS_PYTHON_INSTALL_DIR)
+if(python_dir)
+  get_property(python GLOBAL PROPERTY COOLGAS_PYTHON_EXECUTABLE)
+  install(CODE "set(COOLGAS_PYTHON \"${python}\")\nset(COOLGAS_PYTHON_DIR \"${python_dir}\")")
+  install(SCRIPT ${CMAKE_CURRENT_LIST_DIR}/python_note.cmake)
+endif()

@@ -3,8 +3,9 @@
 # fresh prefix, then checks that every program has a manual page that
 # `man -l` shows, that an installed program runs, that the documentation is
 # in share/doc/coolgas with every link between its pages and every document a
-# --help names resolving there, that completion offers a program's options,
-# and that the installed pipelines run on the installed programs (SCALE=tiny,
+# --help names resolving there, that the install says where the Python
+# package went, that completion offers a program's options, and that the
+# installed pipelines run on the installed programs (SCALE=tiny,
 # seconds). Prints what failed and exits 1 on the first failure.
 #
 # usage: tests/cli/installed_tree.sh BUILD_DIR SCRATCH_DIR
@@ -54,6 +55,12 @@ done
 [ "$named" -ge 2 ] || fail "no --help names a document"
 "$prefix/bin/coolgas-simulate" --help | grep -q 'share/doc/coolgas/data-schema/h5md-profile.md' ||
   fail "coolgas-simulate --help does not name the installed profile"
+
+# The install's last line: where the Python package went.
+if grep -q 'dist-packages/coolgas' "$scratch/install.log"; then
+  tail -1 "$scratch/install.log" | grep -q "^-- coolgas: the Python package is in $prefix/lib/python3[.0-9]*/dist-packages/coolgas; " ||
+    fail "the install does not end by saying where the Python package went: $(tail -1 "$scratch/install.log")"
+fi
 
 offered=$(bash -c '. "$1/share/bash-completion/completions/coolgas-simulate"
   COMP_WORDS=("$1/bin/coolgas-simulate" --resu); COMP_CWORD=1; _coolgas_complete; printf "%s\n" "${COMPREPLY[@]}"' _ "$prefix")
