@@ -4,8 +4,9 @@
 # `man -l` shows, that an installed program runs, that the documentation is
 # in share/doc/coolgas with every link between its pages and every document a
 # --help names resolving there, that the install says where the Python
-# package went, that completion offers a program's options, and that the
-# installed pipelines run on the installed programs (SCALE=tiny,
+# package went, that bash-completion's own loader finds each program's
+# completion and that it offers that program's options and nothing else, and
+# that the installed pipelines run on the installed programs (SCALE=tiny,
 # seconds). Prints what failed and exits 1 on the first failure.
 #
 # usage: tests/cli/installed_tree.sh BUILD_DIR SCRATCH_DIR
@@ -62,6 +63,33 @@ if grep -q 'dist-packages/coolgas' "$scratch/install.log"; then
     fail "the install does not end by saying where the Python package went: $(tail -1 "$scratch/install.log")"
 fi
 
+# Completion as bash-completion loads it (its loader searches
+# XDG_DATA_DIRS/bash-completion/completions for the command's name): each
+# program's, offering every option its --help lists and nothing else.
+loader=/usr/share/bash-completion/bash_completion
+[ -f "$loader" ] || fail "bash-completion is not installed ($loader; make test-deps installs it)"
+for program in "$prefix"/bin/coolgas-*; do
+  name=$(basename "$program")
+  offered=$(PATH="$prefix/bin:$PATH" XDG_DATA_DIRS="$prefix/share" bash -c '. "$1"; _completion_loader "$2"
+    complete -p "$2" | grep -q -- "-F _coolgas_complete" || { echo "not loaded"; exit; }
+    COMP_WORDS=("$2" -); COMP_CWORD=1; _coolgas_complete; printf "%s\n" "${COMPREPLY[@]}"' _ "$loader" "$name")
+  [ "$offered" != "not loaded" ] || fail "bash-completion's loader does not load the completion of $name"
+  "$program" --help >"$scratch/help.txt"
+  count=0
+  for word in $offered; do
+    # an option name: first on an indented line of --help, or after another name and a comma
+    grep -qE -- "^ +(-[-A-Za-z0-9]*,)*$word( |,|\$)" "$scratch/help.txt" || fail "completion of $name offers $word, not an option"
+    count=$((count + 1))
+  done
+  for option in --help --version; do
+    echo "$offered" | grep -qx -- "$option" || fail "completion of $name does not offer $option"
+  done
+  [ "$count" -ge 3 ] || fail "completion of $name offers only: $offered"
+done
+offered=$(bash -c '. "$1/share/bash-completion/completions/coolgas-fit"
+  COMP_WORDS=(coolgas-fit -); COMP_CWORD=1; PATH="$1/bin:$PATH"; _coolgas_complete; printf "%s " "${COMPREPLY[@]}"' _ "$prefix")
+[ "$offered" = "-h --help --t-window --window --t-column --e-column --err-column --no-weights --smooth --curve --version --power --local-slope --haff " ] ||
+  fail "completion of coolgas-fit offers: $offered"
 offered=$(bash -c '. "$1/share/bash-completion/completions/coolgas-simulate"
   COMP_WORDS=("$1/bin/coolgas-simulate" --resu); COMP_CWORD=1; _coolgas_complete; printf "%s\n" "${COMPREPLY[@]}"' _ "$prefix")
 [ "$offered" = "--resume" ] || fail "completion of 'coolgas-simulate --resu' offers '$offered', not --resume"
