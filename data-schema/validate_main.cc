@@ -11,7 +11,8 @@
 namespace {
 
 constexpr const char* kDescription =
-    "Checks a trajectory file against the coolgas H5MD profile (data-schema/h5md-profile.md):\n"
+    "Checks a trajectory file against the coolgas H5MD profile (data-schema/h5md-profile.md, installed as\n"
+    "share/doc/coolgas/data-schema/h5md-profile.md):\n"
     "every listed group, attribute, element and dataset exists with its type and shape;\n"
     "h5md version [1, 1], author and creator; box dimension 3, boundary periodic x3, edges diag(L, L, L);\n"
     "N from /parameters/N matches the particle arrays; particle elements share F rows, observables K rows\n"

@@ -1,7 +1,8 @@
 # What `cmake --install` puts beside the programs (bin/): a manual page for
 # each (share/man/man1, made from its --help by help2man), bash completion,
-# and share/coolgas/ with the file-format documents (which every --help
-# names), the pipelines and their gnuplot scripts, so that
+# share/doc/coolgas/ with the documentation as it stands in the source tree
+# (README, NEWS, LICENSE, docs/, data-schema/: the file formats --help
+# names), and share/coolgas/ with the pipelines and their gnuplot scripts, so that
 #   make -C PREFIX/share/coolgas/pipelines/demo
 # runs the demo with the installed programs (pipelines/common.mk finds them).
 get_property(COOLGAS_TOOLS GLOBAL PROPERTY COOLGAS_TOOLS)
@@ -46,6 +47,25 @@ foreach(tool IN LISTS COOLGAS_TOOLS)
           DESTINATION share/bash-completion/completions RENAME ${tool})
 endforeach()
 
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/data-schema/ DESTINATION share/coolgas/data-schema
-        FILES_MATCHING PATTERN "*.md")
+# The documents keep their places relative to each other, so every link
+# between them resolves in share/doc/coolgas as in the source tree
+# (tests/cli/installed_tree.sh checks it).
+set(COOLGAS_DOC_DIR share/doc/coolgas)
+install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/NEWS.md ${PROJECT_SOURCE_DIR}/LICENSE
+              ${PROJECT_SOURCE_DIR}/CITATION.cff ${PROJECT_SOURCE_DIR}/ARCHITECTURE.md
+        DESTINATION ${COOLGAS_DOC_DIR})
+foreach(dir docs data-schema tests/bench)
+  install(DIRECTORY ${PROJECT_SOURCE_DIR}/${dir}/ DESTINATION ${COOLGAS_DOC_DIR}/${dir} FILES_MATCHING PATTERN "*.md"
+          PATTERN eta_scenes EXCLUDE)
+endforeach()
+install(FILES ${PROJECT_SOURCE_DIR}/pipelines/README.md DESTINATION ${COOLGAS_DOC_DIR}/pipelines)
+install(FILES ${PROJECT_SOURCE_DIR}/tests/physics/README.md DESTINATION ${COOLGAS_DOC_DIR}/tests/physics)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/pipelines/ DESTINATION share/coolgas/pipelines USE_SOURCE_PERMISSIONS)
+
+# Last: where the Python package went, and how its interpreter finds it.
+get_property(python_dir GLOBAL PROPERTY COOLGAS_PYTHON_INSTALL_DIR)
+if(python_dir)
+  get_property(python GLOBAL PROPERTY COOLGAS_PYTHON_EXECUTABLE)
+  install(CODE "set(COOLGAS_PYTHON \"${python}\")\nset(COOLGAS_PYTHON_DIR \"${python_dir}\")")
+  install(SCRIPT ${CMAKE_CURRENT_LIST_DIR}/python_note.cmake)
+endif()

@@ -49,7 +49,7 @@ BA_PHIS := 0.208
 BA_SEED := 1
 BA_THETA_WINDOW := 2:16
 BA_MMAX_FIT_WINDOW := 2:16
-# Aggregates outgrow a third of this small box (the engine's limit) near t = 25.
+# Aggregates reach half this small box (the engine's limit) later than BA_T_END (when: pipelines/README.md).
 BA_T_END := 16
 BA_DUMP_TIMES := 1, 2, 4, 8, 16
 BA_SNAPSHOT_TIME := 8

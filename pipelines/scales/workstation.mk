@@ -1,11 +1,11 @@
 # SCALE = workstation: the closest one 2-core, 24 GB machine gets to the
-# paper in an afternoon. Planned by coolgas-simulate --estimate (a pilot of
+# paper in hours. Planned by coolgas-simulate --estimate (a pilot of
 # each scene and the measured rates, simulate/run/run_plan.h):
 #   make -C pipelines/workstation estimate OUT=...
-# The plan of 2026-12-05 (docs/studies.md, "The workstation scale,
-# planned"): 4.1 CPU hours (Fig. 1: 3.5), so about 2-2.5 hours of wall time
-# with make -j2 on an otherwise idle machine; the longest runs, L = 136 to
-# t = 2e5, 0.88 CPU hours each; peak memory 0.2 GB a run, 13 GB on disk. The scale before (Fig. 1 to L = 100) was run at 7dc619d: 1.66
+# The plan's total and wall time are stated once, in docs/studies.md
+# ("The scales, planned and run"; tests/cli/docs_agree.py compares it with
+# the plan).
+# The scale before (Fig. 1 to L = 100) was run at 7dc619d: 1.66
 # core-hours of runs, 61 minutes on 2 cores, 8.1 GB. Every run resumes
 # (coolgas-simulate --resume; make reruns only what is missing), so it can be
 # run in slices. Every variable is documented in pipelines/common.mk.

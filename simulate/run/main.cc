@@ -45,7 +45,7 @@ int main(int argc, char** argv) {
   return coolgas::run_tool("coolgas-simulate", [&] {
     coolgas::SimulationRequest req;
     CLI::App app{"Event-driven MD of inelastic hard spheres in a periodic box; writes an H5MD trajectory "
-                 "(data-schema/h5md-profile.md)."};
+                 "(data-schema/h5md-profile.md, installed as share/doc/coolgas/data-schema/h5md-profile.md)."};
     app.add_option("scene", req.scene_path, "scene file (TOML)");
     auto* output = app.add_option("-o,--output", req.output, "output H5MD file (default: the scene's name with .h5)");
     app.add_option("--set", req.overrides, "override a scene key, e.g. --set collision.r0=0.1 (repeatable)");

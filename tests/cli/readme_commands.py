@@ -7,9 +7,12 @@ in SCRATCH_DIR, where build/bin links to BIN_DIR, BIN_DIR is on PATH and
 GNUTERM=dumb (gnuplot without a display), pipelines links to the source's
 pipelines/, and must exit 0. Small inputs stand
 in where a command names files it does not make itself:
-  runs/L<L>_s<seed>.h5  tiny real runs (phi = 0.208, r0 = 0.1, delta = 1e-4,
-                   to t = 1e5) of L = 12, 16 and, under the name L68, L = 20,
-                   seeds 1 and 2 (a weighted collapse needs two runs per L).
+  out/demo/runs/size_L<L>_s<seed>.h5  what `make demo` leaves there (the
+                   names are checked against the demo pipeline with make -n):
+                   tiny real runs (phi = 0.208, r0 = 0.1, delta = 1e-4, to
+                   t = 1e5) of L = 12, 16, 20 under the names of the demo's
+                   L = 34, 48, 68, seeds 1 and 2 (a weighted collapse needs
+                   two runs per L).
 A line that is not run is either a synopsis (it holds [OPTIONS] in brackets
 or NAME... placeholders) or in SKIPPED below with the reason; any other line
 must run, so a new example is run from the day it is written."""
@@ -25,7 +28,7 @@ SKIPPED = {
     "make -C pipelines/demo -j2": "the demo pipeline: about 30 minutes (the recipes run at SCALE=tiny in tests/cli/pipeline_test.cc)",
     "make -C pipelines/demo reanalyze": "needs an archive of demo runs; tests/cli/pipeline_test.cc runs reanalyze from the tiny runs",
     "make -C pipelines/paper -j": "the paper scale: hundreds of core-hours on a cluster (srun)",
-    "make -C pipelines/workstation -j": "the workstation scale: 4.1 core-hours planned, 2-2.5 hours on 2 cores (its plan is run: make -C pipelines/workstation estimate)",
+    "make -C pipelines/workstation -j": "the workstation scale: hours on 2 cores, as its plan in docs/studies.md says (tests/cli/docs_agree.py runs the plan, make -C pipelines/workstation estimate)",
     "sbatch pipelines/cluster/paper.sbatch": "needs a Slurm cluster (its shell is checked with sh -n below)",
     "sbatch --ntasks=2": "needs a Slurm cluster (its shell is checked with sh -n below)",
     "make install": "installs into PREFIX; tests/cli/installed_tree.sh (ctest InstalledTree.*) installs into a fresh prefix and runs the pages, completion and pipelines there",
@@ -71,13 +74,20 @@ def skip_reason(command):
     return None
 
 
-def make_runs(bin_dir, scratch):
-    os.makedirs(os.path.join(scratch, "runs"), exist_ok=True)
-    for name, L in (("L12", 12), ("L16", 16), ("L68", 20)):
+def make_runs(source, bin_dir, scratch):
+    runs = os.path.join(scratch, "out", "demo", "runs")
+    os.makedirs(runs, exist_ok=True)
+    for demo_L, L in ((34, 12), (48, 16), (68, 20)):
         for seed in (1, 2):
+            name = f"size_L{demo_L}_s{seed}.h5"
+            # the demo pipeline makes a file of this name (make -n: its recipe, nothing run)
+            r = subprocess.run(["make", "-n", "-C", os.path.join(source, "pipelines", "demo"), f"BIN={bin_dir}",
+                                f"OUT={scratch}/out/demo", f"{runs}/{name}"], capture_output=True, text=True)
+            if r.returncode != 0 or "coolgas-simulate" not in r.stdout:
+                sys.exit(f"the demo pipeline makes no {name}: {r.stderr[-500:]}")
             sets = f"--set system.L={L} --set system.phi=0.208 --set system.seed={seed} --set run.t_end=1e5 " \
                    "--set collision.model=inelastic --set collision.r0=0.1 --set collision.delta=1e-4"
-            subprocess.run(f"{bin_dir}/coolgas-simulate -q {sets} -o runs/{name}_s{seed}.h5 /dev/null",
+            subprocess.run(f"{bin_dir}/coolgas-simulate -q {sets} -o {runs}/{name} /dev/null",
                            shell=True, cwd=scratch, check=True)
 
 
@@ -90,7 +100,7 @@ def main():
     if not os.path.exists(os.path.join(scratch, "pipelines")):
         os.symlink(os.path.join(source, "pipelines"), os.path.join(scratch, "pipelines"))
     subprocess.run(["sh", "-n", os.path.join(source, "pipelines/cluster/paper.sbatch")], check=True)
-    make_runs(bin_dir, scratch)
+    make_runs(source, bin_dir, scratch)
     env = dict(os.environ, PATH=bin_dir + os.pathsep + os.environ["PATH"], GNUTERM="dumb")
     failed = ran = 0
     docs = ["README.md", "pipelines/README.md"] + sorted(

@@ -19,8 +19,12 @@ def test_version_is_the_tools(name):
 
 def test_install_puts_the_package_where_python_finds_it(tmp_path):
     build = os.environ["COOLGAS_BUILD_DIR"]
-    subprocess.run(["cmake", "--install", build, "--prefix", tmp_path], check=True, capture_output=True)
+    install = subprocess.run(["cmake", "--install", build, "--prefix", tmp_path], check=True, capture_output=True,
+                             text=True)
     site = tmp_path / "lib" / f"python3.{sys.version_info.minor}" / "dist-packages"
+    # the install's last line says where the package went and how this python finds it
+    assert install.stdout.strip().splitlines()[-1] == \
+        f"-- coolgas: the Python package is in {site}/coolgas; {sys.executable} finds it with PYTHONPATH={site}"
     script = ("import coolgas, coolgas._simulate as s; print(coolgas.__file__); print(coolgas.__version__); "
               "print(s._executable())")
     env = {"PYTHONPATH": str(site), "PATH": "/usr/bin:/bin"}
@@ -29,6 +33,25 @@ def test_install_puts_the_package_where_python_finds_it(tmp_path):
     assert file.startswith(str(site))
     assert version == coolgas.__version__
     assert exe == str(tmp_path / "bin" / "coolgas-simulate")  # the installed tool, not the build tree's
+
+
+def test_another_python_is_told_which_to_use(tmp_path):
+    # An interpreter without numpy and pandas: this one, under another name and without site-packages (-S).
+    other = tmp_path / "python3"
+    other.symlink_to(sys.executable)
+    env = dict(os.environ, PYTHONPATH=os.path.dirname(os.path.dirname(coolgas.__file__)))
+    r = subprocess.run([str(other), "-S", "-c", "import coolgas"], env=env, capture_output=True, text=True)
+    assert r.returncode == 1
+    last = r.stderr.strip().splitlines()[-1]
+    assert last == (f"ImportError: coolgas runs under {sys.executable} (Python 3.{sys.version_info.minor} with numpy "
+                    f"and pandas), the Python it was built for, not {other} (Python {sys.version.split()[0]}), where "
+                    f"numpy cannot be imported: run {sys.executable}"), r.stderr
+    assert "pandas/" not in r.stderr and "numpy/" not in r.stderr  # no traceback from inside them
+    # the same interpreter without them: install them
+    r = subprocess.run([sys.executable, "-S", "-c", "import coolgas"], env=env, capture_output=True, text=True)
+    assert r.stderr.strip().splitlines()[-1] == (
+        f"ImportError: coolgas needs numpy and pandas in {sys.executable}, the Python it was built for, where numpy "
+        "cannot be imported (Debian: apt-get install python3-numpy python3-pandas)"), r.stderr
 
 
 def test_missing_file_is_file_not_found(tmp_path):
