@@ -1,7 +1,9 @@
 #include "common/tsv.h"
 
+#include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -133,8 +135,19 @@ bool next_line(std::istream& in, std::string& line, std::size_t limit, const std
   line.clear();
   std::streambuf* buf = in.rdbuf();
   if (!buf) return false;
+  // A file buffer throws when the system's read fails (a directory, an I/O
+  // error), where std::getline would set badbit: refused naming the cause.
+  const auto next = [&] {
+    errno = 0;
+    try {
+      return buf->sbumpc();
+    } catch (const std::exception&) {
+      throw InputError("cannot read table '" + source + "' (line " + std::to_string(lineno) +
+                       "): " + (errno ? std::strerror(errno) : "a read failed"));
+    }
+  };
   bool any = false;
-  for (int c = buf->sbumpc(); c != std::char_traits<char>::eof(); c = buf->sbumpc()) {
+  for (int c = next(); c != std::char_traits<char>::eof(); c = next()) {
     any = true;
     if (c == '\n') return true;
     if (line.size() == limit)
