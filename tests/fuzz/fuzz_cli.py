@@ -681,10 +681,18 @@ def run_case(case, work):
         digest = hashlib.sha256(open(case["watch"], "rb").read()).hexdigest()
     command = case["command"] if isinstance(case["command"], list) else ["/bin/sh", "-c", case["command"]]
     set_up = pending(case["signal"]) if case["signal"] else limited(case["memory"]) if case["memory"] else None
-    try:
-        r = subprocess.run(command, cwd=work, capture_output=True, timeout=TIMEOUT_S, preexec_fn=set_up)
-    except subprocess.TimeoutExpired:
-        return f"no answer within {TIMEOUT_S} s"
+    # A session of its own, killed whole at the time limit: a program that
+    # hangs (a regression reading /dev/zero for ever) must not live on as an
+    # orphan of its shell, growing until the machine's out-of-memory killer.
+    with subprocess.Popen(command, cwd=work, stdout=subprocess.PIPE, stderr=subprocess.PIPE, preexec_fn=set_up,
+                          start_new_session=True) as child:
+        try:
+            out, err = child.communicate(timeout=TIMEOUT_S)
+        except subprocess.TimeoutExpired:
+            os.killpg(child.pid, 9)
+            child.communicate()
+            return f"no answer within {TIMEOUT_S} s"
+    r = subprocess.CompletedProcess(command, child.returncode, out, err)
     err = r.stderr.decode("utf-8", "replace")
     lines = err.count("\n") + (1 if err and not err.endswith("\n") else 0)
     kind = case["kind"]
