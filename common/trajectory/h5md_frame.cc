@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "common/error.h"
+#include "common/geometry.h"
 #include "common/hdf5_file.h"
 #include "common/limits.h"
 #include "common/memory.h"
