@@ -24,7 +24,17 @@ void watch_interrupts() {
   // SIGINT, unless the process was started to ignore it (nohup): then it
   // goes on ignoring it, as its user asked.
   struct sigaction hup {};
-  if (sigaction(SIGHUP, nullptr, &hup) == 0 && hup.sa_handler != SIG_IGN) sigaction(SIGHUP, &sa, nullptr);
+  const bool watch_hup = sigaction(SIGHUP, nullptr, &hup) == 0 && hup.sa_handler != SIG_IGN;
+  if (watch_hup) sigaction(SIGHUP, &sa, nullptr);
+  // A process started with the signals blocked (a launcher's mask, which
+  // exec keeps) would never see them: they are unblocked, and one already
+  // pending is recorded at once, so the first look at the flag stops the work.
+  sigset_t set;
+  sigemptyset(&set);
+  sigaddset(&set, SIGINT);
+  sigaddset(&set, SIGTERM);
+  if (watch_hup) sigaddset(&set, SIGHUP);
+  sigprocmask(SIG_UNBLOCK, &set, nullptr);
 }
 
 InterruptFlag interrupt_flag() { return &g_signal; }

@@ -34,7 +34,9 @@ struct Interrupted : std::runtime_error {
 // started with the signals ignored (a shell's background job), so that a
 // signal sent on purpose is never lost. SIGHUP (a dropped terminal or ssh
 // session) is handled the same way, except in a process started with it
-// ignored (nohup), which keeps ignoring it.
+// ignored (nohup), which keeps ignoring it. The signals are unblocked: one
+// sent before the process started, while they were blocked, is recorded at
+// once (how tests interrupt a loop at its first look, without timing).
 void watch_interrupts();
 
 // The flag the handler sets (for loops that take an InterruptFlag).

@@ -1,12 +1,15 @@
 #include "common/tsv.h"
 
+#include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 
 #include "common/error.h"
+#include "common/interrupt.h"
 #include "common/version.h"
 
 namespace coolgas {
@@ -124,16 +127,54 @@ void read_column_line(Table& t, const std::vector<std::string>& names, const std
   t.columns = names;
 }
 
+// std::getline with a bound: the next line of `in` (without its newline)
+// into `line`, false at the end of the input. A line longer than
+// `limit` bytes is refused as soon as its limit + 1st byte is read, so a
+// device without newlines (/dev/zero) costs at most `limit` bytes.
+bool next_line(std::istream& in, std::string& line, std::size_t limit, const std::string& source, long lineno) {
+  line.clear();
+  std::streambuf* buf = in.rdbuf();
+  if (!buf) return false;
+  // A file buffer throws when the system's read fails (a directory, an I/O
+  // error), where std::getline would set badbit: refused naming the cause.
+  const auto next = [&] {
+    errno = 0;
+    try {
+      return buf->sbumpc();
+    } catch (const std::exception&) {
+      throw InputError("cannot read table '" + source + "' (line " + std::to_string(lineno) +
+                       "): " + (errno ? std::strerror(errno) : "a read failed"));
+    }
+  };
+  bool any = false;
+  for (int c = next(); c != std::char_traits<char>::eof(); c = next()) {
+    any = true;
+    if (c == '\n') return true;
+    if (line.size() == limit)
+      throw InputError(source + ":" + std::to_string(lineno) + ": a line longer than " + std::to_string(limit) +
+                       " bytes; a table's lines are at most " + std::to_string(limit) + " bytes");
+    line.push_back(char(c));
+  }
+  in.setstate(std::ios::eofbit);
+  return any;
+}
+
+// Lines between two looks at the interrupt flag: a few microseconds of work.
+constexpr long kLinesPerInterruptCheck = 4096;
+
 }  // namespace
 
-Table read_table(std::istream& in, const std::string& source) {
+Table read_table(std::istream& in, const std::string& source, const TableLimits& limits) {
   Table t;
   t.source = source;
   std::string line;
   int block = 0, blank_run = 0;
   long lineno = 0;
-  while (std::getline(in, line)) {
+  while (next_line(in, line, limits.line_bytes, source, lineno + 1)) {
     ++lineno;
+    if (lineno % kLinesPerInterruptCheck == 0 && interrupted())
+      throw Interrupted(interrupt_signal(), "while reading " + source + " (at line " + std::to_string(lineno) +
+                                                "); no table written");
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.find_first_not_of(" \t") == std::string::npos) {
       ++blank_run;
@@ -154,6 +195,13 @@ Table read_table(std::istream& in, const std::string& source) {
     if (fields.size() != t.columns.size())
       throw InputError(where + ": " + std::to_string(fields.size()) + " fields, expected " +
                        std::to_string(t.columns.size()) + " (one per column)");
+    if (t.rows.size() == limits.rows)
+      throw InputError(where + ": more than " + std::to_string(limits.rows) + " rows; a table holds at most " +
+                       std::to_string(limits.rows) + " rows");
+    if (double(t.rows.size() + 1) * double(fields.size()) > double(limits.numbers))
+      throw InputError(where + ": more than " + std::to_string(limits.numbers) + " numbers (" +
+                       std::to_string(t.rows.size() + 1) + " rows of " + std::to_string(fields.size()) +
+                       " columns); a table holds at most " + std::to_string(limits.numbers) + " numbers");
     std::vector<double> row;
     row.reserve(fields.size());
     for (const auto& f : fields) row.push_back(parse_field(f, where));
@@ -164,11 +212,11 @@ Table read_table(std::istream& in, const std::string& source) {
   return t;
 }
 
-Table read_table(const std::string& path) {
-  if (path == "-") return read_table(std::cin, "stdin");
+Table read_table(const std::string& path, const TableLimits& limits) {
+  if (path == "-") return read_table(std::cin, "stdin", limits);
   std::ifstream f(path);
   if (!f) throw InputError("cannot open table '" + path + "' for reading");
-  return read_table(f, path);
+  return read_table(f, path, limits);
 }
 
 }  // namespace coolgas

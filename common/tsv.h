@@ -74,10 +74,24 @@ struct Table {
   std::optional<std::string> get(const std::string& key) const;
 };
 
+// What a table may hold, so that no reader grows without bound on a device
+// (/dev/zero: one endless line), an endless pipe or a hostile file. Past a
+// bound the reader stops with an InputError naming the file, the line and
+// the bound, before it allocates more (data-schema/tsv-tables.md, "Bounds").
+// At the defaults a table takes at most about 1.2 GB in memory; no table a
+// coolgas tool writes comes near them.
+struct TableLimits {
+  std::size_t line_bytes = std::size_t(1) << 20;  // bytes of one line, its newline not counted (1 MiB)
+  std::size_t rows = 10'000'000;                  // data rows (10^7)
+  std::size_t numbers = 100'000'000;              // data rows x columns (10^8)
+};
+
 // Reads a table from a path, or from stdin when path is "-". Rejects, with
 // an InputError naming the line: an empty table, ragged rows, non-numbers,
-// NaN and infinities.
-Table read_table(const std::string& path);
-Table read_table(std::istream& in, const std::string& source);
+// NaN and infinities, and a table beyond `limits`. Stops with Interrupted
+// (common/interrupt.h) once SIGINT/SIGTERM/SIGHUP arrived in a tool that
+// watches them (looked at every few thousand lines).
+Table read_table(const std::string& path, const TableLimits& limits = {});
+Table read_table(std::istream& in, const std::string& source, const TableLimits& limits = {});
 
 }  // namespace coolgas

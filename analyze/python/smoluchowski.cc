@@ -64,7 +64,8 @@ void set_initial(sm::RunOptions& o, const py::object& initial) {
   const auto d = initial.cast<py::dict>();
   o.initial = d["source"].cast<std::string>();
   o.initial_by_mass = sm::initial_masses(table_of(d["columns"].cast<std::vector<std::string>>(),
-                                                  real_numbers(d["rows"], o.initial + ": rows"), o.initial));
+                                                  real_numbers(d["rows"], o.initial + ": rows"), o.initial),
+                                         o.method.M);
 }
 
 py::dict run(const std::string& kernel, const std::string& method, std::int64_t M, double grid_ratio, double fft_floor,

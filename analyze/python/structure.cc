@@ -2,6 +2,7 @@
 // (analyze/structure/structure_table.h), as coolgas-structure computes them.
 #include "analyze/python/arrays.h"
 #include "common/limits.h"
+#include "common/memory.h"
 #include "analyze/structure/structure_table.h"
 
 namespace coolgas::python {
@@ -37,7 +38,7 @@ py::dict table(const py::object& positions, double L, double t, const std::strin
   // Weights of the density: > 0, at most what a file's aggregate holds.
   const std::vector<double> w =
       masses ? coolgas::python::masses(*masses, "masses", n, double(kMaxIndex32), false) : std::vector<double>();
-  const int points = structure_grid_points(grid, L);
+  const int points = structure_grid_points(grid, L, Geometry(rows.dimension()), usable_memory_bytes());
   FrameStructure fs(points, Geometry(rows.dimension()));
   const TableBlock b = structure_block(kind, fs, t, L, pos, vel, w, peak_fraction, direct_shells);
   py::dict d = table_dict(structure_columns(kind), b.rows, b.comment);

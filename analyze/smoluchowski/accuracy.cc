@@ -44,13 +44,13 @@ Reference reference(const Kernel& k, const Case& cs) {
   }
   MethodOptions mo{Method::Fft, M};
   IntegratorOptions io{1e-12, 1e-20, Stepper::Rk8pd};
-  auto s = solve(k, mo, io, initial_masses("mono"), cs.t);
+  auto s = solve(k, mo, io, initial_masses("mono", M), cs.t);
   return {s.grid, s.c, moments(s.grid, s.c).mean()};
 }
 
 void row(TsvWriter& w, const Kernel& k, const Case& cs, const Reference& ref, const Setting& st) {
   const auto start = std::chrono::steady_clock::now();
-  const auto s = solve(k, st.method, st.integrator, initial_masses("mono"), cs.t);
+  const auto s = solve(k, st.method, st.integrator, initial_masses("mono", st.method.M), cs.t);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double err = binned_distance(s.grid, s.c, ref.grid, ref.c, kBinsPerDecade);
   const double mean_err = std::abs(moments(s.grid, s.c).mean() / ref.mean - 1);

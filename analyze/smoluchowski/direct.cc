@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "common/interrupt.h"
+
 namespace coolgas::smoluchowski {
 
 long last_nonzero(const double* c, std::size_t n) {
@@ -33,6 +35,7 @@ void DirectRhs::evaluate_with(const K& kernel, const double* c, double* dcdt) co
   const long top = last_nonzero(c, grid_.size());
   // Index i holds mass i+1, so masses i+1 and j+1 make mass k+1 when i+j = k-1.
   for (long k = 0; k < n; ++k) {
+    if (k % 1024 == 0 && interrupted()) return;  // the integrator stops the step (integrator.h)
     double gain = 0;
     for (long i = std::max(0L, k - 1 - top); i <= std::min(k - 1, top); ++i)
       gain += kernel(i, k - 1 - i) * c[i] * c[k - 1 - i];

@@ -13,10 +13,11 @@ class DirectRhs : public CoagulationRhs {
   const MassGrid& grid() const override { return grid_; }
   void evaluate(const double* c, double* dcdt) override;
 
- private:
   // Up to this M the kernel is tabulated once (32 MB at most); above it,
   // evaluated from the power tables pair by pair.
   static constexpr std::int64_t kTableLimit = 2048;
+
+ private:
   template <class K>
   void evaluate_with(const K& kernel, const double* c, double* dcdt) const;
 

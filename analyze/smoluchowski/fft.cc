@@ -6,6 +6,7 @@
 #include <new>
 
 #include "analyze/smoluchowski/direct.h"
+#include "common/interrupt.h"
 
 namespace coolgas::smoluchowski {
 
@@ -60,6 +61,7 @@ void FftRhs::gain(const double* c, std::size_t length, double* out) {
   const Plans& plans = plans_for(length);
   const std::size_t nf = length / 2 + 1, E = powers_.table.size();
   for (std::size_t e = 0; e < E; ++e) {
+    if (interrupted()) return;  // a transform of 2^28 points takes seconds; the integrator stops the step
     const double* pw = powers_.table[e].data();
     for (std::size_t i = 0; i < active_; ++i) real_[i] = pw[i] * c[i];
     std::fill(real_ + active_, real_ + length, 0.0);

@@ -5,6 +5,7 @@
 
 #include "analyze/smoluchowski/direct.h"
 #include "common/error.h"
+#include "common/interrupt.h"
 #include "common/tsv.h"
 
 namespace coolgas::smoluchowski {
@@ -40,6 +41,7 @@ void GeometricRhs::evaluate(const double* c, double* dcdt) {
   std::vector<double> loss(n, 0.0);
   const long top = last_nonzero(c, n);
   for (long i = 0; i <= top; ++i) {
+    if (i % 1024 == 0 && interrupted()) return;  // the integrator stops the step (integrator.h)
     if (c[i] == 0) continue;
     // Pivot k below v = x_i + x_j only moves up as j grows: walk it along.
     std::size_t k = std::upper_bound(x, x + n, x[i] + x[i]) - x - 1;

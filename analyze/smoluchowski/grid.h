@@ -27,7 +27,9 @@ MassGrid uniform_grid(std::int64_t M);
 // dc/dt of the truncated equation in the ½-gain convention,
 //   dc_k/dt = ½ Σ_{i+j=k} K(i,j) c_i c_j − c_k Σ_{j<=M} K(k,j) c_j,
 // (discretised on the method's grid). Implementations may keep scratch space,
-// hence non-const; the result depends on c only (deterministic).
+// hence non-const; the result depends on c only (deterministic). A long
+// evaluation may return early, its result unfinished, once SIGINT/SIGTERM/
+// SIGHUP arrived (common/interrupt.h): the integrator then stops the step.
 class CoagulationRhs {
  public:
   virtual ~CoagulationRhs() = default;

@@ -7,6 +7,7 @@
 // Masses between two pivots of a geometric grid are shared between them
 // conserving number and mass, as the scheme itself does.
 #pragma once
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -16,9 +17,12 @@
 namespace coolgas::smoluchowski {
 
 // c_m(0) for integer masses m = 1..(size-1) (index = mass, entry 0 unused).
-std::vector<double> initial_masses(const std::string& spec);
+// A mass (a bin's upper edge) above `cutoff`, the run's --M, is refused
+// (InputError naming the row, the mass and M) before anything is allocated
+// for it: the vector never holds more than cutoff + 1 entries.
+std::vector<double> initial_masses(const std::string& spec, std::int64_t cutoff);
 // The same from a table already read (its first block).
-std::vector<double> initial_masses(const Table& table);
+std::vector<double> initial_masses(const Table& table, std::int64_t cutoff);
 
 // The same distribution on a grid. InputError if it holds masses above the cut-off.
 std::vector<double> on_grid(const MassGrid& grid, const std::vector<double>& by_mass);

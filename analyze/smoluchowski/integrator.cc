@@ -43,6 +43,20 @@ const gsl_odeiv2_step_type* step_type(Stepper s) {
 }
 }  // namespace
 
+double integrator_bytes(double cells, Stepper s) {
+  // Vectors of GSL's steppers (gsl/ode-initval2/*.c): rk2 k1-k3, y0, ytmp;
+  // rkf45 and rkck k1-k6, y0, ytmp; rk8pd k[13], y0, ytmp, and more. The
+  // evolve object: y0, yerr, dydt_in, dydt_out. The state c_.
+  double stages = 0;
+  switch (s) {
+    case Stepper::Rk2: stages = 5; break;
+    case Stepper::Rkf45:
+    case Stepper::Rkck: stages = 8; break;
+    case Stepper::Rk8pd: stages = 18; break;
+  }
+  return (stages + 4 + 1) * cells * sizeof(double);
+}
+
 struct Integrator::Gsl {
   gsl_odeiv2_system sys{};
   gsl_odeiv2_step* step = nullptr;
@@ -55,11 +69,16 @@ struct Integrator::Gsl {
   }
 };
 
+// An evaluation may stop early once a signal arrived (a long one looks at
+// the flag, CoagulationRhs::evaluate); GSL is then told to stop
+// (GSL_EBADFUNC returns at once from the step), and step() throws
+// Interrupted, never crossing GSL's C frames with an exception.
 int Integrator::gsl_rhs(double, const double* y, double* dydt, void* self) {
   auto* me = static_cast<Integrator*>(self);
+  if (interrupted()) return GSL_EBADFUNC;
   me->rhs_.evaluate(y, dydt);
   ++me->evaluations_;
-  return GSL_SUCCESS;
+  return interrupted() ? GSL_EBADFUNC : GSL_SUCCESS;
 }
 
 Integrator::Integrator(CoagulationRhs& rhs, std::vector<double> c0, const IntegratorOptions& o)
@@ -82,6 +101,11 @@ Integrator::~Integrator() = default;
 void Integrator::step(double t_limit) {
   const int status = gsl_odeiv2_evolve_apply(gsl_->evolve, gsl_->control, gsl_->step, &gsl_->sys, &t_, t_limit,
                                              &h_, c_.data());
+  if (status == GSL_EBADFUNC && interrupted()) {
+    gsl_odeiv2_evolve_reset(gsl_->evolve);
+    throw Interrupted(interrupt_signal(), "during a step from t = " + format_number(t_) +
+                                              "; the rows written so far are complete, the '# end' line is missing");
+  }
   if (status != GSL_SUCCESS)
     throw std::runtime_error("time step failed at t = " + format_number(t_) + " (GSL: " + gsl_strerror(status) + ")");
   ++steps_;

@@ -28,6 +28,10 @@ struct IntegratorOptions {
   double first_step = 1e-4;  // trial first step; the controller adapts it at once
 };
 
+// The bytes an Integrator of `cells` cells allocates: its state and GSL's
+// stepper stages and evolve buffers.
+double integrator_bytes(double cells, Stepper s);
+
 class Integrator {
  public:
   Integrator(CoagulationRhs& rhs, std::vector<double> c0, const IntegratorOptions& options);

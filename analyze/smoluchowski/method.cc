@@ -1,5 +1,7 @@
 #include "analyze/smoluchowski/method.h"
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
 
 #include "analyze/smoluchowski/direct.h"
@@ -45,6 +47,31 @@ std::unique_ptr<CoagulationRhs> make_rhs(const Kernel& kernel, const MethodOptio
     case Method::Geometric: return std::make_unique<GeometricRhs>(kernel, o.M, o.grid_ratio);
   }
   return nullptr;
+}
+
+double grid_cells(const MethodOptions& o) {
+  const double M = double(o.M);
+  if (o.method != Method::Geometric) return M;
+  // Pivots 1, 2, 3, ... while x (r - 1) < 1, then growing by r: at most
+  // 1/(r - 1) of the first kind and log(M)/log(r) of the second.
+  return std::min(M, 1 / (o.grid_ratio - 1) + std::log(M) / std::log(o.grid_ratio) + 2);
+}
+
+double method_bytes(const Kernel& kernel, const MethodOptions& o) {
+  const double cells = grid_cells(o), exponents = double(kernel.exponents().size());
+  double doubles = (2 * cells + 1) + exponents * cells;  // MassGrid (pivots, edges), KernelPowers
+  switch (o.method) {
+    case Method::Direct:
+      if (o.M <= DirectRhs::kTableLimit) doubles += cells * cells;
+      break;
+    case Method::Fft: {
+      const double length = 2 * double(std::bit_ceil(static_cast<std::uint64_t>(o.M)));
+      doubles += length + (exponents + 1) * (length / 2 + 1) * 2;  // real buffer, complex spectra
+      break;
+    }
+    case Method::Geometric: doubles += cells; break;  // the losses of an evaluation
+  }
+  return doubles * sizeof(double);
 }
 
 }  // namespace coolgas::smoluchowski

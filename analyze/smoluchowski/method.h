@@ -30,4 +30,13 @@ void validate(const MethodOptions& o);
 
 std::unique_ptr<CoagulationRhs> make_rhs(const Kernel& kernel, const MethodOptions& o);
 
+// The cells of the method's grid (M, or the geometric grid's pivots, at
+// most), without making the grid.
+double grid_cells(const MethodOptions& o);
+// The bytes make_rhs(kernel, o) allocates: the grid, the kernel's power
+// tables (one per exponent) and the method's own (the direct method's
+// table; the FFT's buffer and one spectrum per exponent, 2^k >= 2M long;
+// the geometric method's losses). Counted before anything is allocated.
+double method_bytes(const Kernel& kernel, const MethodOptions& o);
+
 }  // namespace coolgas::smoluchowski

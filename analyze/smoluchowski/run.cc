@@ -12,6 +12,7 @@
 #include "analyze/smoluchowski/solve.h"
 #include "common/error.h"
 #include "common/interrupt.h"
+#include "common/memory.h"
 #include "common/tsv.h"
 
 namespace coolgas::smoluchowski {
@@ -56,6 +57,29 @@ void validate(const RunOptions& o) {
   if (!(o.leak_tolerance > 0)) throw InputError("leak tolerance must be > 0, got " + format_number(o.leak_tolerance));
   if (o.series && !o.series_file.empty())
     throw InputError("--series (series on stdout) and --series-file exclude each other; pick one");
+}
+
+double run_bytes(const RunOptions& o, const Kernel& kernel) {
+  const double cells = grid_cells(o.method);
+  // The state before a step and a crossing's two copies (refine_crossing);
+  // a table's start by mass (1 to M) besides its cells on the grid.
+  const double copies = 3 * cells + (o.initial == "mono" ? 0.0 : double(o.method.M) + 1);
+  return method_bytes(kernel, o.method) + integrator_bytes(cells, o.integrator.stepper) + copies * sizeof(double);
+}
+
+void check_run_memory(const RunOptions& o, const Kernel& kernel, double memory_bytes) {
+  const double need = run_bytes(o, kernel);
+  if (need <= memory_bytes) return;
+  // The largest M that fits: the bytes grow with M.
+  RunOptions fit = o;
+  std::int64_t lo = 1, hi = o.method.M;
+  while (hi - lo > 1) {
+    fit.method.M = lo + (hi - lo) / 2;
+    (run_bytes(fit, kernel) <= memory_bytes ? lo : hi) = fit.method.M;
+  }
+  throw InputError("cut-off mass --M " + std::to_string(o.method.M) + " would need " + bytes_text(need) +
+                   " (method " + method_name(o.method.method) + ", kernel '" + o.kernel + "'); the memory available is " +
+                   bytes_text(memory_bytes) + ": --M at most " + (lo >= 2 ? std::to_string(lo) : std::string("1 (none)")));
 }
 
 namespace {
@@ -261,9 +285,14 @@ RunSummary run(const RunOptions& o, std::ostream& out, std::ostream& warn) {
 RunSummary run(const RunOptions& o, RunRows& rows, std::ostream& warn) {
   validate(o);
   const Kernel kernel = parse_kernel(o.kernel);
+  check_run_memory(o, kernel, usable_memory_bytes());
+  // The start first: a table's mass above the cut-off is refused before the
+  // grid and the transforms are made.
+  const std::vector<double> by_mass =
+      o.initial_by_mass.empty() ? initial_masses(o.initial, o.method.M) : std::vector<double>();
   auto rhs = make_rhs(kernel, o.method);
   const MassGrid& g = rhs->grid();
-  auto c0 = on_grid(g, o.initial_by_mass.empty() ? initial_masses(o.initial) : o.initial_by_mass);
+  auto c0 = on_grid(g, o.initial_by_mass.empty() ? by_mass : o.initial_by_mass);
   const double M1_0 = moments(g, c0).M1;
   if (!(M1_0 > 0)) throw InputError("initial distribution '" + o.initial + "' holds no clusters");
   Integrator it(*rhs, std::move(c0), o.integrator);

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "analyze/smoluchowski/integrator.h"
+#include "analyze/smoluchowski/kernel.h"
 #include "analyze/smoluchowski/method.h"
 #include "analyze/smoluchowski/observables.h"
 #include "common/tsv.h"
@@ -47,6 +48,16 @@ struct RunOptions {
 // InputError (one line) for anything that cannot run: negative or non-finite
 // times, nothing to do, bad knobs.
 void validate(const RunOptions& o);
+
+// The bytes a run of `o` needs at its peak: the method's (method_bytes),
+// the stepper's (integrator_bytes), the run's copies of the state and the
+// initial distribution by mass.
+double run_bytes(const RunOptions& o, const Kernel& kernel);
+// InputError naming --M, what the run would need, the memory available and
+// the largest --M that fits, when run_bytes exceeds `memory_bytes` (the
+// tool's: usable_memory_bytes(), common/memory.h). run() calls it before it
+// allocates anything.
+void check_run_memory(const RunOptions& o, const Kernel& kernel, double memory_bytes);
 
 struct RunSummary {
   double t = 0;                 // final time (the options' convention)

@@ -4,6 +4,7 @@
 #include <complex>
 
 #include "analyze/structure/cloud_in_cell.h"
+#include "common/interrupt.h"
 
 namespace coolgas {
 
@@ -49,6 +50,9 @@ std::vector<Shell> shell_average(const FourierGrid& grid, double L, const Weight
   const fftw_complex* f = grid.complex();
   const double dk = 2 * M_PI / L;
   for (int iz = 0; iz < grid.depth(); ++iz) {
+    // A plane is at most 1024^2 modes, milliseconds: a 1024^3 grid's
+    // average (seconds) stops within one (common/interrupt.h).
+    throw_if_interrupted("within a dump (its S(k) shells); no table written");
     const long c = grid.signed_index(iz);
     for (int iy = 0; iy < grid.height(); ++iy) {
       const long b = grid.signed_index(iy);

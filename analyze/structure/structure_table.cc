@@ -5,6 +5,7 @@
 
 #include "analyze/structure/growing_length.h"
 #include "common/error.h"
+#include "common/memory.h"
 
 namespace coolgas {
 
@@ -54,12 +55,25 @@ void check_structure_options(int grid, double peak_fraction, int direct_shells) 
                      std::to_string(direct_shells));
 }
 
-int structure_grid_points(int grid, double L) {
-  if (grid) return grid;
-  const int n = 2 * int(std::floor(L / 2));
-  if (n < 8)
-    throw InputError("box side L = " + format_number(L) + " is too small for coolgas-structure (needs L >= 8, or --grid)");
-  return std::min(n, kMaxGrid);
+double structure_grid_bytes(int n, Geometry g) {
+  const double rows = double(g.along(1, n)) * double(g.along(2, n));  // rows along x: n^(d-1)
+  return (double(2 * (n / 2 + 1)) + double(n / 2 + 1)) * rows * sizeof(double);
+}
+
+int structure_grid_points(int grid, double L, Geometry g, double memory_bytes) {
+  int n = grid;
+  if (!n) {
+    // Compared as a double: a box of 1e300 makes no int.
+    if (!(L >= 8)) throw InputError("box side L = " + format_number(L) + " is too small for coolgas-structure (needs L >= 8, or --grid)");
+    n = L >= kMaxGrid ? kMaxGrid : 2 * int(std::floor(L / 2));
+  }
+  const double need = structure_grid_bytes(n, g);
+  if (need <= memory_bytes) return n;
+  int fits = n;
+  while (fits >= 8 && structure_grid_bytes(fits, g) > memory_bytes) fits -= 2;
+  throw InputError("--grid " + std::to_string(n) + (grid ? "" : " (the default for L = " + format_number(L) + ")") +
+                   " would need " + bytes_text(need) + " for its density grid; the memory available is " +
+                   bytes_text(memory_bytes) + ": --grid at most " + (fits >= 8 ? std::to_string(fits) : "none (8 is the least)"));
 }
 
 TableBlock structure_block(StructureTable table, FrameStructure& fs, double t, double L,

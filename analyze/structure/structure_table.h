@@ -19,8 +19,16 @@ const std::vector<std::string>& structure_columns(StructureTable table);
 void check_structure_options(int grid, double peak_fraction, int direct_shells);
 
 // The grid points per side for box side L: `grid`, or when 0 the even number
-// nearest below L (spacing about sigma). InputError if that is below 8.
-int structure_grid_points(int grid, double L);
+// nearest below L (spacing about sigma), at most 1024. InputError if that is
+// below 8, or if the grid's arrays in geometry `g` (structure_grid_bytes)
+// need more than `memory_bytes` (the callers': usable_memory_bytes(),
+// common/memory.h): the line names --grid, the bytes and the largest grid
+// that fits, before anything is allocated.
+int structure_grid_points(int grid, double L, Geometry g, double memory_bytes);
+// The bytes of a FrameStructure of n points per side: the density grid
+// (n + 2 reals per row, FFTW's padding) and the power spectrum of the
+// correlations (n/2 + 1 per row).
+double structure_grid_bytes(int n, Geometry g);
 
 // The rows of one frame at time t in a box of side L, on `fs` (its grid
 // chosen by structure_grid_points): the spectrum's block (its comment the

@@ -7,6 +7,7 @@
 #include "common/trajectory/frame_reader.h"
 #include "common/error.h"
 #include "common/interrupt.h"
+#include "common/memory.h"
 #include "common/tsv.h"
 
 namespace coolgas {
@@ -57,7 +58,7 @@ void run_structure(const StructureOptions& opt, std::ostream& final_out) {
   const std::vector<std::size_t> dumps = traj.dumps_nearest(opt.times, opt.exact_time);
   if (dumps.empty()) throw InputError(opt.input + ": the trajectory holds no dumps");
   const double L = traj.box_side(dumps.front());
-  const int n = structure_grid_points(opt.grid, L);
+  const int n = structure_grid_points(opt.grid, L, traj.geometry(), usable_memory_bytes());
   std::ostringstream os;  // written only when every dump has been read
   TsvWriter out(os, "coolgas-structure", provenance(traj, opt, n, L), structure_columns(opt.table));
   FrameStructure fs(n, traj.geometry());

@@ -3,7 +3,10 @@
 #include <cmath>
 
 #include "common/error.h"
+#include "common/geometry.h"
 #include "common/hdf5_file.h"
+#include "common/limits.h"
+#include "common/memory.h"
 #include "common/trajectory/compact_slots.h"
 #include "common/trajectory/layout.h"
 #include "common/trajectory/widen_rows.h"
@@ -147,6 +150,31 @@ struct Reader {
     return side[0];
   }
 
+  // The particles a frame of the position dataset `value` (of `frames` rows
+  // when it varies) claims, refused beyond 32-bit ids or when the frame's
+  // arrays and `extra` bytes a particle need more than the memory available.
+  // Counted in doubles: a hostile shape's product may overflow.
+  void check_claimed_particles(const std::string& group, const std::string& value, bool varies, int d,
+                               double extra) const {
+    h5::Handle ds = h5::open_dataset(file, value);
+    const auto dims = h5::shape(ds.id());
+    if (dims.size() != (varies ? 3u : 2u)) return;  // misshapen: per_particle names it
+    const double n = double(dims[varies ? 1 : 0]);
+    std::string shape;
+    for (const hsize_t x : dims) shape += (shape.empty() ? "" : ", ") + std::to_string(x);
+    const std::string claims = value + " of shape (" + shape + ") holds " + format_number(n) + " particles";
+    if (n > double(kMaxIndex32)) fail(claims + "; coolgas reads at most 2^31 - 1 (32-bit particle ids)");
+    // Each vector element read in rows of d, then widened to 3; the scalars one number each.
+    double per_particle = 8.0 * (3 + d);
+    if (h5::exists(file, layout::in_group(layout::kVelocity, group))) per_particle += 8.0 * (3 + d);
+    for (const std::string_view scalar : {layout::kMass, layout::kDiameter, layout::kId})
+      if (h5::exists(file, layout::in_group(scalar, group))) per_particle += 8;
+    const double need = n * (per_particle + extra), memory = usable_memory_bytes();
+    if (need > memory)
+      fail(claims + ": " + bytes_text(need) + " to read" + (extra > 0 ? " and use" : "") + " (" +
+           format_number(per_particle + extra) + " B a particle); the memory available is " + bytes_text(memory));
+  }
+
   std::string unit_of(const std::string& element) const {
     const auto [value, varies] = value_path(element);
     h5::Handle ds = h5::open_dataset(file, value);
@@ -162,7 +190,8 @@ std::size_t nearest(const std::vector<double>& times, double t) {
 }
 
 // The frame nearest `time`, or frame `index`, or the last.
-H5mdFrame read_frame(const std::string& path, std::optional<double> time, std::optional<std::size_t> index) {
+H5mdFrame read_frame(const std::string& path, std::optional<double> time, std::optional<std::size_t> index,
+                     double extra_bytes_per_particle) {
   h5::Handle f = h5::open_file(path, h5::Mode::kReadOnly);
   const Reader in{f.id(), path};
   if (!h5::exists(f.id(), std::string(layout::kH5md))) in.fail("not an H5MD file: no /h5md group");
@@ -190,6 +219,7 @@ H5mdFrame read_frame(const std::string& path, std::optional<double> time, std::o
   std::size_t n = 0;
   fr.dimension = in.box_dimension(fr.group);
   const std::size_t d = std::size_t(fr.dimension);
+  in.check_claimed_particles(fr.group, value, varies, fr.dimension, extra_bytes_per_particle);
   fr.position = in.per_particle(position, fr.index, fr.frames, d, &n);
   widen_to_three(fr.position, n, d);
   if (n == 0) in.fail(value + " holds no particles");
@@ -220,8 +250,10 @@ H5mdFrame read_frame(const std::string& path, std::optional<double> time, std::o
 
 }  // namespace
 
-H5mdFrame read_h5md_frame(const std::string& path, std::optional<double> time) { return read_frame(path, time, {}); }
+H5mdFrame read_h5md_frame(const std::string& path, std::optional<double> time, double extra_bytes_per_particle) {
+  return read_frame(path, time, {}, extra_bytes_per_particle);
+}
 
-H5mdFrame read_h5md_frame_at(const std::string& path, std::size_t index) { return read_frame(path, {}, index); }
+H5mdFrame read_h5md_frame_at(const std::string& path, std::size_t index) { return read_frame(path, {}, index, 0); }
 
 }  // namespace coolgas

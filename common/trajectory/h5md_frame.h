@@ -38,8 +38,12 @@ struct H5mdFrame {
 // naming the file and what is wrong: not HDF5, no /h5md or /particles,
 // several groups, a missing or misshapen element (rows of d numbers in a
 // box of dimension d), a box whose edges differ, not periodic, or of a
-// dimension other than 1, 2 or 3.
-H5mdFrame read_h5md_frame(const std::string& path, std::optional<double> time);
+// dimension other than 1, 2 or 3. A frame of more particles than 32-bit ids
+// count (2^31 - 1), or whose arrays, with `extra_bytes_per_particle` that
+// the caller will need for each (a start: its engine's), exceed the memory
+// available (usable_memory_bytes, common/memory.h), is refused naming the
+// position dataset, its shape and the bytes, before anything is read.
+H5mdFrame read_h5md_frame(const std::string& path, std::optional<double> time, double extra_bytes_per_particle = 0);
 // Frame `index` (0-based; InputError naming the frames there are when it is beyond them).
 H5mdFrame read_h5md_frame_at(const std::string& path, std::size_t index);
 

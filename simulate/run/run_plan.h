@@ -32,6 +32,10 @@ inline constexpr double kPilotTime = 100;  // a whole fit window of run_eta.h (t
 // CPU second at most (a pilot of the 3D gas: 0.3 s to t = 100, 0.6 s to 300).
 inline constexpr double kPilotTimeMost = 300;
 inline constexpr double kPilotCollisionsPerParticle = 200;
+// The pilot's equilibration at most, in collision times (the scene's
+// default): enough for an equilibrium fluid; the run's own equilibration is
+// priced analytically (run_plan.cc says why).
+inline constexpr double kPilotEquilibrate = 5;
 inline constexpr double kRequestMargin = 1.5;  // a request's memory and time over the expected
 
 struct RunPlan {
@@ -45,7 +49,8 @@ struct RunPlan {
 };
 
 // The plan of `scene` (not a start from a file, which cannot be scaled down
-// to a pilot: InputError). Looks at `interrupt` while the pilot runs.
+// to a pilot: InputError). Looks at `interrupt` while the pilot runs, its
+// set-up included: Interrupted (exit code 3) within a fraction of a second.
 RunPlan plan_run(const Scene& scene, InterruptFlag interrupt);
 
 // The plan as a header and a line of tab-separated columns: L N mem_GB

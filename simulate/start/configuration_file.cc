@@ -12,6 +12,7 @@
 #include "common/trajectory/h5md_frame.h"
 #include "common/trajectory/layout.h"
 #include "common/trajectory/run_info.h"
+#include "simulate/scene/scene.h"
 
 namespace coolgas {
 
@@ -32,7 +33,9 @@ FileConfiguration from_coolgas(const std::string& path, std::optional<double> ti
 }
 
 FileConfiguration from_h5md(const std::string& path, std::optional<double> time) {
-  H5mdFrame f = read_h5md_frame(path, time);
+  // The frame's particles are refused before reading when they and the
+  // engine they become would not fit (scene.h: the engine's bytes a particle).
+  H5mdFrame f = read_h5md_frame(path, time, kBytesPerParticle);
   return {"H5MD 1.1 (group '" + f.group + "')", f.dimension, f.L, f.time, std::move(f.position), std::move(f.velocity),
           std::move(f.diameter), std::move(f.mass), std::nullopt, f.length_unit};
 }

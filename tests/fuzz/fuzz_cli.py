@@ -14,7 +14,14 @@ run) and runs each:
   overflow  Smoluchowski kernels whose solution overflows: exit code 2, one
             line on stderr, no row of nan or inf on stdout;
   invalid   coolgas-validate on a damaged file: exit code 2, nothing on
-            stderr, problem lines on stdout each naming the file.
+            stderr, problem lines on stdout each naming the file;
+  interrupted  a long loop started with SIGINT or SIGTERM pending (blocked
+            in the child before exec, so the program records it as it
+            starts watching: no timing): exit code 3, one line naming the
+            signal and where the loop stopped, nothing on stdout.
+A refused case may run with its address space limited (ulimit -v), so that
+"the memory available" is the same on every machine; under the sanitizers,
+which reserve terabytes of address space, those cases are left out.
 A refused case that names a file (damaged metadata) must name it in its line.
 Each case has a time limit: a hang is a failure too.
 
@@ -82,8 +89,9 @@ class Corpus:
     def path(self, name):
         return os.path.join(self.work, name)
 
-    def add(self, kind, what, command, stdin=None, watch=None, names=None):
-        self.cases.append({"kind": kind, "what": what, "command": command, "watch": watch, "names": names})
+    def add(self, kind, what, command, stdin=None, watch=None, names=None, signal=None, memory=None):
+        self.cases.append({"kind": kind, "what": what, "command": command, "watch": watch, "names": names,
+                           "signal": signal, "memory": memory})
 
     def scene_file(self, text):
         name = self.path(f"scene{len(self.cases)}.toml")
@@ -340,7 +348,9 @@ class Corpus:
             start(f"xyz count {count}", f"count{k}.xyz", f"{count}\n{box} Time=1\n{lines}")
         for k, t in enumerate(["nan", "inf", "-inf", "-5", "-1e-300", "NaN", "1e309"]):
             start(f"xyz Time={t}", f"time{k}.xyz", f"200\n{box} Time={t}\n{lines}")
-        for k, shape in enumerate([(1, 10**12, 3), (3, 10**11, 3), (1, 2**62, 3)]):
+        # (5, 1e9, 3): 24 GB a frame, within some machines' memory, but with
+        # the engine's 180 B a particle far beyond (issue 52, class 5).
+        for k, shape in enumerate([(1, 10**12, 3), (3, 10**11, 3), (1, 2**62, 3), (5, 10**9, 3)]):
             path = self.path(f"declared{k}.h5")
             with h5py.File(path, "w") as f:
                 f.create_group("h5md")
@@ -364,6 +374,75 @@ class Corpus:
             f["particles/all/box"].attrs["boundary"] = [b"periodic"] * 3
         self.add("refused", "start from H5MD of 2 frames and 7 times", self.start_command(scene, path),
                  names="7 times for 2 frames")
+
+    # Issue 52, classes 4 and 5: input or requests without bound. Every table
+    # reader stops at 1 MiB a line (a device of no newlines read for ever); a
+    # Smoluchowski start beyond the cut-off is refused before the vector of
+    # masses grows to it; --M, a structure grid beyond the memory available
+    # (3 GB of address space) are refused naming the option and the limit.
+    def unbounded(self, run):
+        p = self.prog
+        line = "a line longer than 1048576 bytes"
+        for what, cmd in [("coolgas-fit --power /dev/zero", f"{p('coolgas-fit')} --power /dev/zero"),
+                          ("coolgas-fit --local-slope - < /dev/zero", f"{p('coolgas-fit')} --local-slope - < /dev/zero"),
+                          ("coolgas-collapse /dev/zero", f"{p('coolgas-collapse')} /dev/zero"),
+                          ("coolgas-collapse --optimize - < /dev/zero", f"{p('coolgas-collapse')} --optimize - < /dev/zero"),
+                          ("coolgas-smoluchowski --initial /dev/zero",
+                           f"{p('coolgas-smoluchowski')} --initial /dev/zero --t-end 1"),
+                          ("coolgas-smoluchowski --initial - < /dev/zero",
+                           f"{p('coolgas-smoluchowski')} --initial - --t-end 1 < /dev/zero")]:
+            self.add("refused", what, cmd, names=line)
+        # One line of 1 MiB + 1 that is a column line, a comment, a row.
+        for k, text in enumerate(["t\tE\n" + "1\t" * 600000 + "\n", "#" * (2**20 + 1) + "\n",
+                                  "t\tE\n1\t2\n" + "9" * (2**20 + 1) + "\n"]):
+            path = self.path(f"long_line{k}.tsv")
+            with open(path, "w") as f:
+                f.write(text)
+            self.add("refused", f"coolgas-fit --power, a table whose line {k} is 1 MiB long",
+                     f"{p('coolgas-fit')} --power {path}", names="at most 1048576 bytes")
+        smol = p("coolgas-smoluchowski")
+        for k, (columns, row) in enumerate([("m\tN", "1e15\t1"), ("m\tN", "1e300\t1"), ("m\tN", "65\t1"),
+                                            ("m\tdm\tN", "30\t1e12\t1"), ("m\tdm\tN", "1e200\t3\t1"),
+                                            ("m\tN", f"{2**62}\t1")]):
+            path = self.path(f"initial{k}.tsv")
+            with open(path, "w") as f:
+                f.write(f"{columns}\n1{chr(9) + '1' if 'dm' in columns else ''}\t1\n{row}\n")
+            self.add("refused", f"coolgas-smoluchowski --M 64 --initial with {row.split(chr(9))[0]}",
+                     f"{smol} --M 64 --t-end 1 --initial {path}", names="above the cut-off M = 64")
+        limit = 3 * 2**30
+        for method in ["fft", "direct", "geometric"]:
+            for M in ["100000000", "268435456"]:
+                self.add("refused", f"coolgas-smoluchowski --method {method} --M {M} in 3 GB",
+                         f"{smol} --method {method} --grid-ratio 1.0000001 --M {M} --t-end 1", memory=limit,
+                         names=f"cut-off mass --M {M} would need")
+        for grid in ["1024", "900"]:
+            self.add("refused", f"coolgas-structure --grid {grid} in 3 GB",
+                     f"{p('coolgas-structure')} --grid {grid} {run}", memory=limit, names=f"--grid {grid} would need")
+
+    # Long loops stopped by a signal pending from the start (issue 52, class
+    # 4): the pilot of --estimate equilibrating for 1e7 collision times (once
+    # "internal error", exit 1), a Smoluchowski kernel table, a table read.
+    def interrupted(self):
+        p = self.prog
+        scene = self.scene_file(toml({**BASE, "system.N": "20000", "system.equilibrate": "1e7", "run.t_end": "1e3"}))
+        rows = self.path("rows.tsv")
+        with open(rows, "w") as f:
+            f.write("t\tE\n# L: 16\n" + "".join(f"{1 + i}\t{(1 + i) ** -1.2}\n" for i in range(20000)))
+        counts = self.path("counts.tsv")
+        with open(counts, "w") as f:
+            f.write("m\tN\n" + "".join(f"{1 + i}\t1\n" for i in range(10000)))
+        for sig in ["INT", "TERM"]:
+            self.add("interrupted", f"--estimate, equilibrate = 1e7, SIG{sig}",
+                     [p("coolgas-simulate"), "--estimate", scene], signal=sig,
+                     names="in the set-up of the pilot run of --estimate")
+            self.add("interrupted", f"coolgas-smoluchowski --M 2e6, SIG{sig}",
+                     [p("coolgas-smoluchowski"), "--M", "2000000", "--t-end", "1"], signal=sig,
+                     names="while tabulating the kernel")
+            self.add("interrupted", f"coolgas-collapse of 20000 rows, SIG{sig}", [p("coolgas-collapse"), rows],
+                     signal=sig, names="while reading")
+            self.add("interrupted", f"coolgas-smoluchowski --initial of 10000 rows, SIG{sig}",
+                     [p("coolgas-smoluchowski"), "--M", "20000", "--t-end", "1", "--initial", counts],
+                     signal=sig, names="while reading")
 
     def start_command(self, scene, path):
         out = self.path(f"out{len(self.cases)}.h5")
@@ -574,15 +653,46 @@ class Corpus:
             self.add("pipe", f"{tool} | head -c 1", cmd + " | head -c 1 > /dev/null")
 
 
+def pending(signal_name):
+    """A child's set-up before exec: the signal blocked and sent, so that it
+    is pending when the program starts (exec keeps both) and is recorded as
+    the program starts watching for it (common/interrupt.h)."""
+    import signal
+    number = getattr(signal, "SIG" + signal_name)
+
+    def set_up():
+        signal.pthread_sigmask(signal.SIG_BLOCK, [number])
+        os.kill(os.getpid(), number)
+    return set_up
+
+
+def limited(memory):
+    """A child's set-up before exec: its address space limited to `memory` bytes."""
+    def set_up():
+        import resource
+        resource.setrlimit(resource.RLIMIT_AS, (memory, memory))
+    return set_up
+
+
 def run_case(case, work):
     before = sorted(os.listdir(work))
     digest = None
     if case["watch"] and os.path.exists(case["watch"]):
         digest = hashlib.sha256(open(case["watch"], "rb").read()).hexdigest()
-    try:
-        r = subprocess.run(["/bin/sh", "-c", case["command"]], cwd=work, capture_output=True, timeout=TIMEOUT_S)
-    except subprocess.TimeoutExpired:
-        return f"no answer within {TIMEOUT_S} s"
+    command = case["command"] if isinstance(case["command"], list) else ["/bin/sh", "-c", case["command"]]
+    set_up = pending(case["signal"]) if case["signal"] else limited(case["memory"]) if case["memory"] else None
+    # A session of its own, killed whole at the time limit: a program that
+    # hangs (a regression reading /dev/zero for ever) must not live on as an
+    # orphan of its shell, growing until the machine's out-of-memory killer.
+    with subprocess.Popen(command, cwd=work, stdout=subprocess.PIPE, stderr=subprocess.PIPE, preexec_fn=set_up,
+                          start_new_session=True) as child:
+        try:
+            out, err = child.communicate(timeout=TIMEOUT_S)
+        except subprocess.TimeoutExpired:
+            os.killpg(child.pid, 9)
+            child.communicate()
+            return f"no answer within {TIMEOUT_S} s"
+    r = subprocess.CompletedProcess(command, child.returncode, out, err)
     err = r.stderr.decode("utf-8", "replace")
     lines = err.count("\n") + (1 if err and not err.endswith("\n") else 0)
     kind = case["kind"]
@@ -634,6 +744,13 @@ def run_case(case, work):
     elif kind == "pipe":
         if err:
             return "stderr not empty: " + err[:300]
+    elif kind == "interrupted":
+        if r.returncode != 3 or lines != 1:
+            return f"exit code {r.returncode} and {lines} lines on stderr, expected 3 and 1: {err[:300]}"
+        if f"interrupted by SIG{case['signal']}" not in err or case["names"] not in err:
+            return f"expected one line naming SIG{case['signal']} and {case['names']!r}: {err[:300]}"
+        if r.stdout:
+            return "stdout not empty: " + r.stdout[:200].decode("utf-8", "replace")
     return None
 
 
@@ -665,6 +782,12 @@ def main():
     corpus.overflowing_kernels()
     corpus.long_names()
     corpus.outputs(run, table)
+    corpus.unbounded(run)
+    corpus.interrupted()
+    # Sanitized programs reserve terabytes of address space: no case runs
+    # them within a limit of it.
+    if b"__asan_init" in open(corpus.prog("coolgas-smoluchowski"), "rb").read():
+        corpus.cases = [c for c in corpus.cases if not c["memory"]]
     # COOLGAS_FUZZ_STRIDE=k keeps every k-th refused case (and every case of the
     # other kinds): the sanitizer lane of .ci/run, where each of these ~600
     # processes costs 0.2 s of start-up, runs half the corpus; the first lane

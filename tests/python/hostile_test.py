@@ -74,13 +74,17 @@ def kernel_cases():
     return cases
 
 
-def run_child(code):
-    """Runs code after SETUP in a child python; returns (exit code, last stdout line, stderr)."""
+def run_child(code, memory=None):
+    """Runs code after SETUP in a child python (its address space limited to
+    `memory` bytes when given); returns (exit code, last stdout line, stderr)."""
     wrapped = SETUP + "try:\n    " + code.replace("\n", "\n    ") + "\n    print('RETURNED')\n" + \
         "except coolgas.InputError as e:\n    print('InputError: ' + str(e))\n" + \
         "except Exception as e:\n    print(type(e).__name__ + ': ' + str(e))\n"
+    def limit():
+        import resource
+        resource.setrlimit(resource.RLIMIT_AS, (memory, memory))
     r = subprocess.run([sys.executable, "-c", wrapped], capture_output=True, text=True, timeout=120,
-                       env=dict(os.environ))
+                       env=dict(os.environ), preexec_fn=limit if memory else None)
     lines = r.stdout.strip().splitlines()
     return r.returncode, lines[-1] if lines else "", r.stderr
 
@@ -136,3 +140,27 @@ def test_a_damaged_file_is_refused_naming_it(gas, tmp_path):
         assert code == 0, f"{what}: the interpreter died (exit {code}): {err[-300:]}"
         assert line.startswith("InputError: ") and os.path.basename(path) in line, f"{what}: {line}"
         assert "dimension" in line or "damaged" in line, f"{what}: {line}"
+
+
+# Issue 52, class 5: giant requests once ended in MemoryError (or the
+# kernel's out-of-memory killer). Each is refused in one line before
+# anything is allocated, naming the option and the limit; the child's address
+# space is limited to 3 GB (ulimit -v), so the memory available is the same
+# on every machine (common/memory.h, usable_memory_bytes).
+GIANT = [
+    ("structure of a box of 3e4", "coolgas.structure(P, 3e4)",
+     "--grid 1024 (the default for L = 30000) would need 12.9 GB"),
+    ("structure on a grid of 1024", "coolgas.structure(P, 10.0, grid=1024)", "--grid at most"),
+    ("smoluchowski M = 1e8", "coolgas.smoluchowski(kernel='ballistic', M=10**8, t_end=1)",
+     "cut-off mass --M 100000000 would need"),
+    ("smoluchowski from a mass of 1e15", "import pandas as pd; coolgas.smoluchowski(kernel='constant', t_end=1, "
+     "initial=pd.DataFrame({'m': [1, 1e15], 'N': [10, 5]}))", "holds mass 1e+15 above the cut-off M = 16384"),
+]
+
+
+@pytest.mark.parametrize("what,code,named", GIANT, ids=[c[0] for c in GIANT])
+def test_a_giant_request_is_refused_before_allocating(what, code, named):
+    code_, line, err = run_child(code, memory=3 * 2**30)
+    assert code_ == 0, f"the interpreter died (exit {code_}): {err[-300:]}"
+    assert line.startswith("InputError: "), line
+    assert named in line and "\n" not in line and len(line) < 260, line

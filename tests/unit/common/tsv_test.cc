@@ -3,8 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <limits>
 #include <sstream>
+#include <streambuf>
 
 #include "common/error.h"
 
@@ -94,6 +96,79 @@ TEST(Tsv, MissingColumnNamesTheAvailableOnes) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("t, E"), std::string::npos);
   }
+}
+
+// The one error line of reading `text` with `limits`.
+std::string refusal(const std::string& text, const TableLimits& limits = {}) {
+  std::istringstream in(text);
+  try {
+    read_table(in, "mem", limits);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(read)";
+}
+
+// An endless stream of one byte, as /dev/zero is: counts what is read.
+class Endless : public std::streambuf {
+ public:
+  explicit Endless(char c) { std::fill(std::begin(buf_), std::end(buf_), c); }
+  std::size_t read = 0;
+
+ protected:
+  int_type underflow() override {
+    read += sizeof buf_;
+    setg(buf_, buf_, buf_ + sizeof buf_);
+    return traits_type::to_int_type(buf_[0]);
+  }
+
+ private:
+  char buf_[4096];
+};
+
+// Issue 52, class 4: an endless line (/dev/zero) grew the reader past a
+// gigabyte; it is refused at the bound, having read little more than it.
+TEST(TsvBounds, AnEndlessLineIsRefusedAtOneMebibyte) {
+  for (char c : {'\0', 'x', '1', '#'}) {
+    Endless zero(c);
+    std::istream in(&zero);
+    try {
+      read_table(in, "/dev/zero");
+      FAIL();
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()),
+                "/dev/zero:1: a line longer than 1048576 bytes; a table's lines are at most 1048576 bytes");
+    }
+    EXPECT_LE(zero.read, (std::size_t(1) << 20) + 8192);
+  }
+}
+
+TEST(TsvBounds, LinesUpToTheBoundAreReadAndLongerOnesRefusedNamingTheLine) {
+  const TableLimits limits{.line_bytes = 16};
+  const std::string fits = "1234567890123456";  // 16 bytes
+  std::istringstream in("a\n" + fits + "\n");
+  EXPECT_EQ(read_table(in, "mem", limits).rows.size(), 1u);
+  EXPECT_EQ(refusal("a\n1\n" + fits + "7\n", limits),
+            "mem:3: a line longer than 16 bytes; a table's lines are at most 16 bytes");
+  EXPECT_EQ(refusal("# " + fits + "\na\n1\n", limits),
+            "mem:1: a line longer than 16 bytes; a table's lines are at most 16 bytes");
+}
+
+TEST(TsvBounds, RowsAndNumbersBeyondTheirBoundsAreRefused) {
+  std::string rows = "a\tb\n";
+  for (int i = 0; i < 5; ++i) rows += "1\t2\n";
+  std::istringstream in(rows);
+  EXPECT_EQ(read_table(in, "mem", {.rows = 5}).rows.size(), 5u);
+  EXPECT_EQ(refusal(rows + "1\t2\n", {.rows = 5}), "mem:7: more than 5 rows; a table holds at most 5 rows");
+  EXPECT_EQ(refusal(rows, {.numbers = 9}),
+            "mem:6: more than 9 numbers (5 rows of 2 columns); a table holds at most 9 numbers");
+}
+
+TEST(TsvBounds, TheDefaultsAreTheStatedOnes) {
+  const TableLimits d;
+  EXPECT_EQ(d.line_bytes, 1048576u);
+  EXPECT_EQ(d.rows, 10000000u);
+  EXPECT_EQ(d.numbers, 100000000u);
 }
 
 }  // namespace

@@ -16,7 +16,7 @@ inline Solution run(const std::string& kernel, Method method, std::int64_t M, do
   mo.method = method;
   mo.M = M;
   mo.grid_ratio = ratio;
-  return solve(parse_kernel(kernel), mo, {rtol, atol, stepper}, initial_masses("mono"), t);
+  return solve(parse_kernel(kernel), mo, {rtol, atol, stepper}, initial_masses("mono", mo.M), t);
 }
 
 inline double peak(const std::vector<double>& c) { return *std::max_element(c.begin(), c.end()); }

@@ -4,7 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <csignal>
+#include <string>
+
 #include "common/error.h"
+#include "common/interrupt.h"
+#include "simulate/run/models.h"
+#include "simulate/run/run_costs.h"
 #include "simulate/run/engine_factory.h"
 #include "simulate/run/time_grid.h"
 #include "simulate/start/initial_state.h"
@@ -54,6 +60,45 @@ TEST(RunPlan, AggregationMergesAtMostNMinusOneTimes) {
   const RunPlan plan = plan_run(s, nullptr);
   EXPECT_LE(plan.collisions, double(s.N - 1));
   EXPECT_GT(plan.collisions, 0.9 * double(s.N));  // mean field: N (1 + t/tau)^-6/5 left, tau of order 1
+}
+
+// Issue 52, class 4: system.equilibrate = 1e7 was simulated whole by the
+// pilot (5e10 collisions of its 10^4 particles). The pilot equilibrates for
+// kPilotEquilibrate collision times at most, so its collisions are those of
+// the same scene at the default 5; the run's equilibration is in the CPU
+// time, analytically (equilibrate x N / 2 collisions at the run's rate).
+TEST(RunPlan, ALongEquilibrationIsPricedNotSimulatedByThePilot) {
+  Scene s = test::inelastic_scene(40000, 0.208, 0.1, 1e-4, 5);
+  s.t_end = 1000;
+  ASSERT_EQ(s.equilibrate, kPilotEquilibrate);
+  const RunPlan usual = plan_run(s, nullptr);
+  s.equilibrate = 1e7;
+  const RunPlan plan = plan_run(s, nullptr);
+  EXPECT_EQ(plan.collisions, usual.collisions);
+  const ModelCosts& costs = *model_row(s.model).costs;
+  EXPECT_EQ(plan.cpu_seconds, costs.cpu_seconds(s, plan.collisions));
+  Scene short_one = s;
+  short_one.equilibrate = kPilotEquilibrate;
+  EXPECT_NEAR(plan.cpu_seconds - usual.cpu_seconds,
+              costs.cpu_seconds(s, 0) - costs.cpu_seconds(short_one, 0), 1e-9 * plan.cpu_seconds);
+  EXPECT_GT(plan.cpu_seconds, 1e3 * usual.cpu_seconds);  // 2e11 collisions against 1e8
+}
+
+// A signal during the pilot's set-up (placement, equilibration) is the
+// normal interrupted stop (exit code 3), never "internal error".
+TEST(RunPlan, APilotInterruptedInItsSetUpThrowsInterrupted) {
+  Scene s = test::inelastic_scene(40000, 0.208, 0.1, 1e-4, 5);
+  s.equilibrate = 1e7;
+  s.t_end = 1000;
+  const volatile std::sig_atomic_t flag = SIGINT;
+  try {
+    plan_run(s, &flag);
+    FAIL() << "not interrupted";
+  } catch (const Interrupted& e) {
+    EXPECT_EQ(e.signal, SIGINT);
+    EXPECT_EQ(std::string(e.what()),
+              "interrupted by SIGINT in the set-up of the pilot run of --estimate; nothing written");
+  }
 }
 
 TEST(RunPlan, AStartFromAFileIsRefused) {
