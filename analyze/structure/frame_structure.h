@@ -17,7 +17,6 @@ class FrameStructure {
  public:
   FrameStructure(int n, Geometry g) : grid_(n, g) {}
   int n() const { return grid_.n(); }
-  int dimension() const { return grid_.dimension(); }
   Geometry geometry() const { return grid_.geometry(); }
 
   // S(k) shells of the points (weights: one per point, empty = 1 each).
