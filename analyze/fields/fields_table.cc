@@ -1,0 +1,37 @@
+#include "analyze/fields/fields_table.h"
+
+namespace coolgas {
+
+const std::vector<std::string>& fields_columns(bool spectrum) {
+  static const std::vector<std::string> series = {"t",      "cells",  "E",          "E_flow",     "E_thermal",
+                                                  "T",      "E_flow_noise", "E_L", "E_T",   "E_L_noise",
+                                                  "E_T_noise", "density_var", "vorticity2"};
+  static const std::vector<std::string> shells = {"t", "shell", "k", "E_L", "E_T", "modes"};
+  return spectrum ? shells : series;
+}
+
+std::vector<double> fields_row(double t, const CellFields& f, const FieldEnergies& e, const FlowSplit& s) {
+  return {t,
+          double(f.n),
+          e.kinetic,
+          e.flow,
+          e.thermal,
+          e.temperature,
+          e.flow_noise,
+          s.longitudinal,
+          s.transverse,
+          s.longitudinal_noise,
+          s.transverse_noise,
+          e.density_variance,
+          s.vorticity2};
+}
+
+TableBlock spectrum_block(double t, const FlowSplit& s) {
+  TableBlock b;
+  b.comment = "t = " + format_number(t);
+  for (const FlowShell& sh : s.shells)
+    if (sh.modes > 0) b.rows.push_back({t, double(sh.shell), sh.k, sh.longitudinal, sh.transverse, double(sh.modes)});
+  return b;
+}
+
+}  // namespace coolgas
