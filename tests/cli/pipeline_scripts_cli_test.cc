@@ -151,6 +151,19 @@ TEST(ReadmeTable, AReadmeWithoutTheMarkersIsOneErrorLineAndStaysAsItWas) {
   EXPECT_EQ(read_text(readme), text);
 }
 
+// A table made by a build with uncommitted changes is refused, and the
+// document stays as it was: a documented number names a commit one can check out.
+TEST(ReadmeTable, ATableOfADirtyBuildIsRefused) {
+  const std::string dir = test::scratch_dir("pipeline_scripts");
+  const std::string text = "# Title\n<!-- exponents:begin -->\nold\n<!-- exponents:end -->\n";
+  const std::string readme = test::write_file(dir, "README.md", text);
+  const std::string table = test::write_file(
+      dir, "exponents.md", "SCALE = demo: runs by coolgas 0.1.0 (3f4624314535-dirty), analysed by coolgas 0.1.0 (5c803799f278) on 2026-12-06.\n");
+  test::expect_one_error_line(run_command("sh " + source("pipelines/readme-table.sh") + " " + table + " " + readme),
+                              "3f4624314535-dirty");
+  EXPECT_EQ(read_text(readme), text);
+}
+
 // The verdict word pipelines/row-verdict.sh gives one row.
 std::string row_verdict(const std::string& measured, const std::string& error, const std::string& paper,
                         const std::string& paper_error, const std::string& tolerance, const std::string& regime) {
