@@ -133,7 +133,7 @@ row "z, free collapse" 1 "$(fc z)" "$(fc z_err)" 2.5 0 $tol_z "$collapse_regime"
 row "z theta, free collapse" 1 "$(fc z_theta)" "$(fc z_theta_err)" 3 0 $tol_z_theta "$collapse_regime" "mean field: z theta = d"
 # eta from the paper's collapse, whose x = t/L^z reaches furthest for the
 # small boxes' late times; the free fit's eta beside it.
-ew=$(pc eta_window) ewlo=$(pc eta_window) ewlo=${ewlo%%:*}
+ew=$(pc eta_window) && ewlo=${ew%%:*}
 if ! is_num "$(pc eta)"; then reg="no: fewer than 3 scaled points lie in x = $ew (the data reach x = $pxhi)"
 elif awk "BEGIN { exit !(${ewlo:-0} >= 1) }"; then reg=yes; else reg="no: the fit window starts at x = ${ewlo:-0} < 1"; fi
 free_eta=$(if is_num "$(fc eta)"; then echo "the free fit gives $(dec3 "$(fc eta)") +- $(dec3 "$(fc eta_err)")"
@@ -213,7 +213,7 @@ f0=$(at_time "$tables/mmax_$snap.tsv" largest_fraction 0)
 # Where the definition percolates at t = 0, the note says so with the
 # share at t = 0 and late in every box of the same gas and at the other
 # densities (tables/largest_share.tsv, pipelines/theta-causes.mk).
-share_verdict() {
+share_cause() {
   st=$tables/largest_share.tsv
   [ -f "$st" ] || return 0
   awk -F '\t' -v phi0="$(value "$tables/mmax_$snap.tsv" phi '#')" '
@@ -233,7 +233,7 @@ share_verdict() {
 note="at t = $late"
 if awk "BEGIN { exit !($f0 > 0.5) }"; then
   reg=$(percolates "$f0")
-  cause=$(share_verdict)
+  cause=$(share_cause)
   [ -z "$cause" ] || note="$note; $cause"
 else reg=$late_regime; fi
 row "largest cluster's share" 3 "$(at_time "$tables/mmax_$snap.tsv" largest_fraction "$late")" - 0.75 - $tol_share "$reg" "$note"
