@@ -21,7 +21,7 @@ BUILD_PACKAGES := cmake make g++ pkg-config git \
   libgtest-dev libcli11-dev libtoml11-dev \
   gnuplot-nox help2man man-db \
   python3 python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pandas
-TEST_PACKAGES := python3-h5py python3-mdanalysis python3-ase python3-matplotlib python3-pytest python3-yaml \
+TEST_PACKAGES := python3-h5py python3-mdanalysis python3-ase python3-matplotlib python3-pytest python3-yaml python3-vtk9 \
   bash-completion \
   jupyter-nbconvert python3-ipykernel
 LINT_PACKAGES := clang-tidy-15
