@@ -66,7 +66,7 @@ checks=""
 check() {
   (
     start=$(date +%s)
-    if "$1" >"$scratch/$1.log" 2>&1; then verdict=ok; else verdict="FAILED: $(tail -n 1 "$scratch/$1.log")"; fi
+    if ("$1") >"$scratch/$1.log" 2>&1; then verdict=ok; else verdict="FAILED: $(tail -n 1 "$scratch/$1.log")"; fi
     echo "$verdict ($(($(date +%s) - start)) s)" >"$scratch/$1.verdict"
   ) &
   checks="$checks $!"
@@ -75,7 +75,8 @@ fail() { echo "$*"; exit 1; }
 
 # The same tiny pipeline without Slurm, the reference.
 reference() {
-  make -s -C "$root/pipelines/paper" -j2 $tiny OUT="$scratch/reference" || fail "the pipeline without Slurm failed"
+  make -s -C "$root/pipelines/paper" -j2 $tiny OUT="$scratch/reference" >"$scratch/reference.make.log" 2>&1 ||
+    fail "the pipeline without Slurm failed: $(tail -n 3 "$scratch/reference.make.log")"
   echo "the tiny pipeline without Slurm, made"
 }
 
@@ -109,9 +110,20 @@ time_limit() {
     fail "no run wrote its checkpoint on the time limit's SIGTERM: $(tail -n 5 "$out/first.log")"
   held=$(grep -c 'fault: holding' "$out/first.log")
   stopped=$(grep -c 'interrupted by SIGTERM.*checkpoint written' "$out/first.log")
-  echo "first job: TIMEOUT; $held runs held, $stopped stopped by SIGTERM with a checkpoint"
+  ran=$(scontrol show job "$first" | sed -n 's/.*RunTime=\([^ ]*\).*/\1/p')
+  echo "first job: TIMEOUT after $ran (--time=1); $held runs held, $stopped stopped by SIGTERM with a checkpoint"
+  # The runs it stopped, each a .part with its checkpoint, and the file's inode.
+  for part in "$out"/runs/*.h5.part; do
+    [ -f "$part.checkpoint" ] || fail "${part##*/} has no checkpoint"
+    echo "${part%.part} $(stat -c %i "$part")"
+  done >"$out/stopped.txt"
+  [ -s "$out/stopped.txt" ] || fail "the first job left no stopped run"
   state=$(slurm_cluster_wait_job "$again" 300)
   [ "$state" = COMPLETED ] || fail "the second job ended $state: $(tail -n 3 "$out/again.log")"
+  while read -r run inode; do
+    [ "$(stat -c %i "$run")" = "$inode" ] || fail "${run##*/} was begun again, not resumed (a new file)"
+  done <"$out/stopped.txt"
+  echo "second job: $(wc -l <"$out/stopped.txt") stopped runs resumed in their files, the rest made"
   same_as_reference "$out"
 }
 
@@ -222,7 +234,7 @@ for name in reference time_limit killed_step per_run chains; do
   verdict=$(cat "$scratch/$name.verdict" 2>/dev/null || echo "FAILED: no verdict")
   echo "$name: $verdict"
   case $verdict in
-    ok*) grep . "$scratch/$name.log" | tail -n 2 | sed 's/^/  /' ;;
+    ok*) grep . "$scratch/$name.log" | sed 's/^/  /' ;;
     *) status=1; tail -n 20 "$scratch/$name.log" | sed 's/^/  /' ;;
   esac
 done
