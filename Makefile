@@ -14,8 +14,8 @@ CMAKE_FLAGS = -DCMAKE_BUILD_TYPE=Release $(if $(filter 1,$(NATIVE)),-DCOOLGAS_NA
 # Python package's build and its numpy/pandas), which
 # `make demo` installs; what only the tests need (Python readers that
 # check real clients open our files, pytest, the notebook's runner, a Slurm
-# cluster to run pipelines/cluster/ on), which `make test` adds; and clang-tidy, which only `make lint` adds. All
-# without recommended packages.
+# cluster to run pipelines/cluster/ on), which `make test` adds; and
+# clang-tidy, which only `make lint` adds. All without recommended packages.
 BUILD_PACKAGES := cmake make g++ pkg-config git \
   libhdf5-dev hdf5-tools libfftw3-dev libgsl-dev libeigen3-dev \
   libgtest-dev libcli11-dev libtoml11-dev \

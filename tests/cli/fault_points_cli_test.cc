@@ -188,7 +188,7 @@ TEST_F(FaultPoints, ARunHeldAtAPointWaitsForASignalThenFinishesExactly) {
   const std::int64_t k = std::max<std::int64_t>(1, collisions_ / 5);
   const std::string held = "COOLGAS_CHECKPOINT_INTERVAL=0 " + test::fault("events:" + std::to_string(k) + ":WAIT") +
                            fresh(out) + " 2>" + err + " & pid=$!; "
-                           "while kill -0 $pid 2>/dev/null && ! grep -q 'fault: holding' " + err + "; do sleep 0.05; done; "
+                           "while kill -0 $pid 2>/dev/null && ! grep -qs 'fault: holding' " + err + "; do sleep 0.05; done; "
                            "kill -TERM $pid; wait $pid";
   const auto r = run_command(held);
   const std::string said = test::read_text(err);
