@@ -113,8 +113,12 @@ EOF
   echo $! >"$d/slurmctld.pid"
   slurmd -D -f "$d/slurm.conf" -N coolgasnode >"$d/log/slurmd.out" 2>&1 &
   echo $! >"$d/slurmd.pid"
-  slurm_cluster_until 60 slurm_cluster_idle ||
-    { slurm_cluster_why="the node did not come up: slurmctld: $(slurm_cluster_last "$d/log/slurmctld.log"); slurmd: $(slurm_cluster_last "$d/log/slurmd.log")"; return 1; }
+  slurm_cluster_exited=""
+  slurm_cluster_until 60 slurm_cluster_up || slurm_cluster_exited=${slurm_cluster_exited:-"the node is $(sinfo -h -o %T 2>&1 | head -n 1), not idle, after 60 s: slurmctld: $(slurm_cluster_last slurmctld); slurmd: $(slurm_cluster_last slurmd)"}
+  if [ -n "$slurm_cluster_exited" ]; then
+    slurm_cluster_why=$slurm_cluster_exited
+    return 1
+  fi
   # A step on the node (srun and slurmd reach each other), bounded by its own time limit.
   if ! srun --time=1 --mem=16 true >"$d/log/srun.out" 2>&1; then
     slurm_cluster_why="a one-task step failed: $(tail -n 1 "$d/log/srun.out")"
@@ -122,11 +126,24 @@ EOF
   fi
 }
 
-slurm_cluster_idle() { [ "$(sinfo -h -o %T 2>/dev/null)" = idle ]; }
+# Whether the node is idle (0), or a daemon has exited (0 too, the reason in
+# slurm_cluster_exited): the wait for it ends either way.
+slurm_cluster_up() {
+  for daemon in slurmctld slurmd; do
+    if ! kill -0 "$(cat "$slurm_cluster_dir/$daemon.pid")" 2>/dev/null; then
+      slurm_cluster_exited="$daemon exited: $(slurm_cluster_last "$daemon")"
+      return 0
+    fi
+  done
+  [ "$(sinfo -h -o %T 2>/dev/null)" = idle ]
+}
 
-# The last error line of a log, else its last line.
+# A daemon's last fatal line, else its last error that is not one of a first
+# start's (no state files yet, no PMIx library), else its last line.
 slurm_cluster_last() {
-  grep -i 'error\|fatal' "$1" 2>/dev/null | tail -n 1 | grep . || tail -n 1 "$1" 2>/dev/null
+  logs="$slurm_cluster_dir/log/$1.out $slurm_cluster_dir/log/$1.log"
+  # shellcheck disable=SC2086 # two file names
+  { grep -h 'fatal' $logs || grep -h -i 'error' $logs | grep -v -i 'state\|pmix\|mpi' || cat $logs; } 2>/dev/null | tail -n 1
 }
 
 # slurm_cluster_until SECONDS COMMAND...: runs COMMAND every half second
