@@ -42,8 +42,8 @@ trap 'exit 1' INT TERM HUP
 slurm_cluster_start "$scratch/cluster" || skip "no Slurm cluster: $slurm_cluster_why"
 echo "cluster up in $(($(date +%s) - started)) s (its files: $slurm_cluster_dir)"
 
-# Every run a fault holds stops after this many events of its process: all
-# the tiny runs have more, and none is past its first dumps there.
+# The fault that holds a run once its process has made this many events
+# (early in a tiny run); a run with fewer simply finishes, as without it.
 hold=events:1000:WAIT
 tiny="SCALE=tiny BIN=$bin"
 # sbatch [VARIABLE=VALUE...] OPTIONS... from the repository root, as the
