@@ -173,7 +173,7 @@ endif
 
 # ---------------------------------------------------------------- figures
 FIGURES := $(OUT)/fig1_energy_size.png $(OUT)/fig2_energy_parameters.png $(OUT)/fig3_clusters.png \
-           $(OUT)/fig4_largest_mass.png $(OUT)/fig5_velocity.png $(OUT)/smoluchowski.png $(OUT)/structure.png
+           $(OUT)/fig4_largest_mass.png $(OUT)/fig5_velocity.png $(OUT)/smoluchowski.png $(OUT)/structure.png $(OUT)/fields.png
 RESULTS := $(FIGURES) $(OUT)/exponents.tsv $(OUT)/robustness.tsv $(OUT)/exponents.md
 
 # No recipes here, so that 'make -q' after a finished run exits 0. The longest
@@ -418,6 +418,10 @@ ifneq ($(BA),1)
 STRUCTURE_BA :=
 endif
 include $(PIPE)structure.mk
+
+# ---- The flow fields: vortices, then clusters (pipelines/fields.mk; the scale
+# file may set FIELDS_RUN, FIELDS_TIMES, FIELDS_CELL).
+include $(PIPE)fields.mk
 
 # ---- The measured exponents, one row (exponents.tsv) and against the paper (exponents.md)
 EXPONENT_INPUTS := $(TABLES)/collapse.tsv $(TABLES)/collapse_z_theta.tsv $(TABLES)/fit_size_Lmax.tsv $(TABLES)/fit_nm_gas.tsv \

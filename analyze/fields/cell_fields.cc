@@ -18,7 +18,33 @@ int cell_along(double x, double L, int n) {
   return std::min(n - 1, int(w / L * n));
 }
 
+// Cell c's neighbour one step along axis a (periodic), `step` = +1 or -1.
+std::int64_t neighbour(const CellFields& f, std::int64_t c, int a, int step) {
+  std::int64_t stride = 1;
+  for (int b = 0; b < a; ++b) stride *= f.n;
+  const int i = int((c / stride) % f.n), j = (i + step + f.n) % f.n;
+  return c + (j - i) * stride;
+}
+
+// d u_b / d x_a at cell c, central differences; 0 along an axis beyond d.
+double derivative(const CellFields& f, std::int64_t c, int a, int b) {
+  if (a >= f.g.d()) return 0;
+  return (f.flow(neighbour(f, c, a, 1), b) - f.flow(neighbour(f, c, a, -1), b)) / (2 * f.cell_side());
+}
+
 }  // namespace
+
+double cell_temperature(const CellFields& f, std::int64_t c) {
+  if (f.count[c] < 2) return 0;
+  double flow2 = 0;  // |p_c|^2 / M_c
+  for (int a = 0; a < 3; ++a) flow2 += f.flow(c, a) * f.momentum[3 * c + a];
+  return 2 * (f.kinetic[c] - flow2 / 2) / (f.g.d() * (f.count[c] - 1));
+}
+
+std::array<double, 3> cell_vorticity(const CellFields& f, std::int64_t c) {
+  return {derivative(f, c, 1, 2) - derivative(f, c, 2, 1), derivative(f, c, 2, 0) - derivative(f, c, 0, 2),
+          derivative(f, c, 0, 1) - derivative(f, c, 1, 0)};
+}
 
 CellFields cell_fields(int n, Geometry g, double L, std::span<const double> positions,
                        std::span<const double> velocities, std::span<const double> masses) {

@@ -4,6 +4,7 @@
 // further smoothing). Velocities are taken relative to the centre of mass,
 // so a uniform translation of the whole gas has no flow at all.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -29,6 +30,14 @@ struct CellFields {
   // Flow velocity of cell c, component a: momentum / mass (0 in an empty cell).
   double flow(std::int64_t c, int a) const { return mass[c] > 0 ? momentum[3 * c + a] / mass[c] : 0; }
 };
+
+// Cell c's granular temperature, 2 (K_c - |p_c|^2 / 2 M_c) / (d (n_c - 1)),
+// for n_c >= 2, else 0.
+double cell_temperature(const CellFields& f, std::int64_t c);
+// Cell c's vorticity, the curl of the flow velocity by central differences
+// over the neighbouring cells (periodic): 3 components, those that need an
+// axis beyond d zero (2D: only z; 1D: none).
+std::array<double, 3> cell_vorticity(const CellFields& f, std::int64_t c);
 
 // Positions and velocities x0 y0 z0 x1 ...; masses one per particle (empty:
 // 1 each). Positions are wrapped into the box first.

@@ -29,12 +29,15 @@ int main(int argc, char** argv) {
         "  vorticity2 [omega0^2] mean |curl u|^2 over the cells, u = j cells/M.\n"
         "With --spectrum, one block per dump: t; shell [2 pi/L] (|k| L/2pi rounded); k [1/sigma] mean |k|;\n"
         "  E_L, E_T the shell's share of the energies; modes [1] (k and -k apart).\n"
+        "With --slab, one block per dump: t; x, y [sigma] cell centres of the middle plane of cells (2D: the plane);\n"
+        "  density [sigma^-d]; vorticity [omega0] its component normal to the plane (central differences).\n"
         "With --vti DIR, also DIR/fields_<dump>.vti per dump (VTK ImageData: density, velocity, temperature,\n"
         "  vorticity per cell; opens in ParaView and VisIt)."};
     app.add_option("trajectory", opt.input, "trajectory file (H5MD, written by coolgas-simulate)")->required();
     app.add_option("--cell", opt.cell, "cell side wanted [sigma], >= 1; the grid takes the even n nearest below L/cell")
         ->capture_default_str();
     app.add_flag("--spectrum", opt.spectrum, "blocks of E_L(k) and E_T(k) per dump instead of one row per dump");
+    app.add_flag("--slab", opt.slab, "blocks of the middle plane's cells (density, vorticity) per dump, for pictures");
     app.add_option("--vti", opt.vti, "directory (existing) for one VTK ImageData file per dump");
     coolgas::add_dump_selection(app, opt.times, opt.exact_time, "analyse only the dump nearest this time");
     if (coolgas::parse_command_line(app, argc, argv)) return 0;

@@ -33,7 +33,11 @@ namespace {
 
 Provenance provenance(const Trajectory& traj, const FieldsOptions& o, int n, double L) {
   Provenance p = traj.provenance();
-  p.emplace_back("table", o.spectrum ? "flow spectrum" : "flow energies");
+  p.emplace_back("table", o.spectrum ? "flow spectrum" : o.slab ? "slab" : "flow energies");
+  if (o.slab) p.emplace_back("slab", traj.geometry().d() == 3 ? "the cells of plane iz = n/2, z from " +
+                                                                  format_number(n / 2 * L / n) + " to " +
+                                                                  format_number((n / 2 + 1) * L / n) + " sigma"
+                                                            : "the cells of the plane");
   p.emplace_back("cells", std::to_string(n) + " per side, side " + format_number(L / n) + " sigma");
   p.emplace_back("assignment", "nearest grid point: each particle in the cell holding its centre; no smoothing");
   p.emplace_back("frame", "velocities relative to the centre of mass");
@@ -58,10 +62,13 @@ void run_fields(const FieldsOptions& opt, std::ostream& final_out) {
   if (!opt.vti.empty() && !std::filesystem::is_directory(opt.vti))
     throw InputError("--vti " + opt.vti + " is not a directory; create it first");
   const Geometry g = traj.geometry();
+  if (opt.slab && opt.spectrum) throw InputError("--slab and --spectrum exclude each other: choose one table");
+  if (opt.slab && g.d() == 1) throw InputError("--slab draws a plane of cells; a 1D file (rods) has none");
+  const FieldsTable table = opt.spectrum ? FieldsTable::kSpectrum : opt.slab ? FieldsTable::kSlab : FieldsTable::kSeries;
   const double L = traj.box_side(dumps.front());
   const int n = field_cells(L, opt.cell, g, usable_memory_bytes());
   std::ostringstream os;  // written only when every dump has been read
-  TsvWriter out(os, "coolgas-fields", provenance(traj, opt, n, L), fields_columns(opt.spectrum));
+  TsvWriter out(os, "coolgas-fields", provenance(traj, opt, n, L), fields_columns(table));
   FourierGrid grid(n, g);
   Frame buffer;
   traj.for_each_dump(dumps, buffer, [&](const Frame& frame) {
@@ -69,7 +76,8 @@ void run_fields(const FieldsOptions& opt, std::ostream& final_out) {
     const CellFields f = cell_fields(n, g, frame.L, frame.position, frame.velocity, masses);
     const FieldEnergies e = field_energies(f);
     const FlowSplit s = flow_split(f, e.temperature, grid);
-    if (opt.spectrum) out.write(spectrum_block(frame.time, s));
+    if (table == FieldsTable::kSpectrum) out.write(spectrum_block(frame.time, s));
+    else if (table == FieldsTable::kSlab) out.write(slab_block(frame.time, f));
     else out.row(fields_row(frame.time, f, e, s));
     if (!opt.vti.empty()) write_vti(vti_path(opt.vti, frame.dump), f);
   });

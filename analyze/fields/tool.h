@@ -15,6 +15,7 @@ struct FieldsOptions {
   std::string input;            // trajectory file
   double cell = 4;              // cell side wanted [sigma]; the grid takes the even n nearest below L / cell
   bool spectrum = false;        // blocks of E_L(k), E_T(k) instead of one row per dump
+  bool slab = false;            // blocks of the middle plane's cells instead (2D and 3D)
   std::string vti;              // directory for one .vti file per dump; empty: none
   std::vector<double> times;    // dumps nearest these times; empty = all dumps
   bool exact_time = false;

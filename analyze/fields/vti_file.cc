@@ -22,20 +22,6 @@ struct Array {
   std::vector<double> values;  // cells * components
 };
 
-// Cell c's neighbour one step along axis a (periodic), `step` = +1 or -1.
-std::int64_t neighbour(const CellFields& f, std::int64_t c, int a, int step) {
-  std::int64_t stride = 1;
-  for (int b = 0; b < a; ++b) stride *= f.n;
-  const int i = int((c / stride) % f.n), j = (i + step + f.n) % f.n;
-  return c + (j - i) * stride;
-}
-
-// d u_b / d x_a at cell c, central differences.
-double derivative(const CellFields& f, std::int64_t c, int a, int b) {
-  if (a >= f.g.d()) return 0;
-  return (f.flow(neighbour(f, c, a, 1), b) - f.flow(neighbour(f, c, a, -1), b)) / (2 * f.cell_side());
-}
-
 std::vector<Array> arrays(const CellFields& f) {
   const std::int64_t cells = f.cells();
   const double volume = f.g.power(f.cell_side());
@@ -43,12 +29,9 @@ std::vector<Array> arrays(const CellFields& f) {
       vorticity{"vorticity", 3, {}};
   for (std::int64_t c = 0; c < cells; ++c) {
     density.values.push_back(f.count[c] / volume);
-    double flow2 = 0;
-    for (int a = 0; a < 3; ++a) velocity.values.push_back(f.flow(c, a)), flow2 += f.flow(c, a) * f.momentum[3 * c + a];
-    temperature.values.push_back(f.count[c] >= 2 ? 2 * (f.kinetic[c] - flow2 / 2) / (f.g.d() * (f.count[c] - 1)) : 0);
-    vorticity.values.push_back(derivative(f, c, 1, 2) - derivative(f, c, 2, 1));
-    vorticity.values.push_back(derivative(f, c, 2, 0) - derivative(f, c, 0, 2));
-    vorticity.values.push_back(derivative(f, c, 0, 1) - derivative(f, c, 1, 0));
+    for (int a = 0; a < 3; ++a) velocity.values.push_back(f.flow(c, a));
+    temperature.values.push_back(cell_temperature(f, c));
+    for (double w : cell_vorticity(f, c)) vorticity.values.push_back(w);
   }
   return {density, velocity, temperature, vorticity};
 }

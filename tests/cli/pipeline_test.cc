@@ -134,7 +134,7 @@ constexpr std::size_t kStudiedRows = 4 + 3 + 3 + 1;
 
 const char* kFigures[] = {"fig1_energy_size.png", "fig2_energy_parameters.png", "fig3_clusters.png",
                           "fig4_largest_mass.png", "fig5_velocity.png", "smoluchowski.png",
-                          "structure.png"};
+                          "structure.png", "fields.png"};
 
 TEST(Pipeline, TinyPipelineRunsEndToEndAndIsIncremental) {
   const std::string dir = test::scratch_dir("pipeline");

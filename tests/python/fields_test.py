@@ -89,3 +89,43 @@ def test_bad_options_are_one_line(elastic, tmp_path):
     assert r.returncode == 2 and r.stderr.count("\n") == 1 and "--cell = 0.5" in r.stderr
     r = tool("fields", elastic, "--vti", tmp_path / "missing", check=False)
     assert r.returncode == 2 and "not a directory" in r.stderr
+
+
+# The paper's gas (phi = 0.208, r0 = 0.1, delta = 1e-4) in a box of side 34,
+# ten dumps a decade.
+COOLING = """
+[system]
+L = 34
+phi = 0.208
+seed = 1
+[collision]
+model = "inelastic"
+r0 = 0.1
+delta = 1e-4
+[run]
+t_end = 100
+[output]
+dumps_per_decade = 10
+t_min = 0.1
+"""
+
+
+def first_time(t, ratio, level):
+    above = t[ratio >= level]
+    return above.iloc[0] if len(above) else np.inf
+
+
+def test_vortices_grow_before_clusters(tmp_path):
+    """The transverse (shear) flow rises above its noise level before the
+    density's variance rises as far above its start: vortices, then clusters
+    (Goldhirsch & Zanetti 1993; Brito & Ernst 1998)."""
+    run = simulate_cli(tmp_path, "cooling", COOLING)
+    t = table(run, "--cell", 4)
+    shear = t.E_T / t.E_T_noise
+    density = t.density_var / t.density_var.iloc[0]
+    assert abs(shear.iloc[0] - 1) < 0.2  # the start is at the noise level
+    for level in (2, 3, 5):
+        assert first_time(t.t, shear, level) < first_time(t.t, density, level), level
+    # By the time the shear flow is five times its noise, the density's
+    # variance has not yet grown five-fold.
+    assert density[t.t == first_time(t.t, shear, 5)].iloc[0] < 5

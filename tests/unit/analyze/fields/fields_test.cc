@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "analyze/fields/cell_fields.h"
+#include "analyze/fields/fields_table.h"
 #include "analyze/fields/flow_split.h"
 #include "analyze/fields/tool.h"
 #include "common/error.h"
@@ -137,6 +138,24 @@ TEST(FlowSplit, IndependentVelocitiesSitAtTheNoiseLevels) {
     if (d > 1) EXPECT_NEAR(s.s.transverse / s.s.transverse_noise, 1, tol) << d << "D";
     else EXPECT_EQ(s.s.transverse, 0);
     EXPECT_NEAR(s.e.density_variance, 1, 5 * std::sqrt(2 / cells)) << d << "D";
+  }
+}
+
+// The slab's vorticity of the shear wave is the central difference of
+// -du_x/dy, exactly -U cos(k y) sin(k h)/h at each cell; density one per cell.
+TEST(FieldsSlab, AShearWavesVorticityIsItsCentralDifference) {
+  for (int d : {2, 3}) {
+    const Geometry g(d);
+    const int n = 8;
+    const double L = 16, U = 0.7, k = 2 * kPi / L, h = L / n;
+    const Lattice a = lattice(n, g, L, [&](const double* r) { return std::array<double, 3>{U * std::sin(k * r[1]), 0, 0}; });
+    const TableBlock b = slab_block(3, cell_fields(n, g, L, a.position, a.velocity, {}));
+    ASSERT_EQ(b.rows.size(), std::size_t(n * n));
+    for (const auto& row : b.rows) {
+      EXPECT_EQ(row[0], 3);
+      EXPECT_NEAR(row[3], 1 / g.power(h), 1e-12);
+      EXPECT_NEAR(row[4], -U * std::cos(k * row[2]) * std::sin(k * h) / h, 1e-12) << d << "D y = " << row[2];
+    }
   }
 }
 
