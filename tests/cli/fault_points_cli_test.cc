@@ -4,8 +4,9 @@
 // a file that coolgas-validate accepts (or, before the first dump is in
 // place, none), and the same command again finishes it to the uninterrupted
 // run's file bit for bit. A signal raised at a point runs its handler as a
-// signal from outside would; a malformed COOLGAS_FAULT is refused with one
-// line; a fault the run never reaches changes nothing.
+// signal from outside would; a run that waits at a point and goes on ends as
+// if it had not; a malformed COOLGAS_FAULT is refused with one line; a
+// fault the run never reaches changes nothing.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -177,6 +178,18 @@ TEST_F(FaultPoints, AConversionKilledAtEachPointFinishesExactly) {
                     {test::events_at(0.3, collisions_)}});
 }
 
+// A run that waits at a point (WAIT) and is told to go on (SIGCONT) ends as
+// the uninterrupted run, bit for bit; the file it waits in validates.
+TEST_F(FaultPoints, ARunThatWaitedAtAPointAndWentOnFinishesExactly) {
+  const std::string dir = test::scratch_dir("fault_points_wait");
+  const std::string out = dir + "/run.h5", ready = dir + "/ready";
+  const auto r = run_command(test::when_ready(test::waiting_at("dump-flushed:5", ready) + fresh(out), ready,
+                                              test::bin("coolgas-validate") + " " + out + "; kill -CONT $pid"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find(" 4 frames, "), std::string::npos) << r.out;  // the 5th's completion row not yet written
+  test::expect_same_trajectory(whole(), out);
+}
+
 // A fault the run never reaches changes nothing.
 TEST_F(FaultPoints, AFaultNeverReachedChangesNothing) {
   const std::string out = test::scratch_dir("fault_points_unreached") + "/run.h5";
@@ -189,11 +202,12 @@ TEST(FaultPointsRefused, AMalformedFaultIsOneLineAndNothingIsWritten) {
   const std::string dir = test::scratch_dir("fault_points_refused");
   const std::string scene = test::write_file(dir, "gas.toml", test::kCoolingGasScene), out = dir + "/run.h5";
   for (const auto& [spec, needle] : std::vector<std::pair<std::string, std::string>>{
-           {"nowhere", "COOLGAS_FAULT = 'nowhere': no point named 'nowhere' (POINT[:COUNT][:SIGNAL]"},
+           {"nowhere", "COOLGAS_FAULT = 'nowhere': no point named 'nowhere' (POINT[:COUNT][:ACTION]"},
            {"dump-fram", "no point named 'dump-fram' (did you mean 'dump-frame'?)"},
            {"events:0", "COUNT '0' is not an integer >= 1"},
            {"events:1x", "COUNT '1x'"},
-           {"dump-frame:2:STOP", "SIGNAL 'STOP' is not KILL, INT, TERM or HUP"},
+           {"dump-frame:2:STOP", "ACTION 'STOP' is not KILL, INT, TERM, HUP or WAIT"},
+           {"dump-frame:2:WAIT", "WAIT needs COOLGAS_FAULT_READY, the file to create at the point"},
            {"events:1:INT:2", "more than three fields"}}) {
     test::expect_refused_with_one_line(run_command(test::fault(spec) + test::simulate(scene + " -o " + out)), needle,
                                        spec);
