@@ -64,5 +64,8 @@ inline void throw_if_interrupted(const char* where) {
 // The check of a loop whose table is written only when the loop is done:
 // "after DONE of TOTAL UNITS; no table written".
 void throw_if_interrupted(std::size_t done, std::size_t total, const char* units);
+// The same stop for a signal that came inside a unit (a replica's own
+// search), reported as a stop between units.
+Interrupted interrupted_after(int signal, std::size_t done, std::size_t total, const char* units);
 
 }  // namespace coolgas

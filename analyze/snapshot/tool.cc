@@ -7,6 +7,7 @@
 #include "analyze/snapshot/space_time.h"
 #include "common/trajectory/frame_reader.h"
 #include "common/error.h"
+#include "common/interrupt.h"
 #include "common/memory.h"
 #include "common/output_file.h"
 #include "common/tsv.h"
@@ -86,6 +87,9 @@ RodDumps read_rod_dumps(const std::string& path, std::size_t last) {
   RodDumps dumps;
   Frame f;
   for (std::size_t d = 0; d <= last; ++d) {
+    if (interrupted())
+      throw Interrupted(interrupt_signal(), "after " + std::to_string(d) + " of " + std::to_string(last + 1) +
+                                                " dumps; no picture or table written");
     traj.read(d, f);
     dumps.rows.push_back(space_time_row(f.time, f.position, f.velocity,
                                         traj.aggregates() ? std::span<const double>(f.mass) : std::span<const double>()));
