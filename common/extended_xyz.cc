@@ -13,6 +13,7 @@
 #include "common/error.h"
 #include "common/geometry.h"
 #include "common/memory.h"
+#include "common/text_line.h"
 
 namespace coolgas {
 
@@ -79,7 +80,11 @@ struct Parser {
   }
 
   bool next(std::string& line) {
-    if (!std::getline(in, line)) return false;
+    try {
+      if (!next_line(in, line, kMaxLineBytes, "an extended XYZ file's")) return false;
+    } catch (const LineRefused& e) {
+      fail_at(line_no + 1, e.what());
+    }
     ++line_no;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     return true;
