@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "analyze/structure/cloud_in_cell.h"
-#include "analyze/structure/fourier_grid.h"
+#include "analyze/fourier/fourier_grid.h"
 #include "analyze/structure/frame_structure.h"
 #include "analyze/structure/growing_length.h"
 #include "common/random.h"
