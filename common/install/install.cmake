@@ -17,7 +17,7 @@ set(COOLGAS_MAN_NAME_coolgas-clusters "clusters by the unit-cell definition: N(m
 set(COOLGAS_MAN_NAME_coolgas-velocity "scaled velocity distribution, kurtosis and tail exponent")
 set(COOLGAS_MAN_NAME_coolgas-snapshot "picture of a dump, particles coloured by cluster")
 set(COOLGAS_MAN_NAME_coolgas-smoluchowski "mean-field cluster-size distribution from the Smoluchowski equation")
-set(COOLGAS_MAN_NAME_coolgas-structure "structure factor S(k,t) and the growing length L(t)")
+set(COOLGAS_MAN_NAME_coolgas-structure "structure factor S(k,t), the growing length L(t) and g(r)")
 set(COOLGAS_MAN_NAME_coolgas-shape "cluster shapes: gyration tensors and fractal dimension")
 set(COOLGAS_MAN_NAME_coolgas-convert "dumps as extended XYZ or LAMMPS frames for other programs")
 

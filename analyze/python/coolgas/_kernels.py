@@ -83,26 +83,35 @@ def window(w):
 
 
 def structure(frame, L=None, t=None, table="spectrum", velocities=None, masses=None, grid=None, peak_fraction=None,
-              direct_shells=None):
+              direct_shells=None, r_max=None, bins_per_sigma=None, contact_bins=None):
     """One dump's coolgas-structure table: "spectrum" (t shell k S S_err
     modes x y; x = k L_t, y = S / L_t^3), "series" (t L_t k_mean k_cut
-    k_peak S_peak L_C L_v) or "correlation" (t r C C_v points).
+    k_peak S_peak L_C L_v), "correlation" (t r C C_v points), "rdf" (t r g
+    g_err pairs: g(r), --rdf) or "rdf_series" (t g_contact g_contact_err
+    kappa contact_pairs g_equilibrium: --rdf --series).
 
     frame: a Frame (ballistic aggregation: the aggregates weighted by their
-    masses), or positions with L (and t, velocities, masses). velocities are
-    needed by "series" and "correlation". grid: points per side (default: the
-    even number below L); peak_fraction, direct_shells: the tool's options.
-    df.attrs: the block's comment (L_t, k_cut, the exact sum's check) and grid."""
+    masses; refused by the rdf tables), or positions with L (and t,
+    velocities, masses). velocities are needed by "series" and
+    "correlation". grid: points per side (default: the even number below L);
+    peak_fraction, direct_shells: the tool's options; r_max [sigma],
+    bins_per_sigma, contact_bins: those of --rdf.
+    df.attrs: the block's comment (L_t, k_cut, the exact sum's check; or
+    g(sigma+)) and grid (or r_max for the rdf tables)."""
     positions, L, t, f = _frame_args(frame, L, t)
+    rdf = table in ("rdf", "rdf_series")
     if f is not None:
         velocities = f.velocities if velocities is None else velocities
         masses = f.masses if masses is None else masses
-    if table == "spectrum":
-        velocities = None  # S(k) reads positions only, as the tool does
+    if table == "spectrum" or rdf:
+        velocities = None  # S(k) and g(r) read positions only, as the tool does
     d = _core.structure_table(positions, float(L), float(t), table, velocities=velocities, masses=masses,
-                              **_given(grid=grid, peak_fraction=peak_fraction, direct_shells=direct_shells))
+                              **_given(grid=grid, peak_fraction=peak_fraction, direct_shells=direct_shells,
+                                       r_max=r_max, bins_per_sigma=bins_per_sigma, contact_bins=contact_bins))
     df = frame_of(d)
-    df.attrs["grid"] = d["grid"]
+    for key in ("grid", "r_max"):
+        if key in d:
+            df.attrs[key] = d[key]
     return df
 
 
