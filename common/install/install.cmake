@@ -13,7 +13,7 @@ set(COOLGAS_MAN_NAME_coolgas-validate "check a trajectory against the coolgas H5
 set(COOLGAS_MAN_NAME_coolgas-energy "kinetic energy E(t) of runs and their ensemble mean")
 set(COOLGAS_MAN_NAME_coolgas-fit "power-law, local-slope and Haff fits to E(t)")
 set(COOLGAS_MAN_NAME_coolgas-collapse "finite-size scaling collapse of E(t) for several box sizes")
-set(COOLGAS_MAN_NAME_coolgas-clusters "clusters by the unit-cell definition: N(m,t), largest and mean mass")
+set(COOLGAS_MAN_NAME_coolgas-clusters "clusters by unit cells or by contact: N(m,t), largest and mean mass")
 set(COOLGAS_MAN_NAME_coolgas-velocity "scaled velocity distribution, kurtosis and tail exponent")
 set(COOLGAS_MAN_NAME_coolgas-snapshot "picture of a dump, particles coloured by cluster")
 set(COOLGAS_MAN_NAME_coolgas-smoluchowski "mean-field cluster-size distribution from the Smoluchowski equation")

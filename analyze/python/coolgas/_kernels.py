@@ -36,19 +36,22 @@ def label_clusters(positions, L=None):
     return labels, sizes
 
 
-def clusters(frame, L=None, t=None, table="distribution", bins_per_decade=10, masses=None, slots=None):
+def clusters(frame, L=None, t=None, table="distribution", bins_per_decade=10, masses=None, slots=None,
+             definition="cells"):
     """One dump's coolgas-clusters table: "distribution" (t m dm N x y),
     "scaled" (t x y) or "series" (t M0 M1 M2 M_avg M_max largest_fraction).
 
     frame: a Frame (ballistic aggregation: its aggregates are the clusters),
     or positions with L (and t). masses and slots: the aggregates' masses and
-    the file's N, for arrays of a ballistic-aggregation frame. The block's
-    comment line is df.attrs["comment"]."""
+    the file's N, for arrays of a ballistic-aggregation frame. definition:
+    "cells" (the paper's unit cells) or "contact[:CUTOFF]" (particles closer
+    than CUTOFF sigma, default 1.1), as --definition. The block's comment
+    line is df.attrs["comment"]."""
     positions, L, t, f = _frame_args(frame, L, t)
     if f is not None and f.masses is not None and masses is None:
         masses, slots = f.masses, f.slots
     return frame_of(_core.cluster_table(positions, float(L), float(t), table, bins_per_decade, masses,
-                                        None if slots is None else int(slots)))
+                                        None if slots is None else int(slots), definition))
 
 
 def velocity(frame, t=None, table="Phi", bins=120, ymax=6.0, tail_from=1.5, min_count=25):
