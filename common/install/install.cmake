@@ -19,6 +19,7 @@ set(COOLGAS_MAN_NAME_coolgas-snapshot "picture of a dump, particles coloured by 
 set(COOLGAS_MAN_NAME_coolgas-smoluchowski "mean-field cluster-size distribution from the Smoluchowski equation")
 set(COOLGAS_MAN_NAME_coolgas-structure "structure factor S(k,t), the growing length L(t) and g(r)")
 set(COOLGAS_MAN_NAME_coolgas-shape "cluster shapes: gyration tensors and fractal dimension")
+set(COOLGAS_MAN_NAME_coolgas-displacement "mean-square displacement and velocity autocorrelation")
 set(COOLGAS_MAN_NAME_coolgas-convert "dumps as extended XYZ or LAMMPS frames for other programs")
 
 # (COOLGAS_MAN: top CMakeLists.txt.)

@@ -104,7 +104,8 @@ TEST_F(TimeConventions, EveryToolThatReadsDumpsTakesTheSameTimeOptions) {
                                                        {"coolgas-velocity", "--series"},
                                                        {"coolgas-shape", ""},
                                                        {"coolgas-structure", ""},
-                                                       {"coolgas-convert", ""}};
+                                                       {"coolgas-convert", ""},
+                                                       {"coolgas-displacement", ""}};
   for (const auto& [tool, extra] : tools) {
     const std::string base = bin(tool) + " " + run() + " " + extra;
     const auto commas = run_command(base + " --time 10,1000");
@@ -179,6 +180,7 @@ TEST_F(TimeConventions, NonFiniteTimesAndNumbersAreRefusedWithOneLine) {
       {bin("coolgas-shape") + " " + run() + " --series --time 10,-inf", "--time -inf"},
       {bin("coolgas-structure") + " " + run() + " --time NaN", "--time NaN"},
       {bin("coolgas-convert") + " " + run() + " --time inf", "--time inf"},
+      {bin("coolgas-displacement") + " " + run() + " --from nan", "--from nan"},
       {bin("coolgas-snapshot") + " " + run() + " --time nan -o " + *dir + "/never.png", "--time nan"},
       {energy + bin("coolgas-fit") + " --power --window nan:1e3 -", "--t-window nan:1e3"},
       {energy + bin("coolgas-fit") + " --local-slope --smooth inf -", "--smooth inf"},

@@ -12,18 +12,13 @@
 #include "analyze/structure/radial_distribution.h"
 #include "simulate/run/engine_factory.h"
 #include "simulate/start/initial_state.h"
+#include "tests/support/density_cases.h"
 #include "tests/support/scenes.h"
 
 namespace coolgas {
 namespace {
 
-struct Density {
-  int dimension;
-  double phi;
-  std::int64_t seed;
-};
-
-void PrintTo(const Density& d, std::ostream* os) { *os << d.dimension << "D, phi = " << d.phi; }
+using test::Density;
 
 class ContactValue : public ::testing::TestWithParam<Density> {};
 
@@ -47,13 +42,10 @@ TEST_P(ContactValue, IsTheEquilibriumOne) {
   EXPECT_LT(c.err / expected, 0.0035);
 }
 
-std::string case_name(const ::testing::TestParamInfo<Density>& info) {
-  return std::to_string(info.param.dimension) + "D_phi0" + std::to_string(info.param.phi).substr(2, 1);
-}
 INSTANTIATE_TEST_SUITE_P(HardSpheresAndDisks, ContactValue,
                          ::testing::Values(Density{3, 0.1, 23}, Density{3, 0.2, 23}, Density{3, 0.3, 23},
                                            Density{2, 0.2, 43}, Density{2, 0.4, 43}),
-                         case_name);
+                         test::density_case_name);
 
 }  // namespace
 }  // namespace coolgas

@@ -4,6 +4,7 @@ import numpy as np
 import pandas as pd
 
 from . import _core
+from ._core import InputError
 from ._run import Frame
 from ._tables import frame_of
 
@@ -137,3 +138,19 @@ def shape(frame, L=None, t=None, table="mass_radius", bins_per_decade=None, fit_
     return frame_of(_core.shape_table(positions, float(L), float(t), table, masses=masses,
                                       **_given(bins_per_decade=bins_per_decade, fit_mass=window(fit_mass),
                                                min_mass=min_mass)))
+
+
+def displacement(frame, reference):
+    """One dump's coolgas-displacement row: t dt msd msd_err vacf vacf_norm
+    T D_apparent of `frame` from `reference`, two Frames of one coolgas run
+    (positions unwrapped by their image counts, as the tool does; the
+    particles in the same order). Not for ballistic-aggregation frames."""
+    for name, f in (("frame", frame), ("reference", reference)):
+        if not isinstance(f, Frame) or f.images is None:
+            raise TypeError(name + " must be a Frame of a coolgas run (with image counts)")
+        if f.masses is not None:
+            raise InputError(name + " is a ballistic-aggregation frame: its aggregates merge, and displacements "
+                             "need particles that keep their identity")
+    return frame_of(_core.displacement_row(frame.positions, frame.images, frame.velocities, float(frame.L),
+                                           float(frame.t), reference.positions, reference.images,
+                                           reference.velocities, float(reference.L), float(reference.t)))
