@@ -13,17 +13,18 @@ CMAKE_FLAGS = -DCMAKE_BUILD_TYPE=Release $(if $(filter 1,$(NATIVE)),-DCOOLGAS_NA
 # gnuplot for the pipelines' figures, help2man for the manual pages, the
 # Python package's build and its numpy/pandas), which
 # `make demo` installs; what only the tests need (Python readers that
-# check real clients open our files, pytest, the notebook's runner), which
-# `make test` adds; and clang-tidy, which only `make lint` adds. All
-# without recommended packages.
+# check real clients open our files, pytest, the notebook's runner, a Slurm
+# cluster to run pipelines/cluster/ on), which `make test` adds; and
+# clang-tidy, which only `make lint` adds. All without recommended packages.
 BUILD_PACKAGES := cmake make g++ pkg-config git \
   libhdf5-dev hdf5-tools libfftw3-dev libgsl-dev libeigen3-dev \
   libgtest-dev libcli11-dev libtoml11-dev \
   gnuplot-nox help2man man-db \
   python3 python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pandas
-TEST_PACKAGES := python3-h5py python3-mdanalysis python3-ase python3-matplotlib python3-pytest python3-yaml \
+TEST_PACKAGES := python3-h5py python3-mdanalysis python3-ase python3-matplotlib python3-pytest python3-yaml python3-vtk9 \
   bash-completion \
-  jupyter-nbconvert python3-ipykernel
+  jupyter-nbconvert python3-ipykernel \
+  slurmctld slurmd munge slurm-client
 LINT_PACKAGES := clang-tidy-15
 
 PREFIX ?= /usr/local
@@ -62,8 +63,12 @@ configure: deps
 build: configure
 	cmake --build $(BUILD) -j $(JOBS)
 
+# A skipped test says why on a line "SKIP: ..." of its output, which ctest
+# does not show: the reasons are printed after its summary.
 test: test-deps build
-	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+	cd $(BUILD) && { ctest --output-on-failure -j $(JOBS); status=$$?; \
+	  awk '/^[0-9]+\/[0-9]+ Test: / { name = $$3 } /^SKIP: / { print "skipped: " name ": " substr($$0, 7) }' \
+	    Testing/Temporary/LastTest.log; exit $$status; }
 
 # clang-tidy with the checks of .clang-tidy on every source (tests/lint/clang_tidy.sh;
 # its compile commands in $(BUILD)-lint). Not part of `make test`: the whole tree

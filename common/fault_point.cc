@@ -1,6 +1,7 @@
 #include "common/fault_point.h"
 
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <string>
@@ -8,6 +9,7 @@
 
 #include "common/did_you_mean.h"
 #include "common/error.h"
+#include "common/interrupt.h"
 
 namespace coolgas {
 
@@ -20,7 +22,9 @@ struct SignalName {
   int signal;
   const char* name;
 };
-constexpr SignalName kSignals[] = {{SIGKILL, "KILL"}, {SIGINT, "INT"}, {SIGTERM, "TERM"}, {SIGHUP, "HUP"}};
+constexpr int kHold = -1;  // WAIT: no signal raised, the run holds until one comes
+constexpr SignalName kSignals[] = {
+    {SIGKILL, "KILL"}, {SIGINT, "INT"}, {SIGTERM, "TERM"}, {SIGHUP, "HUP"}, {kHold, "WAIT"}};
 
 struct Fault {
   std::int64_t count = 1;   // the passage that faults
@@ -46,11 +50,30 @@ std::vector<std::string> fields_of(const std::string& s) {
   return fields;
 }
 
-// The fault happens: a signal other than SIGKILL is raised once and the
-// program goes on (its handler decides what follows).
+// WAIT: the run holds until SIGINT, SIGTERM or SIGHUP arrives (the handler
+// of common/interrupt.h records it), then goes on to handle it. The signals
+// are blocked from the test of the flag to the wait, which unblocks them, so
+// that one arriving in between is not missed. The line is written even under
+// --quiet: it is how a test knows the run is there.
+void hold() {
+  sigset_t stops, before;
+  sigemptyset(&stops);
+  for (const int s : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&stops, s);
+  sigprocmask(SIG_BLOCK, &stops, &before);
+  std::fprintf(stderr, "coolgas-simulate: fault: holding at COOLGAS_FAULT = '%s' until SIGINT, SIGTERM or SIGHUP\n",
+               g_fault.text.c_str());
+  while (!interrupted()) sigsuspend(&before);
+  sigprocmask(SIG_SETMASK, &before, nullptr);
+}
+
+// The fault happens: a signal other than SIGKILL is raised once (or WAIT
+// holds once) and the program goes on (the signal's handler decides what follows).
 void fire() {
   if (g_fault.signal != SIGKILL) armed = FaultPoint::kNone;
-  std::raise(g_fault.signal);
+  if (g_fault.signal == kHold)
+    hold();
+  else
+    std::raise(g_fault.signal);
 }
 
 }  // namespace
@@ -85,7 +108,7 @@ const char* arm() {
     f.signal = 0;
     for (const SignalName& sig : kSignals)
       if (fields[2] == sig.name) f.signal = sig.signal;
-    if (f.signal == 0) refuse(value, "SIGNAL '" + shown(fields[2]) + "' is not KILL, INT, TERM or HUP");
+    if (f.signal == 0) refuse(value, "SIGNAL '" + shown(fields[2]) + "' is not KILL, INT, TERM, HUP or WAIT");
   }
   f.text = value;
   g_fault = f;

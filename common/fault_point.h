@@ -4,6 +4,10 @@
 // flushed and no handler runs, and the exit status is a killed process's.
 // With SIGNAL = INT, TERM or HUP that signal is raised instead, once, and
 // its handler (common/interrupt.h) takes over as for a signal from outside.
+// With WAIT the run holds there, once, saying so on stderr, until SIGINT,
+// SIGTERM or SIGHUP comes from outside, and then handles it as anywhere
+// else: a scheduler's signal or kill then finds the run at a known point,
+// whenever it comes (tests/cli/slurm_cluster_test.sh).
 // This lets a test stop a run at a chosen moment of its life instead of at a
 // moment of wall time (docs/reliability.md, "Faults at named points").
 //

@@ -1,5 +1,5 @@
 #!/bin/sh
-# robustness.sh TABLES T_WINDOW OTHER_WEIGHTS ETA_WINDOW SMALLEST_L Z_THETA
+# robustness.sh TABLES T_WINDOW OTHER_WEIGHTS ETA_WINDOW SMALLEST_L
 # The robustness block of the exponent table (pipelines/robustness.mk): the
 # pipeline's collapse (TABLES/collapse.tsv) and the same collapse under each
 # other analysis choice (TABLES/collapse_robust_CHOICE.tsv, coolgas-collapse
@@ -10,21 +10,14 @@
 # (the choices use largely the same runs, so their errors are not
 # independent and a difference within either one is no evidence of a
 # change); otherwise it names what moved and by how many of those errors, so
-# the table says which choice decides. The fixed-product row (z theta = d,
-# the paper's form E L^3 against t/L^(5/2)) also gives its quality Q over the
-# free fit's, and the free fit's product z theta with its error from the
-# same jackknife replicas (its distance from d in those errors says whether
-# the data prefer the paper's form). Both qualities are minima of the same
-# Q (same runs, window, weights), the fixed one over a line of the free
-# one's plane, so the ratio is >= 1; the
-# verdict (consistent with z theta = d, or the free fit preferred) is the
-# same rule as every row's, for theta and z (eta is not part of the relation).
+# the table says which choice decides. (The paper's method, z theta held at
+# d, is in the exponent table itself, beside the free fit: pipelines/exponents.sh.)
 # eta's error is that of its power-law fit to the pooled scaled points, which
 # treats them as independent: too small, so eta "decides" more readily than
 # theta and z, whose errors are the jackknife over whole runs.
 # The other arguments are the choices' settings, for the 'change' column.
 set -e
-tables=$1 t_window=$2 other_weights=$3 eta_window=$4 smallest=$5 z_theta=$6
+tables=$1 t_window=$2 other_weights=$3 eta_window=$4 smallest=$5
 here=$(dirname "$0")
 value() { sh "$here/tsv-value.sh" "$@"; }
 base=$tables/collapse.tsv
@@ -41,13 +34,12 @@ printf 'pipeline\tt = %s, weights %s, eta over x = %s\t%s\t%s\t%s\t%s\t%s\t%s\t%
   "$(meta weights | cut -d: -f1)" "$(meta eta_window)" "$b_theta" "$b_theta_err" "$b_z" "$b_z_err" "$b_eta" "$b_eta_err" \
   "$b_q" "the reference of the rows below"
 
-for choice in start weights eta drop product; do
+for choice in start weights eta drop; do
   case $choice in
     start) change="t from ${t_window%%:*} (window $t_window)" ;;
     weights) change="weights $other_weights" ;;
     eta) change="eta over x = $eta_window" ;;
     drop) change="without L = $smallest" ;;
-    product) change="z theta = $z_theta fixed, z optimised" ;;
   esac
   t=$tables/collapse_robust_$choice.tsv
   err=$(sed -n 's/^# error: //p' "$t")
@@ -66,8 +58,7 @@ for choice in start weights eta drop product; do
       "$choice" "$change" "$theta" "$theta_err" "$z" "$z_err" "$eta" "$eta_err" "$q" "$(printf '%.3g' "$z")" "$(printf '%.3g' "$theta")"
     continue
   fi
-  verdict=$(awk -v c="$choice" -v q="$q" -v bq="$b_q" -v zt="$z_theta" -v ft="$(meta z_theta) $(meta z_theta_err)" \
-    -v a="$theta $theta_err $b_theta $b_theta_err" -v b="$z $z_err $b_z $b_z_err" -v e="$eta $eta_err $b_eta $b_eta_err" '
+  verdict=$(awk -v a="$theta $theta_err $b_theta $b_theta_err" -v b="$z $z_err $b_z $b_z_err" -v e="$eta $eta_err $b_eta $b_eta_err" '
     function num(v) { return v ~ /^[-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?$/ }
     # "name moves by k sigma" when |v - ref| exceeds the larger error
     function judge(name, s,   p, d, m) {
@@ -77,7 +68,6 @@ for choice in start weights eta drop product; do
       m = (p[2] > p[4] ? p[2] : p[4])
       if (m > 0 && d > m) moved = moved sprintf(" %s by %+.3g (%.1f sigma)", name, p[1] - p[3], d / m) ";"
       if (m == 0 && d > 0) moved = moved sprintf(" %s by %+.3g (no error)", name, p[1] - p[3]) ";"
-      if (name != "eta" && (m > 0 ? d > m : d > 0)) moved_tz = 1
     }
     BEGIN {
       judge("theta", a); judge("z", b); judge("eta", e)
@@ -85,15 +75,6 @@ for choice in start weights eta drop product; do
       sub(/;$/, "", v)
       if (unknown != "") v = v ";" unknown
       sub(/;$/, "", v)
-      if (c == "product") {
-        split(a, pa, " "); split(b, pb, " ")
-        split(ft, pf, " ")
-        free = num(pf[2]) && pf[2] > 0 ? sprintf("%.3f +- %.3f, %.1f sigma from %s", pf[1], pf[2], (pf[1] - zt) / pf[2], zt) \
-                                       : sprintf("%.3f", pa[3] * pb[3])
-        v = v sprintf("; %s z theta = %s (the free fit has %s)", moved_tz ? "theta or z moves by more than its error with" \
-                      : "theta and z are consistent with", zt, free)
-        if (num(q) && num(bq) && bq > 0) v = v sprintf(", quality %.3g times the free fit'"'"'s", q / bq)
-      }
       print v
     }')
   printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$choice" "$change" "$theta" "$theta_err" "$z" "$z_err" \

@@ -29,14 +29,14 @@ py::dict parameters(const std::string& path) {
   const RunParameters p = read_run_info(path).params;
   py::dict d;
   for (const ParameterField& f : run_parameter_fields()) {
+    const py::str name(std::string(f.name));
     std::visit(
         [&](auto member) {
-          const auto& v = p.*member;
-          using V = std::decay_t<decltype(v)>;
-          if constexpr (std::is_same_v<V, std::optional<double>>) {
-            if (v) d[py::str(std::string(f.name))] = *v;
+          if constexpr (std::is_same_v<decltype(member), ModelValue>) {
+            const auto it = p.collision.find(f.name);
+            if (it != p.collision.end()) d[name] = it->second;
           } else {
-            d[py::str(std::string(f.name))] = v;
+            d[name] = p.*member;
           }
         },
         f.member);

@@ -10,7 +10,7 @@
 #pragma once
 #include <vector>
 
-#include "analyze/structure/fourier_grid.h"
+#include "analyze/fourier/fourier_grid.h"
 
 namespace coolgas {
 

@@ -8,7 +8,7 @@
 
 #include "analyze/structure/cloud_in_cell.h"
 #include "analyze/structure/correlation.h"
-#include "analyze/structure/fourier_grid.h"
+#include "analyze/fourier/fourier_grid.h"
 #include "analyze/structure/structure_factor.h"
 
 namespace coolgas {

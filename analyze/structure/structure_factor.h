@@ -25,7 +25,7 @@
 #include <span>
 #include <vector>
 
-#include "analyze/structure/fourier_grid.h"
+#include "analyze/fourier/fourier_grid.h"
 
 namespace coolgas {
 

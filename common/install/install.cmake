@@ -21,6 +21,7 @@ set(COOLGAS_MAN_NAME_coolgas-structure "structure factor S(k,t), the growing len
 set(COOLGAS_MAN_NAME_coolgas-shape "cluster shapes: gyration tensors and fractal dimension")
 set(COOLGAS_MAN_NAME_coolgas-displacement "mean-square displacement and velocity autocorrelation")
 set(COOLGAS_MAN_NAME_coolgas-convert "dumps as extended XYZ or LAMMPS frames for other programs")
+set(COOLGAS_MAN_NAME_coolgas-fields "density, flow and temperature fields; the flow's longitudinal and transverse energy")
 
 # (COOLGAS_MAN: top CMakeLists.txt.)
 if(COOLGAS_MAN AND NOT COOLGAS_SANITIZE)

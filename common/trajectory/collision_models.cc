@@ -2,6 +2,36 @@
 
 namespace coolgas {
 
+namespace {
+
+const ModelParameter kR0{.name = "r0",
+                         .meaning = "coefficient of restitution",
+                         .help = "coefficient of restitution",
+                         .lo = 0,
+                         .hi = 1,
+                         .lo_open = true,
+                         .default_value = 1.0,
+                         .example = 0.5};
+const ModelParameter kDelta{.name = "delta",
+                            .meaning = "elastic below this normal speed",
+                            .help = "cut-off: collisions with normal relative speed below delta are elastic, in "
+                                    "units of diameter per initial collision time (the paper uses 1e-4)",
+                            .lo = 0,
+                            .default_value = 0.0,
+                            .example = 1e-3};
+const ModelParameter kViscoelasticB{
+    .name = "viscoelastic_b",
+    .meaning = "viscoelastic material constant b",
+    .help = "viscoelastic material constant b = A alpha^{2/5} (Schwager & Poeschel 1998), in units of (diameter "
+            "per initial collision time)^(-1/5): r = 1 - 1.15344 b v^(1/5) + 0.79826 b^2 v^(2/5) - ... for normal "
+            "impact speed v",
+    .lo = 0,
+    .lo_open = true,
+    .since = 2,
+    .example = 0.3};
+
+}  // namespace
+
 const std::vector<CollisionModelSpec>& collision_models() {
   using layout::Layout;
   // Version 1 files (elastic, inelastic) keep r0 and delta as they always
@@ -9,15 +39,37 @@ const std::vector<CollisionModelSpec>& collision_models() {
   // Version 3 dropped the r0 (and, for aggregation, delta) that version 2
   // wrote for models without a constant restitution.
   static const std::vector<CollisionModelSpec> models = {
-      {"elastic", "ElasticRule: the normal relative velocity is reversed (r = 1)", {"r0", "delta"}, 1, Layout::kGas},
-      {"inelastic", "ConstantRestitutionRule: the paper's Eq. (1), r = r0, r = 1 below delta", {"r0", "delta"}, 1,
-       Layout::kGas},
-      {"viscoelastic", "ViscoelasticRule: r = epsilon(v) from b v^(1/5), r = 1 below delta",
-       {"viscoelastic_b", "delta"}, 3, Layout::kGas},
-      {"aggregation", "AggregationEngine: spheres that touch merge at their centre of mass", {}, 3,
-       Layout::kAggregation},
+      {.name = "elastic",
+       .summary = "\"elastic\"",
+       .rule = "ElasticRule: the normal relative velocity is reversed (r = 1)",
+       .parameters = {},
+       .fixed = {{&kR0, 1.0}, {&kDelta, 0.0}}},
+      {.name = "inelastic",
+       .summary = "\"inelastic\" (paper Eq. 1 with the delta cut-off)",
+       .rule = "ConstantRestitutionRule: the paper's Eq. (1), r = r0, r = 1 below delta",
+       .parameters = {&kR0, &kDelta}},
+      {.name = "viscoelastic",
+       .summary = "\"viscoelastic\" (restitution rising to 1 as the impact speed falls; see "
+                  "collision.viscoelastic_b)",
+       .rule = "ViscoelasticRule: r = epsilon(v) from b v^(1/5), r = 1 below delta",
+       .parameters = {&kViscoelasticB, &kDelta},
+       .schema_version = 3},
+      {.name = "aggregation",
+       .summary = "\"aggregation\" (ballistic aggregation: spheres that touch merge, volumes add, momentum "
+                  "conserved)",
+       .rule = "AggregationEngine: spheres that touch merge at their centre of mass",
+       .parameters = {},
+       .schema_version = 3,
+       .layout = Layout::kAggregation},
   };
   return models;
+}
+
+const std::vector<const ModelParameter*>& model_parameters() {
+  // The order of the scene's collision.* keys (and so of a scene's text, which
+  // every file and checkpoint records) and of /parameters.
+  static const std::vector<const ModelParameter*> all = {&kR0, &kViscoelasticB, &kDelta};
+  return all;
 }
 
 const CollisionModelSpec* find_collision_model(std::string_view name) {
@@ -29,8 +81,10 @@ const CollisionModelSpec* find_collision_model(std::string_view name) {
 bool model_uses(std::string_view model, std::string_view parameter) {
   const CollisionModelSpec* m = find_collision_model(model);
   if (!m) return false;
-  for (std::string_view p : m->parameters)
-    if (p == parameter) return true;
+  for (const ModelParameter* p : m->parameters)
+    if (p->name == parameter) return true;
+  for (const FixedParameter& f : m->fixed)
+    if (f.parameter->name == parameter) return true;
   return false;
 }
 

@@ -1,12 +1,19 @@
 // The collision models as one table: name (the scene's collision.model and
-// /parameters/model), the engine rule that implements it, the /parameters
-// attributes it has beyond the common ones, the schema version of its files
-// and its file layout. A parameter a model does not list is absent from its
-// files: "not applicable" is never written as a sentinel value.
+// /parameters/model), the engine rule that implements it, the parameters it
+// has beyond the common ones (each the scene key collision.<name> and the
+// /parameters attribute <name>, with its meaning, range and default), the
+// schema version of its files and its file layout. The scene's collision.*
+// keys, the /parameters fields (common/trajectory/run_parameters.h) and what
+// a checkpoint records as physics are all made from this table. A parameter
+// a model does not list is absent from its files: "not applicable" is never
+// written as a sentinel value.
 //
-// Adding a model: a row here, its rule in simulate/engine/ (ARCHITECTURE.md).
+// Adding a model: a row here, its rule and its row in simulate/ (ARCHITECTURE.md).
 #pragma once
 #include <cstdint>
+#include <limits>
+#include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -15,15 +22,42 @@
 
 namespace coolgas {
 
+// A model-specific parameter. Models that share a parameter (delta) share
+// its row, so the key has one meaning, range and default.
+struct ModelParameter {
+  std::string_view name;     // collision.<name> in a scene, <name> in /parameters
+  std::string_view meaning;  // a few words, for /parameters and tables' provenance
+  std::string_view help;     // the scene key's --help text: meaning and units
+  // lo <= x <= hi, strict where *_open; every value must be finite.
+  double lo = -std::numeric_limits<double>::infinity(), hi = std::numeric_limits<double>::infinity();
+  bool lo_open = false, hi_open = false;
+  std::optional<double> default_value;  // none: a scene of the model must give it
+  int since = 1;                        // the schema version that added the attribute
+  double example = 0;                   // a typical value (the engine contract test runs with it)
+};
+
+// A parameter a model's files carry at a value no scene sets: elastic
+// spheres' files keep r0 = 1 and delta = 0, as version 1 always wrote them.
+struct FixedParameter {
+  const ModelParameter* parameter;
+  double value;
+};
+
 struct CollisionModelSpec {
   std::string_view name;
-  std::string_view rule;                     // simulate/engine/collision_rules.h or the engine it needs
-  std::vector<std::string_view> parameters;  // model-specific /parameters attributes (run_parameters.h)
-  std::int64_t schema_version = 1;           // data-schema/h5md-profile.md
+  std::string_view summary;  // collision.model's --help: what the model does
+  std::string_view rule;     // simulate/engine/collision_rules.h or the engine it needs
+  std::vector<const ModelParameter*> parameters;  // the scene sets them
+  std::vector<FixedParameter> fixed = {};         // in its files only
+  std::int64_t schema_version = 1;                // data-schema/h5md-profile.md
   layout::Layout layout = layout::Layout::kGas;
 };
 
 const std::vector<CollisionModelSpec>& collision_models();
+
+// Every model-specific parameter once (a test checks that each model's are
+// here): the order of the scene's collision.* keys and of /parameters.
+const std::vector<const ModelParameter*>& model_parameters();
 
 // The row of `name`, or nullptr for a model this build does not know.
 const CollisionModelSpec* find_collision_model(std::string_view name);
@@ -34,5 +68,8 @@ bool model_uses(std::string_view model, std::string_view parameter);
 
 // "elastic, inelastic, viscoelastic, aggregation"
 std::string collision_model_names();
+
+// Values of model-specific parameters by name, as a scene or a file has them.
+using ParameterValues = std::map<std::string, double, std::less<>>;
 
 }  // namespace coolgas

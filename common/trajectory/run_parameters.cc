@@ -50,7 +50,7 @@ void read_field_unchecked(hid_t g, const std::string& path, const ParameterField
   std::visit(Overloaded{[&](std::int64_t RunParameters::*m) { p.*m = h5::read_attr_int(g, name); },
                         [&](double RunParameters::*m) { p.*m = h5::read_attr_double(g, name); },
                         [&](std::string RunParameters::*m) { p.*m = h5::read_attr_string(g, name); },
-                        [&](std::optional<double> RunParameters::*m) { p.*m = h5::read_attr_double(g, name); }},
+                        [&](ModelValue) { p.collision[name] = h5::read_attr_double(g, name); }},
              f.member);
 }
 
@@ -77,9 +77,11 @@ void check_particle_count(const RunParameters& p, const std::string& path) {
 }  // namespace
 
 const std::vector<ParameterField>& run_parameter_fields() {
-  // In the order of data-schema/h5md-profile.md; the provenance of the
-  // tools' tables lists the kPhysics rows in this order too.
-  static const std::vector<ParameterField> fields = {
+  // The common fields in the order of data-schema/h5md-profile.md, then one
+  // per model parameter (collision_models.h); the provenance of the tools'
+  // tables lists the kPhysics rows in this order too.
+  static const std::vector<ParameterField> fields = [] {
+    std::vector<ParameterField> f = {
       {"schema_version", &RunParameters::schema_version, "profile version", kRecord, 1, 1},
       {"program_version", &RunParameters::program_version, "simulator version", kRecord},
       {"scene", &RunParameters::scene_toml, "effective scene (TOML)", kRecord},
@@ -89,21 +91,23 @@ const std::vector<ParameterField>& run_parameter_fields() {
       {"phi", &RunParameters::phi, "volume fraction", kPhysics},
       {"T0", &RunParameters::T0, "initial temperature", kPhysics},
       {"model", &RunParameters::model, "collision model", kPhysics},
-      {"r0", &RunParameters::r0, "coefficient of restitution", kPhysics},
-      {"delta", &RunParameters::delta, "elastic below this normal speed", kPhysics},
-      {"viscoelastic_b", &RunParameters::viscoelastic_b, "viscoelastic material constant b", kPhysics, 2},
-  };
+    };
+    for (const ModelParameter* m : model_parameters())
+      f.push_back({m->name, ModelValue{}, m->meaning, kPhysics, m->since});
+    return f;
+  }();
   return fields;
 }
 
 bool is_model_specific(const ParameterField& f) {
-  return std::holds_alternative<std::optional<double> RunParameters::*>(f.member);
+  return std::holds_alternative<ModelValue>(f.member);
 }
 
 std::optional<std::string> field_text(const RunParameters& p, const ParameterField& f) {
-  return std::visit(Overloaded{[&](std::optional<double> RunParameters::*m) -> std::optional<std::string> {
-                                 if (!(p.*m)) return std::nullopt;
-                                 return text_of(*(p.*m));
+  return std::visit(Overloaded{[&](ModelValue) -> std::optional<std::string> {
+                                 const auto it = p.collision.find(f.name);
+                                 if (it == p.collision.end()) return std::nullopt;
+                                 return text_of(it->second);
                                },
                                [&](auto m) -> std::optional<std::string> { return text_of(p.*m); }},
                     f.member);
@@ -114,11 +118,12 @@ void write_parameters(hid_t g, const RunParameters& p) {
   for (const ParameterField& f : run_parameter_fields()) {
     const std::string name(f.name);
     const bool want = present_for(p, f);
-    std::visit(Overloaded{[&](std::optional<double> RunParameters::*m) {
-                            if (want != (p.*m).has_value())
+    std::visit(Overloaded{[&](ModelValue) {
+                            const auto it = p.collision.find(name);
+                            if (want != (it != p.collision.end()))
                               throw std::logic_error("parameter " + name + (want ? " missing" : " set") +
                                                      " for model " + p.model);
-                            if (want) h5::write_attr(g, name, *(p.*m));
+                            if (want) h5::write_attr(g, name, it->second);
                           },
                           [&](auto m) { h5::write_attr(g, name, p.*m); }},
                f.member);
@@ -127,8 +132,7 @@ void write_parameters(hid_t g, const RunParameters& p) {
 
 RunParameters read_parameters(hid_t g, const std::string& path) {
   RunParameters p;
-  p.r0.reset();  // the defaults are elastic spheres'; a file says what it has
-  p.delta.reset();
+  p.collision.clear();  // the defaults are elastic spheres'; a file says what it has
   for (const ParameterField& f : run_parameter_fields()) {
     if (f.name == "model") {
       read_field(g, path, f, p);

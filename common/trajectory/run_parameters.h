@@ -1,8 +1,9 @@
 // The run's parameters as one table: every /parameters attribute of a
 // trajectory, with its type, meaning and role. The writer, the readers (run
 // info, resume), the ensemble check, the provenance of the tools' tables and
-// the validator's profile all walk run_parameter_fields(); a new parameter is
-// a member here and a row in run_parameters.cc.
+// the validator's profile all walk run_parameter_fields(). A new common
+// parameter is a member here and a row in run_parameters.cc; a new model
+// parameter is only a row of collision_models.cc.
 #pragma once
 #include <hdf5.h>
 
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "common/limits.h"
+#include "common/trajectory/collision_models.h"
 #include "common/tsv.h"
 
 namespace coolgas {
@@ -26,9 +28,9 @@ struct RunParameters {
   std::int64_t N = 0;
   double L = 0, phi = 0, T0 = 0;
   std::string model = "elastic";
-  // Model-specific (collision_models.h): present exactly when the model uses
-  // them. The defaults are those of the default model, elastic spheres.
-  std::optional<double> r0 = 1.0, delta = 0.0, viscoelastic_b;
+  // Model-specific (collision_models.h), by name: present exactly when the
+  // model uses them. The defaults are those of the default model, elastic spheres.
+  ParameterValues collision = {{"r0", 1.0}, {"delta", 0.0}};
 };
 
 // kPhysics: defines "the same physics"; runs of one ensemble agree in it.
@@ -36,11 +38,14 @@ struct RunParameters {
 // kRecord: how the file was made (scene text, versions); not compared.
 enum class ParameterRole { kPhysics, kSeed, kRecord };
 
+// The member of a model-specific field: RunParameters::collision[name].
+struct ModelValue {};
+
 struct ParameterField {
   using Member = std::variant<std::int64_t RunParameters::*, double RunParameters::*, std::string RunParameters::*,
-                              std::optional<double> RunParameters::*>;
+                              ModelValue>;
   std::string_view name;  // the /parameters attribute
-  Member member;          // an optional<double> member is model-specific
+  Member member;          // ModelValue: model-specific, one field per row of model_parameters()
   std::string_view meaning;
   ParameterRole role = ParameterRole::kPhysics;
   int since = 1;                         // schema version that added it

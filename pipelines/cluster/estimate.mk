@@ -30,3 +30,10 @@ estimate:
 	  END { printf "total: %d runs, %.2f core-hours (%.1f with the 1.5 margin of a request); peak memory %.2f GB (%s; %d GB requested); disk %.0f GB; longest run %s, %.2g hours (%.2g requested)\n", \
 	        NR, cpu, hours, peak, big, mem, disk, longest, long / 1.5, long; \
 	        if (done_runs) printf "measured: %d runs complete in OUT took %.2f CPU hours, planned %.2f\n", done_runs, done_cpu, done_plan }'
+
+# make run-list: each run of the scale, one a line: its name, its target as
+# make names it and its scene (pipelines/cluster/submit-runs.sh submits each
+# incomplete one as a job of its own).
+.PHONY: run-list
+run-list:
+	@$(foreach r,$(ESTIMATE_RUNS),printf '%s\t%s\t%s\n' $(notdir $(basename $(r))) $(r) $(SCENES)/$(notdir $(basename $(r))).toml;)

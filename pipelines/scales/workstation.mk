@@ -28,7 +28,12 @@ DELTA := 1e-4
 # those collisions turn elastic and E(t) flattens (a single L = 34 run: local
 # slope of E 1.8-2.0 at x = 5-26, 1.5 at x = 47, 0.4 at x = 450). E ~ L^-3
 # f(x) reaches 1e-8 at x ~ 25 for L = 34 and at smaller x in larger boxes,
-# so eta is fitted over x = 3-20 and the small boxes end near x = 30.
+# so eta is fitted over x = 3-20 and the small boxes end near x = 30. That x
+# is the paper's, t/L^z at z ~ 2.5: eta comes from the collapse with
+# z theta = 3 held (common.mk), whose z = 2.55 puts L = 34 at x = 25 and
+# L = 48 at x = 21 (17 and 16 of their mean E(t)'s points in x = 3-20, in
+# this plan's runs); the free fit's z = 3.16 would put them at x = 2.9 and
+# leave the window empty.
 # What each run costs, planned and (once run) measured:
 #   make -C pipelines/workstation estimate OUT=...
 SIZE_L := 34 48 68 96 136

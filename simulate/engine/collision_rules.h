@@ -8,8 +8,8 @@
 //   int collapse_limit() const;              // (dissipative rules) see engine.cc
 // where g > 0 is the normal relative speed before the collision; it returns
 // the coefficient of restitution r and sets below_delta when the collision
-// was made elastic by the δ cut-off. Adding a rule: a struct here, one
-// explicit instantiation in engine.cc, one case in make_engine().
+// was made elastic by the δ cut-off. Adding a rule: a struct here, one line
+// at the end of engine.cc, and its model's rows (ARCHITECTURE.md).
 #pragma once
 #include <cmath>
 

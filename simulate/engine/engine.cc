@@ -533,14 +533,14 @@ RunStatus Engine<Rule, D>::run_until(double t_stop, std::int64_t max_events, con
   return RunStatus::kReached;
 }
 
-template class Engine<ElasticRule>;
-template class Engine<ConstantRestitutionRule>;
-template class Engine<ViscoelasticRule>;
-template class Engine<ElasticRule, 2>;
-template class Engine<ConstantRestitutionRule, 2>;
-template class Engine<ViscoelasticRule, 2>;
-template class Engine<ElasticRule, 1>;
-template class Engine<ConstantRestitutionRule, 1>;
-template class Engine<ViscoelasticRule, 1>;
+// Every rule of collision_rules.h in every dimension: a new rule is one line here.
+#define COOLGAS_ENGINE_OF(Rule) \
+  template class Engine<Rule, 1>; \
+  template class Engine<Rule, 2>; \
+  template class Engine<Rule, 3>;
+COOLGAS_ENGINE_OF(ElasticRule)
+COOLGAS_ENGINE_OF(ConstantRestitutionRule)
+COOLGAS_ENGINE_OF(ViscoelasticRule)
+#undef COOLGAS_ENGINE_OF
 
 }  // namespace coolgas

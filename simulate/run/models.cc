@@ -10,8 +10,8 @@ namespace coolgas {
 namespace {
 
 ElasticRule elastic_rule(const Scene&) { return {}; }
-ConstantRestitutionRule inelastic_rule(const Scene& s) { return {s.r0, s.delta}; }
-ViscoelasticRule viscoelastic_rule(const Scene& s) { return {s.viscoelastic_b, s.delta}; }
+ConstantRestitutionRule inelastic_rule(const Scene& s) { return {s.parameter("r0"), s.parameter("delta")}; }
+ViscoelasticRule viscoelastic_rule(const Scene& s) { return {s.parameter("viscoelastic_b"), s.parameter("delta")}; }
 
 // The engine of a collision rule (simulate/engine/collision_rules.h) in the
 // scene's dimension: the hot loop is compiled for exactly that rule and D.

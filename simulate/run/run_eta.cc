@@ -174,8 +174,9 @@ double clustering_floor(double phi, double r0, double delta) {
 RunEta eta_without_cooling(const RunParameters&) { return RunEta(INFINITY); }
 RunEta eta_of_cooling_gas(const RunParameters& p) { return RunEta(p.L); }
 RunEta eta_of_inelastic_gas(const RunParameters& p) {
-  if (!p.r0 || !p.delta) return eta_of_cooling_gas(p);
-  return RunEta(p.L, INFINITY, clustering_floor(p.phi, *p.r0, *p.delta), crossing_floor(p.phi));
+  const auto r0 = p.collision.find("r0"), delta = p.collision.find("delta");
+  if (r0 == p.collision.end() || delta == p.collision.end()) return eta_of_cooling_gas(p);
+  return RunEta(p.L, INFINITY, clustering_floor(p.phi, r0->second, delta->second), crossing_floor(p.phi));
 }
 RunEta eta_of_aggregation(const RunParameters& p) {
   return RunEta::aggregation(p.L, double(p.N), AggregationEngine::kCellsPerAggregateLimit);

@@ -38,14 +38,12 @@ RunParameters parameters_of(const Scene& s) {
   p.phi = s.phi;
   p.T0 = initial_temperature(s);
   p.model = s.model_name();
-  // Only the parameters the model has (common/trajectory/collision_models.h),
-  // each the scene's key collision.<name>.
-  for (const ParameterField& f : run_parameter_fields()) {
-    if (!is_model_specific(f)) continue;
-    const auto member = std::get<std::optional<double> RunParameters::*>(f.member);
-    p.*member = model_uses(p.model, f.name) ? std::optional<double>(scene_number(s, "collision." + std::string(f.name)))
-                                            : std::nullopt;
-  }
+  // Only the parameters the model has (common/trajectory/collision_models.h):
+  // each the scene's key collision.<name>, or the value its files fix.
+  const CollisionModelSpec& model = collision_models().at(std::size_t(s.model));
+  p.collision.clear();
+  for (const ModelParameter* m : model.parameters) p.collision[std::string(m->name)] = s.parameter(m->name);
+  for (const FixedParameter& f : model.fixed) p.collision[std::string(f.parameter->name)] = f.value;
   return p;
 }
 

@@ -287,9 +287,11 @@ int drive(Driver& driver, const Scene& scene) {
   try {
     return driver.run();
   } catch (const RunStopped& e) {
+    // Collapse stops only models with a cut-off (collision_models.h); aggregation outgrows its box.
+    const double delta = e.reason == StopReason::kAggregateTooLarge ? 0 : scene.parameter("delta");
     const std::string hint = e.reason == StopReason::kAggregateTooLarge ? ""
-                             : scene.delta > 0 ? "; increase collision.delta (now " + format_number(scene.delta) + ")"
-                                               : "; set collision.delta > 0 (the paper uses 1e-4)";
+                             : delta > 0 ? "; increase collision.delta (now " + format_number(delta) + ")"
+                                         : "; set collision.delta > 0 (the paper uses 1e-4)";
     return driver.finish_stopped(e.what() + hint);
   }
 }

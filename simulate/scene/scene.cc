@@ -51,11 +51,52 @@ Enum choice(const SceneKey& k, const SceneValue& v) {
 }
 const SceneKey& key_row(const char* name);
 
+// collision.model's help: each model's summary (common/trajectory/collision_models.h).
+std::string model_help() {
+  std::string out;
+  const auto& models = collision_models();
+  for (std::size_t i = 0; i < models.size(); ++i)
+    out += std::string(i == 0 ? "" : i + 1 == models.size() ? " or " : ", ") + std::string(models[i].summary);
+  return out;
+}
+
+// The models whose scenes set `p`.
+std::vector<CollisionModel> models_setting(const ModelParameter& p) {
+  std::vector<CollisionModel> out;
+  const auto& models = collision_models();
+  for (std::size_t i = 0; i < models.size(); ++i)
+    if (std::find(models[i].parameters.begin(), models[i].parameters.end(), &p) != models[i].parameters.end())
+      out.push_back(CollisionModel(i));
+  return out;
+}
+
+// The key collision.<name> of a model parameter: its range, its default
+// (else required by the models that set it), read and written by name.
+SceneKey parameter_key(const ModelParameter& p) {
+  const std::string name(p.name);
+  return {.key = "collision." + name, .type = KeyType::kFloat,
+          .need = p.default_value ? KeyNeed::kDefault : KeyNeed::kRequired, .help = std::string(p.help),
+          .lo = p.lo, .hi = p.hi, .lo_open = p.lo_open, .hi_open = p.hi_open, .models = models_setting(p),
+          .set = [name](Scene& s, const SceneValue& v) { s.set_parameter(name, std::get<double>(v)); },
+          .toml = [name, &p](const Scene& s) {
+            return s.collision.count(name) || p.default_value ? toml_float(s.parameter(name)) : std::string();
+          }};
+}
+
+// The keys, with collision.<name> of every model parameter after collision.model.
+std::vector<SceneKey> with_parameter_keys(std::vector<SceneKey> keys) {
+  auto at = std::find_if(keys.begin(), keys.end(), [](const SceneKey& k) { return k.key == "collision.model"; });
+  std::vector<SceneKey> parameters;
+  for (const ModelParameter* p : model_parameters()) parameters.push_back(parameter_key(*p));
+  keys.insert(at + 1, parameters.begin(), parameters.end());
+  return keys;
+}
+
 }  // namespace
 
 // Order matters: to_toml() writes the tables and keys in this order.
 const std::vector<SceneKey>& scene_keys() {
-  static const std::vector<SceneKey> keys = {
+  static const std::vector<SceneKey> keys = with_parameter_keys({
       // Written to TOML only when not 3, so that a 3D scene's text (and with
       // it a 3D run's file) is what it was before the key existed.
       {.key = "system.dimension", .type = KeyType::kInteger, .need = KeyNeed::kOptional,
@@ -114,30 +155,10 @@ const std::vector<SceneKey>& scene_keys() {
        .lo = 0, .lo_open = true, .inits = {I::kFile},
        .set = [](Scene& s, const SceneValue& v) { s.T0 = std::get<double>(v); },
        .toml = [](const Scene& s) { return s.T0 > 0 ? toml_float(s.T0) : std::string(); }},
-      {.key = "collision.model", .type = KeyType::kString, .need = KeyNeed::kDefault,
-       .help = "\"elastic\", \"inelastic\" (paper Eq. 1 with the delta cut-off), \"viscoelastic\" (restitution "
-               "rising to 1 as the impact speed falls; see collision.viscoelastic_b) or \"aggregation\" (ballistic "
-               "aggregation: spheres that touch merge, volumes add, momentum conserved)",
+      {.key = "collision.model", .type = KeyType::kString, .need = KeyNeed::kDefault, .help = model_help(),
        .choices = model_names(),
        .set = [](Scene& s, const SceneValue& v) { s.model = choice<CollisionModel>(key_row("collision.model"), v); },
        .toml = [](const Scene& s) { return toml_string(s.model_name()); }},
-      {.key = "collision.r0", .type = KeyType::kFloat, .need = KeyNeed::kDefault, .help = "coefficient of restitution",
-       .lo = 0, .hi = 1, .lo_open = true, .models = {M::kInelastic},
-       .set = [](Scene& s, const SceneValue& v) { s.r0 = std::get<double>(v); },
-       .toml = [](const Scene& s) { return toml_float(s.r0); }},
-      {.key = "collision.viscoelastic_b", .type = KeyType::kFloat, .need = KeyNeed::kRequired,
-       .help = "viscoelastic material constant b = A alpha^{2/5} (Schwager & Poeschel 1998), in units of "
-               "(diameter per initial collision time)^(-1/5): r = 1 - 1.15344 b v^(1/5) + 0.79826 b^2 v^(2/5) - ... "
-               "for normal impact speed v",
-       .lo = 0, .lo_open = true, .models = {M::kViscoelastic},
-       .set = [](Scene& s, const SceneValue& v) { s.viscoelastic_b = std::get<double>(v); },
-       .toml = [](const Scene& s) { return toml_float(s.viscoelastic_b); }},
-      {.key = "collision.delta", .type = KeyType::kFloat, .need = KeyNeed::kDefault,
-       .help = "cut-off: collisions with normal relative speed below delta are elastic, in units of diameter per "
-               "initial collision time (the paper uses 1e-4)",
-       .lo = 0, .models = {M::kInelastic, M::kViscoelastic},
-       .set = [](Scene& s, const SceneValue& v) { s.delta = std::get<double>(v); },
-       .toml = [](const Scene& s) { return toml_float(s.delta); }},
       {.key = "run.t_end", .type = KeyType::kFloat, .need = KeyNeed::kRequired,
        .help = "simulated time to stop at, in initial mean collision times", .lo = 0, .lo_open = true,
        .set = [](Scene& s, const SceneValue& v) { s.t_end = std::get<double>(v); },
@@ -163,8 +184,7 @@ const std::vector<SceneKey>& scene_keys() {
              for (std::size_t i = 0; i < s.dump_times.size(); ++i) t += (i ? ", " : "") + toml_float(s.dump_times[i]);
              return t + "]";
            }},
-  };
-
+  });
   return keys;
 }
 
@@ -692,10 +712,26 @@ std::string physics_toml(const Scene& s) {
   return p.to_toml();
 }
 
-double scene_number(const Scene& s, const std::string& key) {
-  const SceneKey& k = key_row(key.c_str());
-  if (k.type != KeyType::kFloat) throw std::logic_error("scene key " + key + " is not a number");
-  return std::get<double>(to_value(k, parse_override(key + "=" + k.toml(s)).second));
+namespace {
+
+const ModelParameter& parameter_row(std::string_view name) {
+  for (const ModelParameter* p : model_parameters())
+    if (p->name == name) return *p;
+  throw std::logic_error("no model parameter " + std::string(name));
+}
+
+}  // namespace
+
+double Scene::parameter(std::string_view name) const {
+  const auto it = collision.find(name);
+  if (it != collision.end()) return it->second;
+  const ModelParameter& p = parameter_row(name);
+  if (!p.default_value) throw std::logic_error("the scene gives no collision." + std::string(name));
+  return *p.default_value;
+}
+
+void Scene::set_parameter(std::string_view name, double value) {
+  collision[std::string(parameter_row(name).name)] = value;
 }
 
 std::string model_name(CollisionModel m) { return std::string(collision_models().at(std::size_t(m)).name); }

@@ -4,14 +4,17 @@
 // writes the effective scene back as TOML.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <limits>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
 
 #include "common/geometry.h"
 #include "common/limits.h"
-#include <optional>
-#include <string>
-#include <variant>
-#include <vector>
+#include "common/trajectory/collision_models.h"
 
 namespace coolgas {
 
@@ -45,9 +48,9 @@ struct Scene {
   double T0 = 0;
   // collision
   CollisionModel model = CollisionModel::kElastic;
-  double r0 = 1.0;
-  double delta = 0.0;
-  double viscoelastic_b = 0.0;  // b = A alpha^{2/5} of the viscoelastic model, (sigma omega0)^{-1/5}
+  // The model's parameters collision.<name> (common/trajectory/collision_models.h)
+  // the scene gives; the others take their defaults.
+  ParameterValues collision;
   // run
   double t_end = 0;
   // output
@@ -66,6 +69,11 @@ struct Scene {
   std::string to_toml() const;
   std::string model_name() const;
   Geometry geometry() const { return Geometry(dimension); }
+  // collision.<name>: the scene's value, else the parameter's default;
+  // std::logic_error for a name no model has, or one without a default not given.
+  double parameter(std::string_view name) const;
+  // std::logic_error for a name no model has; the range is parse_scene()'s to check.
+  void set_parameter(std::string_view name, double value);
 };
 
 // One row per scene key: it parses, checks, prints --help and writes TOML.
@@ -80,10 +88,10 @@ enum class KeyNeed { kDefault, kRequired, kSize, kOptional };
 // Rows are written with designated initializers; a field a row leaves out
 // takes the default here.
 struct SceneKey {
-  const char* key = "";  // "table.name"
+  std::string key;  // "table.name"
   KeyType type = KeyType::kFloat;
   KeyNeed need = KeyNeed::kDefault;
-  const char* help = "";  // meaning and units; --help adds the range and the default
+  std::string help;  // meaning and units; --help adds the range and the default
   // Numbers (each element of an array): lo <= x <= hi, strict where *_open;
   // infinite bounds mean none, and every number must be finite.
   double lo = -std::numeric_limits<double>::infinity(), hi = std::numeric_limits<double>::infinity();
@@ -93,8 +101,10 @@ struct SceneKey {
   std::vector<CollisionModel> models = {};
   // Starts that use the key (system.init; empty: every start).
   std::vector<InitialPositions> inits = {};
-  void (*set)(Scene&, const SceneValue&) = nullptr;
-  std::string (*toml)(const Scene&) = nullptr;  // the member as a TOML value ("" for an absent kOptional key)
+  std::function<void(Scene&, const SceneValue&)> set;
+  // The member as a TOML value ("" for an absent kOptional key, or a
+  // parameter without a default the scene does not give).
+  std::function<std::string(const Scene&)> toml;
 };
 const std::vector<SceneKey>& scene_keys();
 
@@ -157,9 +167,5 @@ bool key_changeable_on_resume(const std::string& key);
 // scene has it (the others at their defaults). A checkpoint belongs to the
 // run whose physics it records.
 std::string physics_toml(const Scene& s);
-
-// The number the scene gives key `key` (a collision.* parameter);
-// std::logic_error for a key that is not a number.
-double scene_number(const Scene& s, const std::string& key);
 
 }  // namespace coolgas

@@ -213,8 +213,8 @@ coolgas::Scene workload(bool inelastic, std::int64_t n, double delta = 1e-3) {
   s.t_end = 1e9;
   if (inelastic) {
     s.model = coolgas::CollisionModel::kInelastic;
-    s.r0 = 0.1;
-    s.delta = delta;
+    s.set_parameter("r0", 0.1);
+    s.set_parameter("delta", delta);
   }
   return s;
 }

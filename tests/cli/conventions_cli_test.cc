@@ -25,7 +25,7 @@ using test::run_command;
 
 const char* const kPrograms[] = {"coolgas-simulate", "coolgas-validate",  "coolgas-energy",    "coolgas-fit",
                                  "coolgas-collapse", "coolgas-clusters",  "coolgas-velocity",  "coolgas-snapshot",
-                                 "coolgas-shape",    "coolgas-structure", "coolgas-smoluchowski"};
+                                 "coolgas-shape",    "coolgas-structure", "coolgas-smoluchowski", "coolgas-fields"};
 
 TEST(Conventions, EveryProgramPrintsItsVersionAndCommit) {
   for (const std::string program : kPrograms) {
@@ -104,6 +104,7 @@ TEST_F(TimeConventions, EveryToolThatReadsDumpsTakesTheSameTimeOptions) {
                                                        {"coolgas-velocity", "--series"},
                                                        {"coolgas-shape", ""},
                                                        {"coolgas-structure", ""},
+                                                       {"coolgas-fields", ""},
                                                        {"coolgas-convert", ""},
                                                        {"coolgas-displacement", ""}};
   for (const auto& [tool, extra] : tools) {
@@ -179,6 +180,7 @@ TEST_F(TimeConventions, NonFiniteTimesAndNumbersAreRefusedWithOneLine) {
       {bin("coolgas-clusters") + " " + run() + " --time inf", "--time inf"},
       {bin("coolgas-shape") + " " + run() + " --series --time 10,-inf", "--time -inf"},
       {bin("coolgas-structure") + " " + run() + " --time NaN", "--time NaN"},
+      {bin("coolgas-fields") + " " + run() + " --cell inf", "--cell inf"},
       {bin("coolgas-convert") + " " + run() + " --time inf", "--time inf"},
       {bin("coolgas-displacement") + " " + run() + " --from nan", "--from nan"},
       {bin("coolgas-snapshot") + " " + run() + " --time nan -o " + *dir + "/never.png", "--time nan"},

@@ -4,8 +4,9 @@
 // a file that coolgas-validate accepts (or, before the first dump is in
 // place, none), and the same command again finishes it to the uninterrupted
 // run's file bit for bit. A signal raised at a point runs its handler as a
-// signal from outside would; a malformed COOLGAS_FAULT is refused with one
-// line; a fault the run never reaches changes nothing.
+// signal from outside would; a run held at a point (WAIT) stays there until a
+// signal from outside comes, then handles it; a malformed COOLGAS_FAULT is
+// refused with one line; a fault the run never reaches changes nothing.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -177,6 +178,33 @@ TEST_F(FaultPoints, AConversionKilledAtEachPointFinishesExactly) {
                     {test::events_at(0.3, collisions_)}});
 }
 
+// A run held at a point says so and waits there for a signal from outside:
+// SIGTERM, sent once the line is seen, finds it at that point (its
+// checkpoint is within the engine's 4096 events of checking the flag past
+// it, far from the end), it exits 3, and --resume finishes it exactly.
+TEST_F(FaultPoints, ARunHeldAtAPointWaitsForASignalThenFinishesExactly) {
+  const std::string dir = test::scratch_dir("fault_points_wait");
+  const std::string out = dir + "/run.h5", err = dir + "/err.txt";
+  const std::int64_t k = std::max<std::int64_t>(1, collisions_ / 5);
+  const std::string held = "COOLGAS_CHECKPOINT_INTERVAL=0 " + test::fault("events:" + std::to_string(k) + ":WAIT") +
+                           fresh(out) + " 2>" + err + " & pid=$!; "
+                           "while kill -0 $pid 2>/dev/null && ! grep -qs 'fault: holding' " + err + "; do sleep 0.05; done; "
+                           "kill -TERM $pid; wait $pid";
+  const auto r = run_command(held);
+  const std::string said = test::read_text(err);
+  ASSERT_EQ(r.exit_code, 3) << said;
+  EXPECT_NE(said.find("coolgas-simulate: fault: holding at COOLGAS_FAULT = 'events:" + std::to_string(k) +
+                      ":WAIT' until SIGINT, SIGTERM or SIGHUP"),
+            std::string::npos)
+      << said;
+  EXPECT_NE(said.find("interrupted by SIGTERM"), std::string::npos) << said;
+  EXPECT_LE(test::collisions_of(out), k + 4096);
+  ASSERT_TRUE(exists(out + ".checkpoint"));
+  const auto a = run_command(test::simulate("--resume " + out));
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  test::expect_same_trajectory(whole(), out);
+}
+
 // A fault the run never reaches changes nothing.
 TEST_F(FaultPoints, AFaultNeverReachedChangesNothing) {
   const std::string out = test::scratch_dir("fault_points_unreached") + "/run.h5";
@@ -193,7 +221,7 @@ TEST(FaultPointsRefused, AMalformedFaultIsOneLineAndNothingIsWritten) {
            {"dump-fram", "no point named 'dump-fram' (did you mean 'dump-frame'?)"},
            {"events:0", "COUNT '0' is not an integer >= 1"},
            {"events:1x", "COUNT '1x'"},
-           {"dump-frame:2:STOP", "SIGNAL 'STOP' is not KILL, INT, TERM or HUP"},
+           {"dump-frame:2:STOP", "SIGNAL 'STOP' is not KILL, INT, TERM, HUP or WAIT"},
            {"events:1:INT:2", "more than three fields"}}) {
     test::expect_refused_with_one_line(run_command(test::fault(spec) + test::simulate(scene + " -o " + out)), needle,
                                        spec);

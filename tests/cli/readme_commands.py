@@ -29,8 +29,11 @@ SKIPPED = {
     "make -C pipelines/demo reanalyze": "needs an archive of demo runs; tests/cli/pipeline_test.cc runs reanalyze from the tiny runs",
     "make -C pipelines/paper -j": "the paper scale: hundreds of core-hours on a cluster (srun)",
     "make -C pipelines/workstation -j": "the workstation scale: hours on 2 cores, as its plan in docs/studies.md says (tests/cli/docs_agree.py runs the plan, make -C pipelines/workstation estimate)",
-    "sbatch pipelines/cluster/paper.sbatch": "needs a Slurm cluster (its shell is checked with sh -n below)",
-    "sbatch --ntasks=2": "needs a Slurm cluster (its shell is checked with sh -n below)",
+    "sbatch pipelines/cluster/paper.sbatch": "needs a Slurm cluster: ctest Slurm.* runs it on one (tests/cli/slurm_cluster_test.sh)",
+    "sbatch --ntasks=2": "needs a Slurm cluster: ctest Slurm.* runs it on one (tests/cli/slurm_cluster_test.sh)",
+    "j=$(sbatch": "a chain of paper-scale jobs on a Slurm cluster: ctest Slurm.* runs such a chain at SCALE=tiny",
+    "sh pipelines/cluster/submit-runs.sh": "submits the paper scale to a Slurm cluster: ctest Slurm.* runs it at SCALE=tiny",
+    "MAX_TIME=720 sh pipelines/cluster/submit-runs.sh": "submits the paper scale to a Slurm cluster: ctest Slurm.* runs its dry run with MAX_TIME=720",
     "make install": "installs into PREFIX; tests/cli/installed_tree.sh (ctest InstalledTree.*) installs into a fresh prefix and runs the pages, completion and pipelines there",
     "sh pipelines/readme-headline.sh": "rewrites README.md of the source tree; ctest Readme.HeadlineTableIsTheValidationTables runs it on a copy",
     "sh pipelines/readme-table.sh": "needs a pipeline's exponents.md and rewrites a document of the source tree; tests/cli/pipeline_scripts_cli_test.cc runs it on stand-ins",
@@ -99,7 +102,8 @@ def main():
         os.symlink(bin_dir, link)
     if not os.path.exists(os.path.join(scratch, "pipelines")):
         os.symlink(os.path.join(source, "pipelines"), os.path.join(scratch, "pipelines"))
-    subprocess.run(["sh", "-n", os.path.join(source, "pipelines/cluster/paper.sbatch")], check=True)
+    for script in ("paper.sbatch", "run.sbatch", "submit-runs.sh"):
+        subprocess.run(["sh", "-n", os.path.join(source, "pipelines/cluster", script)], check=True)
     make_runs(source, bin_dir, scratch)
     env = dict(os.environ, PATH=bin_dir + os.pathsep + os.environ["PATH"], GNUTERM="dumb")
     failed = ran = 0

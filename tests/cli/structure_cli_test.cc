@@ -34,8 +34,8 @@ void write_aggregates(const std::string& path) {
   p.N = n;
   p.L = 20;
   p.model = "aggregation";
-  p.r0.reset();  // aggregation has no restitution or cut-off (common/trajectory/collision_models.h)
-  p.delta.reset();
+  p.collision.erase("r0");  // aggregation has no restitution or cut-off (common/trajectory/collision_models.h)
+  p.collision.erase("delta");
   p.seed = 4;
   H5mdWriter w = H5mdWriter::create(path, p, true, Geometry(3));
   std::vector<double> pos(3 * n, 0.0), vel(3 * n, 0.0), mass(n, 0.0), diameter(n, 0.0);

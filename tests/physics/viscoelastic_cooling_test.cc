@@ -67,7 +67,7 @@ double theory_ratio(double T0, double b, double t_end) {
 TEST(ViscoelasticCooling, FollowsTheKineticTheoryOfBrilliantovAndPoeschel) {
   Scene s = test::elastic_scene(4000, 0.02, 41);
   s.model = CollisionModel::kViscoelastic;
-  s.viscoelastic_b = 0.1;
+  s.set_parameter("viscoelastic_b", 0.1);
   const double T0 = initial_temperature(s);
   auto e = make_engine(s, initial_state(s), 0.0);
   const double e0 = e->observables().kinetic_energy;
@@ -75,7 +75,7 @@ TEST(ViscoelasticCooling, FollowsTheKineticTheoryOfBrilliantovAndPoeschel) {
   for (double t : {10.0, 30.0, 100.0, 200.0}) {
     e->run_until(t, std::int64_t(1) << 40, nullptr);
     const double measured = e->observables().kinetic_energy / e0;
-    const double theory = theory_ratio(T0, s.viscoelastic_b, t);
+    const double theory = theory_ratio(T0, s.parameter("viscoelastic_b"), t);
     EXPECT_NEAR(measured / theory, 1.0, 0.03) << "t = " << t;
     EXPECT_LT(theory, previous);
     previous = theory;

@@ -98,7 +98,7 @@ TEST(ViscoelasticRule, EnergyLostPerCollisionMatchesTheFormula) {
 TEST(ViscoelasticGas, CoolsWithoutGainingEnergyAndConservesMomentum) {
   Scene s = test::elastic_scene(2000, 0.208, 4);
   s.model = CollisionModel::kViscoelastic;
-  s.viscoelastic_b = 0.5;
+  s.set_parameter("viscoelastic_b", 0.5);
   auto e = make_engine(s, initial_state(s), 0.0);
   double prev = e->observables().kinetic_energy;
   const double e0 = prev;

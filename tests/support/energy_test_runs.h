@@ -19,8 +19,8 @@ inline RunParameters paper_parameters(double L, std::int64_t seed) {
   p.phi = 0.208;
   p.T0 = 0.01;
   p.model = "inelastic";
-  p.r0 = 0.1;
-  p.delta = 1e-4;
+  p.collision["r0"] = 0.1;
+  p.collision["delta"] = 1e-4;
   return p;
 }
 

@@ -19,8 +19,8 @@ inline Scene elastic_scene(std::int64_t N, double phi, std::int64_t seed = 1) {
 inline Scene inelastic_scene(std::int64_t N, double phi, double r0, double delta, std::int64_t seed = 1) {
   Scene s = elastic_scene(N, phi, seed);
   s.model = CollisionModel::kInelastic;
-  s.r0 = r0;
-  s.delta = delta;
+  s.set_parameter("r0", r0);
+  s.set_parameter("delta", delta);
   return s;
 }
 

@@ -31,8 +31,8 @@ void write_good_file(const std::string& path) {
   p.phi = 2 * 3.141592653589793 / 6 / 125;
   p.T0 = 0.5;
   p.model = "inelastic";
-  p.r0 = 0.5;
-  p.delta = 1e-4;
+  p.collision["r0"] = 0.5;
+  p.collision["delta"] = 1e-4;
   H5mdWriter w = H5mdWriter::create(path, p, true, Geometry(3));
   for (int f = 0; f < kFrames; ++f) {
     const double pos[6] = {0.5, 1.5, 2.5, 3.0 + 0.5 * f, 4.0, 0.0};

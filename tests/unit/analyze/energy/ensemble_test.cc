@@ -104,8 +104,8 @@ TEST(EnergyEnsemble, ViscoelasticRunsWithDifferentBAreRefusedNamingB) {
   for (double b : {0.1, 0.9}) {
     RunParameters p = test::paper_parameters(32, 1);
     p.model = "viscoelastic";
-    p.r0.reset();
-    p.viscoelastic_b = b;
+    p.collision.erase("r0");
+    p.collision["viscoelastic_b"] = b;
     const std::string path = dir + "/b" + format_number(b) + ".h5";
     test::write_energy_run(path, p, {0, 1, 10}, [](double t) { return 1 / (1 + t); }, Geometry(3));
     runs.push_back(load_energy_run(path));

@@ -25,8 +25,8 @@ std::string write_run(const std::string& name, int frames) {
   p.seed = 42;
   p.phi = 0.01;
   p.model = "inelastic";
-  p.r0 = 0.1;
-  p.delta = 1e-4;
+  p.collision["r0"] = 0.1;
+  p.collision["delta"] = 1e-4;
   H5mdWriter w = H5mdWriter::create(path, p, false, Geometry(3));
   for (int f = 0; f < frames; ++f) {
     double pos[3 * kN], vel[3 * kN];

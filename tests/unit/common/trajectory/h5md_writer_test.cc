@@ -26,8 +26,8 @@ RunParameters small_params() {
   p.phi = 2 * 3.141592653589793 / 6 / 125;
   p.T0 = 0.5;
   p.model = "inelastic";
-  p.r0 = 0.1;
-  p.delta = 1e-4;
+  p.collision["r0"] = 0.1;
+  p.collision["delta"] = 1e-4;
   return p;
 }
 

@@ -34,8 +34,8 @@ TEST(RunInfo, ParametersAndObservablesReadBackExactly) {
   EXPECT_EQ(info.params.L, 32.0);
   EXPECT_EQ(info.params.phi, 0.208);
   EXPECT_EQ(info.params.model, "inelastic");
-  EXPECT_EQ(info.params.r0, 0.1);
-  EXPECT_EQ(info.params.delta, 1e-4);
+  EXPECT_EQ(info.params.collision.at("r0"), 0.1);
+  EXPECT_EQ(info.params.collision.at("delta"), 1e-4);
   EXPECT_EQ(info.params.seed, 7);
   EXPECT_EQ(info.params.scene_toml, test::paper_parameters(32, 7).scene_toml);
   const ObservableSeries e = read_observable(path, layout::kKineticEnergy);
@@ -71,7 +71,7 @@ TEST(RunInfo, PhysicsDifferenceIgnoresSeedAndSceneOnly) {
   EXPECT_FALSE(physics_difference(a, test::paper_parameters(32, 2)));  // scene text differs in its seed line
   EXPECT_EQ(physics_difference(a, test::paper_parameters(48, 1)), "L = 32 vs 48");
   RunParameters b = a;
-  b.r0 = 0.5;
+  b.collision["r0"] = 0.5;
   EXPECT_EQ(physics_difference(a, b), "r0 = 0.1 vs 0.5");
   b = a;
   b.model = "elastic";

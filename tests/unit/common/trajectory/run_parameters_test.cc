@@ -34,21 +34,24 @@ RunParameters params_for(const std::string& model) {
   p.phi = 0.008;
   p.T0 = 0.5;
   p.model = model;
-  p.r0.reset();
-  p.delta.reset();
-  if (model_uses(model, "r0")) p.r0 = model == "elastic" ? 1.0 : 0.5;
-  if (model_uses(model, "delta")) p.delta = model == "elastic" ? 0.0 : 1e-4;
-  if (model_uses(model, "viscoelastic_b")) p.viscoelastic_b = 0.1;
+  p.collision.clear();
+  if (model_uses(model, "r0")) p.collision["r0"] = model == "elastic" ? 1.0 : 0.5;
+  if (model_uses(model, "delta")) p.collision["delta"] = model == "elastic" ? 0.0 : 1e-4;
+  if (model_uses(model, "viscoelastic_b")) p.collision["viscoelastic_b"] = 0.1;
   return p;
 }
 
 // Changes one field of p, whatever its type.
 void perturb(RunParameters& p, const ParameterField& f) {
   std::visit([&](auto m) {
-    using T = std::decay_t<decltype(p.*m)>;
-    if constexpr (std::is_same_v<T, std::string>) p.*m += "x";
-    else if constexpr (std::is_same_v<T, std::optional<double>>) p.*m = 2 * *(p.*m) + 1;
-    else p.*m = 2 * (p.*m) + 1;
+    if constexpr (std::is_same_v<decltype(m), ModelValue>) {
+      double& x = p.collision.at(std::string(f.name));
+      x = 2 * x + 1;
+    } else {
+      using T = std::decay_t<decltype(p.*m)>;
+      if constexpr (std::is_same_v<T, std::string>) p.*m += "x";
+      else p.*m = 2 * (p.*m) + 1;
+    }
   }, f.member);
 }
 
@@ -84,8 +87,8 @@ TEST(RunParameters, EveryFieldIsComparedOrListedAsNotDefiningThePhysics) {
 
 TEST(RunParameters, ViscoelasticRunsWithDifferentBAreDifferentPhysics) {
   RunParameters a = params_for("viscoelastic"), b = a;
-  a.viscoelastic_b = 0.1;
-  b.viscoelastic_b = 0.9;
+  a.collision["viscoelastic_b"] = 0.1;
+  b.collision["viscoelastic_b"] = 0.9;
   EXPECT_EQ(physics_difference(a, b), "viscoelastic_b = 0.1 vs 0.9");
   const Provenance p = physics_provenance(a);
   EXPECT_NE(std::find(p.begin(), p.end(), std::pair<std::string, std::string>{"viscoelastic_b", "0.1"}), p.end());
@@ -129,11 +132,11 @@ TEST(RunParameters, EachModelsFileHoldsExactlyItsFieldsAndReadsThemBack) {
 
 TEST(RunParameters, NotApplicableIsAbsentNotASentinel) {
   RunParameters p = params_for("viscoelastic");
-  p.r0 = 1.0;  // what version 2 wrote
+  p.collision["r0"] = 1.0;  // what version 2 wrote
   const std::string path = test::scratch_dir("run_parameters_sentinel") + "/run.h5";
   EXPECT_THROW(H5mdWriter::create(path, p, true, Geometry(3)), std::logic_error);
-  p.r0.reset();
-  p.delta.reset();
+  p.collision.erase("r0");
+  p.collision.erase("delta");
   EXPECT_THROW(H5mdWriter::create(path, p, true, Geometry(3)), std::logic_error);  // viscoelastic files hold delta
   // A version-2 viscoelastic file carries r0 = 1; it reads as absent.
   {
@@ -143,11 +146,11 @@ TEST(RunParameters, NotApplicableIsAbsentNotASentinel) {
     h5::write_attr(g.id(), "r0", 1.0);
     h5::write_attr(g.id(), "schema_version", std::int64_t{2});
   }
-  EXPECT_FALSE(read_run_info(path).params.r0);
+  EXPECT_FALSE(read_run_info(path).params.collision.count("r0"));
   { H5mdWriter::create(path, params_for("aggregation"), true, Geometry(3)); }
   const RunParameters agg = read_run_info(path).params;
-  EXPECT_FALSE(agg.r0);
-  EXPECT_FALSE(agg.delta);
+  EXPECT_FALSE(agg.collision.count("r0"));
+  EXPECT_FALSE(agg.collision.count("delta"));
 }
 
 TEST(RunParameters, WrongTypeOrUnknownModelIsAnInputErrorNamingTheAttribute) {
@@ -183,11 +186,17 @@ TEST(CollisionModels, ParametersAreModelSpecificFieldsAndVersionsAreInTheProfile
     EXPECT_TRUE(names.insert(m.name).second) << m.name << " twice";
     EXPECT_EQ(find_collision_model(m.name), &m);
     EXPECT_GE(m.schema_version, 1);
-    for (std::string_view p : m.parameters) {
+    std::vector<const ModelParameter*> listed = m.parameters;
+    for (const FixedParameter& f : m.fixed) listed.push_back(f.parameter);
+    for (const ModelParameter* mp : listed) {
+      const std::string_view p = mp->name;
+      const auto& all = model_parameters();
+      EXPECT_NE(std::find(all.begin(), all.end(), mp), all.end()) << m.name << " lists " << p << ", not in model_parameters()";
       const auto& fields = run_parameter_fields();
       const auto f = std::find_if(fields.begin(), fields.end(), [&](const ParameterField& x) { return x.name == p; });
       ASSERT_NE(f, fields.end()) << m.name << " lists " << p << ", which is no field";
       EXPECT_TRUE(is_model_specific(*f)) << p;
+      EXPECT_LE(f->since, m.schema_version) << p << " is newer than " << m.name << "'s files";
     }
   }
   EXPECT_FALSE(find_collision_model("sticky"));

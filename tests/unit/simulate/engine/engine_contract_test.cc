@@ -29,7 +29,8 @@ Scene scene_of(const ModelIn& m) {
   Scene s = m.dimension == 3 ? test::inelastic_scene(1500, 0.2, 0.5, 1e-3, 9)
                              : test::inelastic_disk_scene(1500, 0.2, 0.5, 1e-3, 9);
   s.model = m.model;
-  s.viscoelastic_b = 0.3;
+  // Each of the model's parameters at its row's typical value (common/trajectory/collision_models.h).
+  for (const ModelParameter* p : collision_models().at(std::size_t(m.model)).parameters) s.set_parameter(p->name, p->example);
   s.equilibrate = 0;
   return s;
 }

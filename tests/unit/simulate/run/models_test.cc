@@ -41,5 +41,44 @@ TEST(Models, TheSceneOffersEveryModelByItsName) {
   }
 }
 
+const SceneKey* scene_key(const std::string& name) {
+  for (const SceneKey& k : scene_keys())
+    if (k.key == name) return &k;
+  return nullptr;
+}
+
+// Each model parameter of the file side's table is the scene key
+// collision.<name> with the row's range and default, offered to exactly the
+// models that list it; a scene that gives it runs a file that records it,
+// and it is part of the physics a checkpoint keeps (a resume may not change it).
+TEST(Models, EachParameterRowIsASceneKeyAFieldAndPhysics) {
+  const auto& models = collision_models();
+  for (const ModelParameter* p : model_parameters()) {
+    const std::string key = "collision." + std::string(p->name);
+    const SceneKey* k = scene_key(key);
+    ASSERT_NE(k, nullptr) << key;
+    EXPECT_EQ(k->lo, p->lo) << key;
+    EXPECT_EQ(k->hi, p->hi) << key;
+    EXPECT_EQ(k->need, p->default_value ? KeyNeed::kDefault : KeyNeed::kRequired) << key;
+    EXPECT_FALSE(key_changeable_on_resume(key));
+    for (std::size_t m = 0; m < models.size(); ++m) {
+      const auto& listed = models[m].parameters;
+      const bool sets = std::find(listed.begin(), listed.end(), p) != listed.end();
+      EXPECT_EQ(std::find(k->models.begin(), k->models.end(), CollisionModel(m)) != k->models.end(), sets)
+          << key << " for " << models[m].name;
+      if (!sets) continue;
+      Scene s;
+      s.N = 8, s.L = 4, s.phi = s.geometry().covered_fraction(8, 4), s.t_end = 1;
+      s.model = CollisionModel(m);
+      for (const ModelParameter* q : listed) s.set_parameter(q->name, q->example);
+      EXPECT_NE(physics_toml(s).find(std::string(p->name) + " = "), std::string::npos) << key;
+      const Scene back = parse_scene(s.to_toml(), "back", {});
+      EXPECT_EQ(back.parameter(p->name), p->example) << key;
+    }
+  }
+  EXPECT_THROW(Scene().parameter("sticky"), std::logic_error);
+  EXPECT_THROW(Scene().set_parameter("sticky", 1), std::logic_error);
+}
+
 }  // namespace
 }  // namespace coolgas

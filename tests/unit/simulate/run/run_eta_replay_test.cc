@@ -43,8 +43,8 @@ Curve read_curve(const std::filesystem::path& path) {
         if (key == "N") c.params.N = std::stoll(value);
         if (key == "L") c.params.L = std::stod(value);
         if (key == "phi") c.params.phi = std::stod(value);
-        if (key == "r0") c.params.r0 = std::stod(value);
-        if (key == "delta") c.params.delta = std::stod(value);
+        if (key == "r0") c.params.collision["r0"] = std::stod(value);
+        if (key == "delta") c.params.collision["delta"] = std::stod(value);
       }
     } else if (!line.empty() && line[0] != '#' && line[0] != 't') {
       std::istringstream row(line);

@@ -31,7 +31,7 @@ RunEta power_law_run(double L, double p) { return power_law_run(RunEta(L), p); }
 
 RunParameters gas(const std::string& model, double L, double phi, double r0, double delta) {
   RunParameters p;
-  p.model = model, p.N = 1000, p.L = L, p.phi = phi, p.r0 = r0, p.delta = delta;
+  p.model = model, p.N = 1000, p.L = L, p.phi = phi, p.collision["r0"] = r0, p.collision["delta"] = delta;
   return p;
 }
 
@@ -99,7 +99,7 @@ TEST(RunEta, EachModelGetsItsOwnRule) {
   EXPECT_NEAR(power_law_run(run_eta_for(gas("inelastic", 1e6, 0.208, 0.1, 1e-4), Geometry(3)), 0.2).expected_collisions(1e4),
               now * std::pow(100.0, clustering_floor(0.208, 0.1, 1e-4)), tol);
   RunParameters visco = gas("viscoelastic", 1e6, 0.208, 1, 0);
-  visco.r0 = visco.delta = std::nullopt;
+  visco.collision.clear();
   EXPECT_NEAR(power_law_run(run_eta_for(visco, Geometry(3)), 0.2).expected_collisions(1e4),
               power_law_run(eta_of_cooling_gas(visco), 0.2).expected_collisions(1e4), tol);
   RunParameters elastic = gas("elastic", 2, 0.208, 1, 0);

@@ -35,7 +35,7 @@ std::string error_of(const std::vector<std::string>& overrides, const std::strin
 TEST(Scene, BoxSideFollowsFromNAndPhi) {
   const Scene s = parse_scene(kScene, "s.toml", {});
   EXPECT_NEAR(double(s.N) * M_PI / (6 * s.L * s.L * s.L), 0.208, 1e-15);
-  EXPECT_EQ(s.r0, 0.1);
+  EXPECT_EQ(s.parameter("r0"), 0.1);
   const Scene t = parse_scene(kScene, "s.toml", {"system.N=8000"});
   EXPECT_NEAR(t.L, 2 * s.L, 1e-12);  // 8x the particles at the same phi: twice the side
 }

@@ -16,12 +16,12 @@ TEST(EffectsScene, ViscoelasticRoundTripsThroughToToml) {
                                               "collision.delta=1e-5"});
   EXPECT_EQ(s.model, CollisionModel::kViscoelastic);
   EXPECT_EQ(s.model_name(), "viscoelastic");
-  EXPECT_EQ(s.viscoelastic_b, 0.125);
-  EXPECT_EQ(s.r0, 1.0);  // unused by this model
+  EXPECT_EQ(s.parameter("viscoelastic_b"), 0.125);
+  EXPECT_EQ(s.parameter("r0"), 1.0);  // unused by this model
   const Scene back = parse_scene(s.to_toml(), "round trip", {});
   EXPECT_EQ(back.model, s.model);
-  EXPECT_EQ(back.viscoelastic_b, s.viscoelastic_b);
-  EXPECT_EQ(back.delta, s.delta);
+  EXPECT_EQ(back.parameter("viscoelastic_b"), s.parameter("viscoelastic_b"));
+  EXPECT_EQ(back.parameter("delta"), s.parameter("delta"));
   EXPECT_EQ(back.to_toml(), s.to_toml());
 }
 

@@ -1,4 +1,4 @@
-#include "analyze/structure/fourier_grid.h"
+#include "analyze/fourier/fourier_grid.h"
 
 #include <algorithm>
 #include <new>
