@@ -43,7 +43,7 @@ FreeFlight free_flight(std::size_t n, Geometry g, std::uint64_t seed) {
 
 // Writes the dumps at kTimes: positions wrapped into [0, L), images counting the wraps.
 std::string write_run(const std::string& name, const FreeFlight& f, Geometry g) {
-  const std::string path = test::scratch_dir(name) + "/run.h5";
+  std::string path = test::scratch_dir(name) + "/run.h5";
   const std::size_t n = f.x0.size() / 3;
   RunParameters p;
   p.N = std::int64_t(n);
