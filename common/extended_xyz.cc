@@ -13,6 +13,7 @@
 #include "common/error.h"
 #include "common/geometry.h"
 #include "common/memory.h"
+#include "common/text_line.h"
 
 namespace coolgas {
 
@@ -79,7 +80,11 @@ struct Parser {
   }
 
   bool next(std::string& line) {
-    if (!std::getline(in, line)) return false;
+    try {
+      if (!next_line(in, line, kMaxLineBytes, "an extended XYZ file's")) return false;
+    } catch (const LineRefused& e) {
+      fail_at(line_no + 1, e.what());
+    }
     ++line_no;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     return true;
@@ -218,7 +223,7 @@ double temperature(const Parser& p, const std::string& text) {
 // The count line is only a claim: a damaged or hostile file may say 10^9
 // particles and hold a few lines. Each particle line is at least a word and
 // a newline (the last may lack it), so the rest of the file bounds the count
-// (shorter lines are then refused naming the line); the machine's memory
+// (shorter lines are then refused naming the line); the memory available
 // bounds it too. Both before anything is allocated.
 void check_count(const Parser& p, long count_line, std::size_t n) {
   if (p.size) {
@@ -229,10 +234,10 @@ void check_count(const Parser& p, long count_line, std::size_t n) {
                                 " left in the file hold at most " + format_number(std::floor((left + 1) / 2)) +
                                 " lines (a cut or damaged file?)");
   }
-  const double bytes = double(n) * 8 * 8, memory = physical_memory_bytes();  // pos, velo: 3 each; diameter, mass
+  const double bytes = double(n) * 8 * 8, memory = usable_memory_bytes();  // pos, velo: 3 each; diameter, mass
   if (bytes > memory)
     p.fail_at(count_line, "the count line says " + std::to_string(n) + " particles, which need " + bytes_text(bytes) +
-                              "; this machine has " + bytes_text(memory));
+                              "; the memory available is " + bytes_text(memory));
 }
 
 // Disks and rods have no extent across the box's periodic directions: each

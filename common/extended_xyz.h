@@ -49,7 +49,7 @@ void write_xyz_frame(std::ostream& out, const XyzFrame& frame, const Provenance&
 // coordinates there are then set to 0), missing positions, a short or unreadable line,
 // `time` asked for but a frame without Time=, a Time= that is not finite and
 // >= 0, a T0= that is not finite and > 0, a count line claiming more particles
-// than the rest of the stream (when it can seek) or this machine's memory can
+// than the rest of the stream (when it can seek) or the memory available can
 // hold (checked before anything is allocated).
 XyzFrame read_xyz_frame(std::istream& in, const std::string& source, std::optional<double> time);
 

@@ -1,8 +1,13 @@
 #include "common/fault_point.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
 #include <string>
 #include <vector>
@@ -22,21 +27,22 @@ struct SignalName {
   int signal;
   const char* name;
 };
-constexpr int kHold = -1;  // WAIT: no signal raised, the run holds until one comes
-constexpr SignalName kSignals[] = {
-    {SIGKILL, "KILL"}, {SIGINT, "INT"}, {SIGTERM, "TERM"}, {SIGHUP, "HUP"}, {kHold, "WAIT"}};
+constexpr int kWait = 0;  // the WAIT action, among the signals
+constexpr SignalName kActions[] = {
+    {SIGKILL, "KILL"}, {SIGINT, "INT"}, {SIGTERM, "TERM"}, {SIGHUP, "HUP"}, {kWait, "WAIT"}};
 
 struct Fault {
   std::int64_t count = 1;   // the passage that faults
   std::int64_t passed = 0;  // passages so far
-  int signal = SIGKILL;
-  std::string text;  // as given
+  int signal = SIGKILL;     // or kWait
+  std::string text;         // as given
+  std::string ready;        // WAIT: the file to create
 };
 Fault g_fault;
 
 [[noreturn]] void refuse(const std::string& value, const std::string& why) {
   throw InputError("COOLGAS_FAULT = '" + shown(value) + "': " + why +
-                   " (POINT[:COUNT][:SIGNAL], a test's fault: docs/reliability.md)");
+                   " (POINT[:COUNT][:ACTION], a test's fault: docs/reliability.md)");
 }
 
 std::vector<std::string> fields_of(const std::string& s) {
@@ -50,30 +56,51 @@ std::vector<std::string> fields_of(const std::string& s) {
   return fields;
 }
 
-// WAIT: the run holds until SIGINT, SIGTERM or SIGHUP arrives (the handler
-// of common/interrupt.h records it), then goes on to handle it. The signals
-// are blocked from the test of the flag to the wait, which unblocks them, so
-// that one arriving in between is not missed. The line is written even under
-// --quiet: it is how a test knows the run is there.
-void hold() {
-  sigset_t stops, before;
-  sigemptyset(&stops);
-  for (const int s : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&stops, s);
-  sigprocmask(SIG_BLOCK, &stops, &before);
-  std::fprintf(stderr, "coolgas-simulate: fault: holding at COOLGAS_FAULT = '%s' until SIGINT, SIGTERM or SIGHUP\n",
+// The signals a WAIT ends on: the interrupts, whose handler records them
+// (common/interrupt.h), and SIGCONT, "go on as if nothing happened".
+constexpr int kWaitSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGCONT};
+volatile std::sig_atomic_t g_continued = 0;
+extern "C" void record_continue(int) { g_continued = 1; }
+
+// WAIT: the ready file appears only once the signals are blocked, and they
+// are unblocked only inside sigsuspend, so a signal sent as soon as the
+// file is seen is never lost, however soon that is. (A file that cannot be
+// created ends the program, with one line: a test must not wait forever.)
+void wait_for_signal() {
+  sigset_t watched, before;
+  sigemptyset(&watched);
+  for (const int s : kWaitSignals) sigaddset(&watched, s);
+  sigprocmask(SIG_BLOCK, &watched, &before);
+  struct sigaction cont {}, cont_before {};
+  cont.sa_handler = record_continue;
+  sigemptyset(&cont.sa_mask);
+  sigaction(SIGCONT, &cont, &cont_before);
+  // Said on stderr even under --quiet: a scheduler's log shows where the run
+  // was held (tests/cli/slurm_cluster_test.sh looks for it).
+  std::fprintf(stderr, "coolgas: fault: holding at COOLGAS_FAULT = '%s' until SIGINT, SIGTERM, SIGHUP or SIGCONT\n",
                g_fault.text.c_str());
-  while (!interrupted()) sigsuspend(&before);
+  if (!g_fault.ready.empty()) {
+    const int fd = ::open(g_fault.ready.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd < 0) {
+      std::fprintf(stderr, "coolgas: COOLGAS_FAULT_READY = '%s': cannot create it: %s\n", g_fault.ready.c_str(),
+                   std::strerror(errno));
+      std::_Exit(kExitFailure);
+    }
+    ::close(fd);
+  }
+  sigset_t during = before;
+  for (const int s : kWaitSignals) sigdelset(&during, s);
+  while (interrupt_signal() == 0 && !g_continued) sigsuspend(&during);
+  sigaction(SIGCONT, &cont_before, nullptr);
   sigprocmask(SIG_SETMASK, &before, nullptr);
 }
 
-// The fault happens: a signal other than SIGKILL is raised once (or WAIT
-// holds once) and the program goes on (the signal's handler decides what follows).
+// The fault happens: any action but KILL happens once and the program goes
+// on (a signal's handler decides what follows).
 void fire() {
   if (g_fault.signal != SIGKILL) armed = FaultPoint::kNone;
-  if (g_fault.signal == kHold)
-    hold();
-  else
-    std::raise(g_fault.signal);
+  if (g_fault.signal == kWait) wait_for_signal();
+  else std::raise(g_fault.signal);
 }
 
 }  // namespace
@@ -105,10 +132,14 @@ const char* arm() {
     f.count = n;
   }
   if (fields.size() > 2) {
-    f.signal = 0;
-    for (const SignalName& sig : kSignals)
-      if (fields[2] == sig.name) f.signal = sig.signal;
-    if (f.signal == 0) refuse(value, "SIGNAL '" + shown(fields[2]) + "' is not KILL, INT, TERM, HUP or WAIT");
+    f.signal = -1;
+    for (const SignalName& a : kActions)
+      if (fields[2] == a.name) f.signal = a.signal;
+    if (f.signal == -1) refuse(value, "ACTION '" + shown(fields[2]) + "' is not KILL, INT, TERM, HUP or WAIT");
+  }
+  if (f.signal == kWait) {
+    const char* ready = std::getenv("COOLGAS_FAULT_READY");
+    if (ready) f.ready = ready;
   }
   f.text = value;
   g_fault = f;
@@ -128,6 +159,7 @@ void after_events(std::int64_t done) {
 }  // namespace fault_detail
 
 const char* arm_fault_from_environment() { return fault_detail::arm(); }
+const char* armed_fault() { return fault_detail::g_fault.text.c_str(); }
 std::int64_t fault_events_left(std::int64_t done) { return fault_detail::events_left(done); }
 void fault_after_events(std::int64_t done) { fault_detail::after_events(done); }
 

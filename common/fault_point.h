@@ -1,20 +1,27 @@
-// Test-only faults at named points: COOLGAS_FAULT=POINT[:COUNT][:SIGNAL]
-// makes coolgas-simulate stop at the COUNT-th passage (default 1) of POINT
-// as if it had been sent SIGKILL there: raise(SIGKILL), so nothing is
-// flushed and no handler runs, and the exit status is a killed process's.
-// With SIGNAL = INT, TERM or HUP that signal is raised instead, once, and
-// its handler (common/interrupt.h) takes over as for a signal from outside.
-// With WAIT the run holds there, once, saying so on stderr, until SIGINT,
-// SIGTERM or SIGHUP comes from outside, and then handles it as anywhere
-// else: a scheduler's signal or kill then finds the run at a known point,
-// whenever it comes (tests/cli/slurm_cluster_test.sh).
-// This lets a test stop a run at a chosen moment of its life instead of at a
-// moment of wall time (docs/reliability.md, "Faults at named points").
+// Test-only faults at named points: COOLGAS_FAULT=POINT[:COUNT][:ACTION]
+// makes a coolgas program act at the COUNT-th passage (default 1) of POINT:
+// - KILL (the default): stop as if sent SIGKILL there: raise(SIGKILL), so
+//   nothing is flushed and no handler runs, and the exit status is a
+//   killed process's;
+// - INT, TERM or HUP: raise that signal, once; its handler
+//   (common/interrupt.h) takes over as for a signal from outside;
+// - WAIT: say so on stderr, create the file COOLGAS_FAULT_READY names (if
+//   it names one) and sleep there until
+//   SIGINT, SIGTERM or SIGHUP reaches the handler (then go on, and stop at
+//   the next look at the flag), SIGCONT comes (go on as if nothing
+//   happened) or a signal ends the process: a test polls for the file,
+//   then acts (reads the file, starts a second writer, sends a signal)
+//   while the program is known to be at that point; a scheduler's signal or
+//   kill finds a held run at a known point whenever it comes
+//   (tests/cli/slurm_cluster_test.sh).
+// This lets a test act at a chosen moment of a program's life instead of at
+// a moment of wall time (docs/reliability.md, "Faults at named points").
 //
-// The variable is read once, by arm_fault_from_environment(). A point costs
-// one comparison with a global where it is reached, on a path that writes
-// or reads a file; `events` only bounds the run driver's slice of events,
-// so the engine's loop is untouched. The points are listed here, once.
+// The variable is read once, by arm_fault_from_environment() (every tool's
+// run_tool, common/tool_main.h). A point costs one comparison with a global
+// where it is reached, on a path that writes or reads a file or between
+// units of a loop's work; `events` only bounds the run driver's slice of
+// events, so the engine's loop is untouched. The points are listed here, once.
 #pragma once
 #include <cstdint>
 
@@ -31,6 +38,8 @@ enum class FaultPoint : std::uint8_t {
   kResumeReopened,    // a resume with the file open for appending, an interrupted burst dropped
   kDumpFrame,         // a dump's rows written, nothing flushed
   kDumpFlushed,       // a dump's rows flushed, its completion row not yet written
+  kEquilibration,     // the set-up's equilibration after its COUNT-th slice of events
+  kInterruptCheck,    // a loop's COUNT-th look at the interrupt flag (interrupted(), common/interrupt.h)
 };
 
 struct FaultPointName {
@@ -47,6 +56,8 @@ inline constexpr FaultPointName kFaultPoints[] = {
     {FaultPoint::kResumeReopened, "resume-reopened"},
     {FaultPoint::kDumpFrame, "dump-frame"},
     {FaultPoint::kDumpFlushed, "dump-flushed"},
+    {FaultPoint::kEquilibration, "equilibration"},
+    {FaultPoint::kInterruptCheck, "interrupt-check"},
 };
 
 namespace fault_detail {
@@ -54,9 +65,12 @@ inline FaultPoint armed = FaultPoint::kNone;
 void reached();
 }  // namespace fault_detail
 
-// Reads COOLGAS_FAULT (unset or empty: no fault). InputError naming the
-// variable when it is malformed. Returns the text of an armed fault, or "".
+// Reads COOLGAS_FAULT (unset or empty: no fault) and, for WAIT,
+// COOLGAS_FAULT_READY. InputError naming the variable when it is malformed.
+// Returns the text of an armed fault, or "".
 const char* arm_fault_from_environment();
+// The text of the armed fault, or "" (for a program's note that it runs one).
+const char* armed_fault();
 
 // The named point `p`: nothing unless it is armed.
 inline void fault_point(FaultPoint p) {

@@ -809,18 +809,18 @@ std::string shape_text(const std::vector<hsize_t>& dims) {
 }  // namespace
 
 void check_read_fits(hid_t dataset, double values, std::size_t value_size, const std::string& what) {
-  const double memory = physical_memory_bytes(), bytes = values * double(value_size);
+  const double memory = usable_memory_bytes(), bytes = values * double(value_size);
   if (bytes > memory)
     throw InputError("'" + file_of(dataset) + "': dataset '" + name_of(dataset) + "' of shape " +
                      shape_text(shape(dataset)) + " would need " + bytes_text(bytes) + " to read" + what +
-                     "; this machine has " + bytes_text(memory) + " (a damaged file?)");
+                     "; the memory available is " + bytes_text(memory) + " (a damaged file?)");
 }
 
 namespace {
 
 // The values of dims[from..]: counted in double, as a damaged or hostile
 // file may declare a shape whose product overflows; refused (InputError)
-// when they would not fit in this machine's memory, before any allocation.
+// when they would not fit in the memory available, before any allocation.
 std::size_t values_to_read(hid_t dataset, const std::vector<hsize_t>& dims, std::size_t from, std::size_t value_size) {
   double n = 1;
   for (std::size_t k = from; k < dims.size(); ++k) n *= double(dims[k]);

@@ -182,12 +182,12 @@ void read_rows(hid_t dataset, Type type, hsize_t first, hsize_t count, void* out
 
 // Refuses (InputError naming the file, the dataset and its shape) a read of
 // `values` values of `value_size` bytes each from `dataset` that would not
-// fit in this machine's memory; `what` says what is read (" one row"). For
+// fit in the memory available (common/memory.h); `what` says what is read (" one row"). For
 // readers that allocate themselves, before they do.
 void check_read_fits(hid_t dataset, double values, std::size_t value_size, const std::string& what = "");
 
 // Both refuse (InputError naming the dataset and its shape) a read that would
-// not fit in this machine's memory, before allocating anything.
+// not fit in the memory available, before allocating anything.
 template <class T>
 std::vector<T> read_all(hid_t dataset);
 // Reads row `row` of a dataset of shape (F, inner...) as a flat vector.

@@ -42,9 +42,12 @@ InterruptFlag interrupt_flag() { return &g_signal; }
 int interrupt_signal() { return g_signal; }
 
 void throw_if_interrupted(std::size_t done, std::size_t total, const char* units) {
-  if (interrupted())
-    throw Interrupted(interrupt_signal(), "after " + std::to_string(done) + " of " + std::to_string(total) + " " +
-                                              units + "; no table written");
+  if (interrupted()) throw interrupted_after(interrupt_signal(), done, total, units);
+}
+
+Interrupted interrupted_after(int signal, std::size_t done, std::size_t total, const char* units) {
+  return Interrupted(signal, "after " + std::to_string(done) + " of " + std::to_string(total) + " " + units +
+                                 "; no table written");
 }
 
 std::string signal_name(int signal) {

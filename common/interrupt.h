@@ -16,6 +16,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/fault_point.h"
+
 namespace coolgas {
 
 // Points at the signal number once SIGINT or SIGTERM arrived, else at 0
@@ -46,8 +48,14 @@ int interrupt_signal();
 // "SIGINT", "SIGTERM", "SIGHUP" or "signal N".
 std::string signal_name(int signal);
 
-// Whether a signal has arrived.
-inline bool interrupted() { return interrupt_signal() != 0; }
+// Whether a signal has arrived: a loop's look at the flag, which a test's
+// fault `interrupt-check` counts (common/fault_point.h: it raises a signal
+// at the COUNT-th look, or waits there for one, so a test stops a loop in
+// its middle without timing; the engines read the flag themselves, uncounted).
+inline bool interrupted() {
+  fault_point(FaultPoint::kInterruptCheck);
+  return interrupt_signal() != 0;
+}
 // Throws Interrupted(signal, where) once a signal has arrived. (A loop whose
 // message needs numbers builds it only when interrupted().)
 inline void throw_if_interrupted(const char* where) {
@@ -56,5 +64,8 @@ inline void throw_if_interrupted(const char* where) {
 // The check of a loop whose table is written only when the loop is done:
 // "after DONE of TOTAL UNITS; no table written".
 void throw_if_interrupted(std::size_t done, std::size_t total, const char* units);
+// The same stop for a signal that came inside a unit (a replica's own
+// search), reported as a stop between units.
+Interrupted interrupted_after(int signal, std::size_t done, std::size_t total, const char* units);
 
 }  // namespace coolgas

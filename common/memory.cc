@@ -11,12 +11,12 @@
 
 namespace coolgas {
 
+namespace {
+
 double physical_memory_bytes() {
   const long pages = sysconf(_SC_PHYS_PAGES), size = sysconf(_SC_PAGE_SIZE);
   return pages > 0 && size > 0 ? double(pages) * double(size) : std::numeric_limits<double>::infinity();
 }
-
-namespace {
 
 // memory.max of this process's cgroup (version 2), if it has a number there.
 double cgroup_limit_bytes() {

@@ -19,6 +19,7 @@
 
 #include "common/did_you_mean.h"
 #include "common/error.h"
+#include "common/fault_point.h"
 #include "common/interrupt.h"
 #include "common/version.h"
 
@@ -84,6 +85,7 @@ void report(const std::string& tool, const std::string& kind, const std::string&
 
 int run_body(const std::string& tool, const std::function<int()>& body) {
   try {
+    arm_fault_from_environment();  // a test's fault at a named point (common/fault_point.h)
     return body();
   } catch (const InputError& e) {
     report(tool, "error", e.what());

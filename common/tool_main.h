@@ -27,7 +27,8 @@ namespace coolgas {
 //   "<tool>: interrupted by SIGINT <where>" and exit code 3; std::bad_alloc ->
 //   "out of memory" and exit 1, any other std::exception -> "<tool>:
 //   internal error: <what>" and exit 1; every message is one line of at most
-//   kMaxMessageChars characters (common/error.h).
+//   kMaxMessageChars characters (common/error.h);
+// - a test's fault (COOLGAS_FAULT, common/fault_point.h) is armed first.
 int run_tool(const std::string& tool, const std::function<int()>& body);
 
 // Parses the command line with CLI11. Returns true when --help or --version

@@ -1,15 +1,14 @@
 #include "common/tsv.h"
 
-#include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 
 #include "common/error.h"
 #include "common/interrupt.h"
+#include "common/text_line.h"
 #include "common/version.h"
 
 namespace coolgas {
@@ -127,36 +126,13 @@ void read_column_line(Table& t, const std::vector<std::string>& names, const std
   t.columns = names;
 }
 
-// std::getline with a bound: the next line of `in` (without its newline)
-// into `line`, false at the end of the input. A line longer than
-// `limit` bytes is refused as soon as its limit + 1st byte is read, so a
-// device without newlines (/dev/zero) costs at most `limit` bytes.
-bool next_line(std::istream& in, std::string& line, std::size_t limit, const std::string& source, long lineno) {
-  line.clear();
-  std::streambuf* buf = in.rdbuf();
-  if (!buf) return false;
-  // A file buffer throws when the system's read fails (a directory, an I/O
-  // error), where std::getline would set badbit: refused naming the cause.
-  const auto next = [&] {
-    errno = 0;
-    try {
-      return buf->sbumpc();
-    } catch (const std::exception&) {
-      throw InputError("cannot read table '" + source + "' (line " + std::to_string(lineno) +
-                       "): " + (errno ? std::strerror(errno) : "a read failed"));
-    }
-  };
-  bool any = false;
-  for (int c = next(); c != std::char_traits<char>::eof(); c = next()) {
-    any = true;
-    if (c == '\n') return true;
-    if (line.size() == limit)
-      throw InputError(source + ":" + std::to_string(lineno) + ": a line longer than " + std::to_string(limit) +
-                       " bytes; a table's lines are at most " + std::to_string(limit) + " bytes");
-    line.push_back(char(c));
+// The next line of a table (common/text_line.h), refused naming the line.
+bool next_table_line(std::istream& in, std::string& line, std::size_t limit, const std::string& source, long lineno) {
+  try {
+    return next_line(in, line, limit, "a table's");
+  } catch (const LineRefused& e) {
+    throw InputError(source + ":" + std::to_string(lineno) + ": " + e.what());
   }
-  in.setstate(std::ios::eofbit);
-  return any;
 }
 
 // Lines between two looks at the interrupt flag: a few microseconds of work.
@@ -170,7 +146,7 @@ Table read_table(std::istream& in, const std::string& source, const TableLimits&
   std::string line;
   int block = 0, blank_run = 0;
   long lineno = 0;
-  while (next_line(in, line, limits.line_bytes, source, lineno + 1)) {
+  while (next_table_line(in, line, limits.line_bytes, source, lineno + 1)) {
     ++lineno;
     if (lineno % kLinesPerInterruptCheck == 0 && interrupted())
       throw Interrupted(interrupt_signal(), "while reading " + source + " (at line " + std::to_string(lineno) +

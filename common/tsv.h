@@ -20,6 +20,8 @@
 #include <utility>
 #include <vector>
 
+#include "common/text_line.h"
+
 namespace coolgas {
 
 // The table format version written (data-schema/tsv-tables.md).
@@ -81,7 +83,7 @@ struct Table {
 // At the defaults a table takes at most about 1.2 GB in memory; no table a
 // coolgas tool writes comes near them.
 struct TableLimits {
-  std::size_t line_bytes = std::size_t(1) << 20;  // bytes of one line, its newline not counted (1 MiB)
+  std::size_t line_bytes = kMaxLineBytes;  // bytes of one line, its newline not counted (1 MiB, common/text_line.h)
   std::size_t rows = 10'000'000;                  // data rows (10^7)
   std::size_t numbers = 100'000'000;              // data rows x columns (10^8)
 };

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "common/error.h"
+#include "common/interrupt.h"
 #include "common/tool_main.h"
 #include "data-schema/validator.h"
 
@@ -24,12 +25,14 @@ constexpr const char* kDescription =
     "or still running writer leaves, are not checked.\n"
     "Objects the profile does not list are ignored (schema versions only add).\n"
     "Output: 'FILE: valid (...)' and exit 0, or one line 'FILE: PATH: PROBLEM' per problem on stdout\n"
-    "and exit 2. A missing or non-HDF5 file: one error line on stderr, exit 2.";
+    "and exit 2. A missing or non-HDF5 file: one error line on stderr, exit 2.\n"
+    "SIGINT/SIGTERM/SIGHUP stop the check with one line on stderr and exit 3.";
 
 }  // namespace
 
 int main(int argc, char** argv) {
   return coolgas::run_tool("coolgas-validate", [&]() -> int {
+    coolgas::watch_interrupts();  // reading every dump of a large file takes minutes: exit code 3
     CLI::App app(kDescription, "coolgas-validate");
     std::string file;
     app.add_option("FILE", file, "trajectory file (HDF5) to check")->required();

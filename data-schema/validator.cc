@@ -6,6 +6,7 @@
 #include <set>
 
 #include "common/hdf5_file.h"
+#include "common/interrupt.h"
 #include "common/trajectory/collision_models.h"
 #include "common/trajectory/frame_reader.h"
 #include "common/trajectory/layout.h"
@@ -71,11 +72,14 @@ class Checker {
     report_.problems.push_back({std::string(path), std::move(what)});
   }
 
-  // A read failure inside one object (corrupt chunk, ...) is that object's problem, not the end of the run.
+  // A read failure inside one object (corrupt chunk, ...) is that object's
+  // problem, not the end of the run; a signal is the end of it.
   template <class F>
   void guarded(std::string_view path, F&& body) {
     try {
       body();
+    } catch (const Interrupted&) {
+      throw;
     } catch (const std::exception& e) {
       problem(path, std::string("cannot read: ") + e.what());
     }
@@ -313,6 +317,7 @@ class Checker {
     const Trajectory trajectory(path_, kPosition | kDiameter | kAnyDimension);
     Frame frame;
     for (std::size_t dump = 0; dump < trajectory.dump_times().size(); ++dump) {
+      throw_if_interrupted(kInterruptedCheck);
       trajectory.read(dump, frame);
       const Finding f = check_no_overlaps(frame.position, frame.diameter, frame.id, frame.L, Geometry(d_));
       if (f) problem(path_of(layout::kPosition, "value"), "dump " + std::to_string(dump) + " (t = " +

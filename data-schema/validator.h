@@ -48,7 +48,9 @@ struct ValidateOptions {
   std::size_t block_values = std::size_t{1} << 20;
 };
 
-// Throws InputError if `path` is missing or not an HDF5 file.
+// Throws InputError if `path` is missing or not an HDF5 file, and
+// Interrupted (common/interrupt.h) once SIGINT/SIGTERM/SIGHUP arrived in a
+// program that watches them: a large file is minutes of reading.
 Report validate(const std::string& path, const Profile& profile = h5md_profile(), const ValidateOptions& options = {});
 
 // "FILE: /path: what"

@@ -9,6 +9,7 @@
 
 #include "common/close_pairs.h"
 #include "common/hdf5_file.h"
+#include "common/interrupt.h"
 #include "data-schema/hdf5_inspect.h"
 
 namespace coolgas::schema {
@@ -79,6 +80,7 @@ void for_each_block(hid_t dataset, const Scan& scan,
     for (hsize_t r = 0; r < dims[0]; r += rows) {
       start[0] = r;
       count[0] = std::min(rows, dims[0] - r);
+      throw_if_interrupted(kInterruptedCheck);
       read_slab(dataset, start, count, buf);
       visit(r * row, buf);
     }
@@ -93,6 +95,7 @@ void for_each_block(hid_t dataset, const Scan& scan,
       start[0] = r;
       start[1] = j;
       count[1] = std::min(step, dims[1] - j);
+      throw_if_interrupted(kInterruptedCheck);
       read_slab(dataset, start, count, buf);
       visit(r * row + j * inner, buf);
     }

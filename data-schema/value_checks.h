@@ -25,8 +25,13 @@ struct Scan {
   hsize_t rows = std::numeric_limits<hsize_t>::max();
 };
 
+// Where a check stops on SIGINT/SIGTERM/SIGHUP (common/interrupt.h): before
+// a block or a dump, in coolgas-validate and in the check before a --resume.
+inline constexpr const char* kInterruptedCheck = "while checking the file; it is unchanged";
+
 // Reads a numeric dataset in row-major order as doubles, block by block;
 // visit gets the flat index of the block's first number and the numbers.
+// Stops with Interrupted between blocks once a signal arrived.
 void for_each_block(hid_t dataset, const Scan& scan,
                     const std::function<void(hsize_t first, std::span<const double> values)>& visit);
 

@@ -111,7 +111,12 @@ CollapseFit optimize_collapse_fixed_product(const std::vector<SizeEnsemble>& siz
       throw_if_interrupted(std::size_t(fit.replicas), runs, "jackknife replicas");
       std::vector<ScalingCurve> replica = means;
       replica[s] = ensemble_mean(without_run(sizes[s], r));
-      const double zr = std::exp(fixed::minimise(replica, product, z, search.min_overlap_decades).u);
+      double zr = 0;
+      try {  // a signal inside the replica's search stops the loop of replicas
+        zr = std::exp(fixed::minimise(replica, product, z, search.min_overlap_decades).u);
+      } catch (const Interrupted& e) {
+        throw interrupted_after(e.signal, std::size_t(fit.replicas), runs, "jackknife replicas");
+      }
       zs.push_back(zr);
       thetas.push_back(product / zr);
       ++fit.replicas;

@@ -65,6 +65,17 @@ Minimum minimise(const std::vector<ScalingCurve>& curves, double theta0, double 
   return best;
 }
 
+// A replica's search from the best point: a signal inside it (a search is
+// many simplex steps) stops the loop of replicas, "after DONE of TOTAL UNITS".
+Minimum replica_minimum(const std::vector<ScalingCurve>& replica, const Minimum& best, double min_overlap,
+                        std::size_t done, std::size_t total, const char* units) {
+  try {
+    return minimise(replica, best.theta, best.z, min_overlap);
+  } catch (const Interrupted& e) {
+    throw interrupted_after(e.signal, done, total, units);
+  }
+}
+
 // Each curve's ln E moved by its standard error times a normal deviate.
 std::vector<ScalingCurve> perturb(const std::vector<ScalingCurve>& curves, gsl_rng* rng) {
   std::vector<ScalingCurve> out = curves;
@@ -106,10 +117,11 @@ void jackknife_runs(const std::vector<SizeEnsemble>& sizes, const std::vector<Sc
     const std::size_t n = sizes[s].runs.size();
     std::vector<double> thetas, zs, products;
     for (std::size_t r = 0; r < n; ++r) {
-      throw_if_interrupted(std::size_t(fit.replicas), total_runs(sizes), "jackknife replicas");
+      const auto done = std::size_t(fit.replicas);
+      throw_if_interrupted(done, total_runs(sizes), "jackknife replicas");
       std::vector<ScalingCurve> replica = means;
       replica[s] = ensemble_mean(without_run(sizes[s], r));
-      const Minimum m = minimise(replica, best.theta, best.z, min_overlap);
+      const Minimum m = replica_minimum(replica, best, min_overlap, done, total_runs(sizes), "jackknife replicas");
       thetas.push_back(m.theta);
       zs.push_back(m.z);
       products.push_back(m.z * m.theta);
@@ -134,7 +146,8 @@ void bootstrap(const std::vector<ScalingCurve>& curves, const Minimum& best, con
     throw_if_interrupted(std::size_t(b), std::size_t(search.bootstrap), "bootstrap replicas");
     const auto replica =
         fit.kind == BootstrapKind::kErrors ? perturb(curves, rng.get()) : resample_rows(curves, rng.get());
-    const Minimum m = minimise(replica, best.theta, best.z, search.min_overlap_decades);
+    const Minimum m = replica_minimum(replica, best, search.min_overlap_decades, std::size_t(b),
+                                      std::size_t(search.bootstrap), "bootstrap replicas");
     thetas.push_back(m.theta);
     zs.push_back(m.z);
     products.push_back(m.z * m.theta);

@@ -5,10 +5,12 @@
 
 #include "analyze/convert/tool.h"
 #include "common/error.h"
+#include "common/interrupt.h"
 #include "common/tool_main.h"
 
 int main(int argc, char** argv) {
   return coolgas::run_tool("coolgas-convert", [&] {
+    coolgas::watch_interrupts();  // its loop over dumps stops at SIGINT/SIGTERM: exit code 3
     coolgas::ConvertOptions o;
     std::string format = "xyz";
     CLI::App app{

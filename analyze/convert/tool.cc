@@ -6,6 +6,7 @@
 #include "analyze/convert/lammps_dump.h"
 #include "common/error.h"
 #include "common/extended_xyz.h"
+#include "common/interrupt.h"
 #include "common/trajectory/frame_reader.h"
 #include "common/version.h"
 
@@ -38,9 +39,14 @@ void run_convert(const ConvertOptions& opt, std::ostream& out) {
       opt.last ? std::vector<std::size_t>{t.dump_times().size() - 1} : t.dumps_nearest(opt.times, opt.exact_time);
   Provenance provenance{{"tool", "coolgas-convert"}, {"version", program_version()}};
   for (auto& p : t.provenance()) provenance.push_back(std::move(p));
+  // Each frame is written whole (formatting 10^7 particles takes seconds);
+  // a signal stops the stream between two frames.
   Frame f;
-  for (std::size_t dump : dumps) {
-    t.read(dump, f);
+  for (std::size_t i = 0; i < dumps.size(); ++i) {
+    if (interrupted())
+      throw Interrupted(interrupt_signal(), "after " + std::to_string(i) + " of " + std::to_string(dumps.size()) +
+                                                " dumps; the frames written so far are whole");
+    t.read(dumps[i], f);
     if (opt.format == ExportFormat::kXyz) write_xyz_frame(out, xyz_of(f, t.dimension()), provenance);
     else write_lammps_frame(out, f, t.geometry());
   }

@@ -5,10 +5,12 @@
 
 #include "analyze/energy/table.h"
 #include "common/error.h"
+#include "common/interrupt.h"
 #include "common/tool_main.h"
 
 int main(int argc, char** argv) {
   return coolgas::run_tool("coolgas-energy", [&] {
+    coolgas::watch_interrupts();  // its loop over the runs stops at SIGINT/SIGTERM: exit code 3
     coolgas::EnergyOptions o;
     CLI::App app{
         "Kinetic energy per particle E(t) from coolgas trajectories (H5MD). One file: that run; several files\n"

@@ -5,6 +5,7 @@
 #include "analyze/energy/ensemble.h"
 #include "common/dimension_line.h"
 #include "common/error.h"
+#include "common/interrupt.h"
 #include "common/tsv.h"
 
 namespace coolgas {
@@ -36,8 +37,14 @@ void write_energy_table(const EnergyOptions& options, std::ostream& out) {
   // Beyond 1e4 points per decade (steps of 0.02 %) the rows are interpolation only, and the table grows without bound.
   if (options.per_decade < 1 || options.per_decade > 10000)
     throw InputError("--per-decade " + std::to_string(options.per_decade) + " is not allowed; it must be in [1, 10000]");
+  // Hundreds of seeds' files (on a network file system) are minutes of
+  // reading: a signal stops it between two files. (The average itself is
+  // at most 10^4 rows per decade, seconds.)
   std::vector<EnergyRun> runs;
-  for (const auto& path : options.inputs) runs.push_back(load_energy_run(path));
+  for (std::size_t i = 0; i < options.inputs.size(); ++i) {
+    throw_if_interrupted(i, options.inputs.size(), "runs");
+    runs.push_back(load_energy_run(options.inputs[i]));
+  }
   require_same_physics(runs);
   // Everything is computed before the first line is written: an error leaves no half table.
   const auto rows = ensemble_energy(runs, options.per_decade);

@@ -53,3 +53,17 @@ TableBlock slab_block(double t, const CellFields& f) {
 }
 
 }  // namespace coolgas
+
+namespace coolgas {
+
+TableBlock fields_block(FieldsTable table, FourierGrid& grid, double t, double L, std::span<const double> positions,
+                        std::span<const double> velocities, std::span<const double> masses) {
+  const CellFields f = cell_fields(grid.n(), grid.geometry(), L, positions, velocities, masses);
+  if (table == FieldsTable::kSlab) return slab_block(t, f);
+  const FieldEnergies e = field_energies(f);
+  const FlowSplit s = flow_split(f, e.temperature, grid);
+  if (table == FieldsTable::kSpectrum) return spectrum_block(t, s);
+  return {"", {fields_row(t, f, e, s)}};
+}
+
+}  // namespace coolgas

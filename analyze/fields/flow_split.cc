@@ -46,8 +46,8 @@ FlowSplit flow_split(const CellFields& f, double temperature, FourierGrid& grid)
         std::complex<double> kj = 0;
         double j2 = 0;
         for (int a = 0; a < d; ++a) kj += k[a] * j[a][m], j2 += std::norm(j[a][m]);
-        // In 1D every flow is along k: no transverse part, not even round-off.
-        const double jl2 = std::norm(kj) / k2, jt2 = d == 1 ? 0 : std::max(0.0, j2 - jl2);
+        // With one axis every flow is along k: no transverse part, not even round-off.
+        const double jl2 = std::norm(kj) / k2, jt2 = f.g.spans(1) ? std::max(0.0, j2 - jl2) : 0;
         const double el = w * jl2 / (2 * M * M), et = w * jt2 / (2 * M * M);
         out.longitudinal += el, out.transverse += et;
         out.vorticity2 += w * k2 * jt2 / (M * M);

@@ -73,13 +73,10 @@ void run_fields(const FieldsOptions& opt, std::ostream& final_out) {
   Frame buffer;
   traj.for_each_dump(dumps, buffer, [&](const Frame& frame) {
     const std::span<const double> masses = traj.aggregates() ? std::span<const double>(frame.mass) : std::span<const double>();
-    const CellFields f = cell_fields(n, g, frame.L, frame.position, frame.velocity, masses);
-    const FieldEnergies e = field_energies(f);
-    const FlowSplit s = flow_split(f, e.temperature, grid);
-    if (table == FieldsTable::kSpectrum) out.write(spectrum_block(frame.time, s));
-    else if (table == FieldsTable::kSlab) out.write(slab_block(frame.time, f));
-    else out.row(fields_row(frame.time, f, e, s));
-    if (!opt.vti.empty()) write_vti(vti_path(opt.vti, frame.dump), f);
+    const TableBlock b = fields_block(table, grid, frame.time, frame.L, frame.position, frame.velocity, masses);
+    if (table == FieldsTable::kSeries) out.append(b);  // a row per dump, not a block
+    else out.write(b);
+    if (!opt.vti.empty()) write_vti(vti_path(opt.vti, frame.dump), cell_fields(n, g, frame.L, frame.position, frame.velocity, masses));
   });
   final_out << os.str();
 }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "common/error.h"
+#include "common/interrupt.h"
 #include "common/tsv.h"
 
 namespace coolgas {
@@ -65,6 +66,27 @@ Samples make_samples(const FitData& d) {
   return s;
 }
 
+// gsl_multifit_nlinear_driver(max_iterations, tol, tol, tol) as GSL 2.7
+// writes it, with a look at the interrupt flag before each iteration: one
+// iteration over 10^7 rows (the table bound) takes a second, and GSL's own
+// driver cannot be stopped (its callback cannot end it, and it ignores a
+// residual function's error). Returns the driver's status.
+int drive(gsl_multifit_nlinear_workspace* w, std::size_t max_iterations, double tol) {
+  int info = 0, status = GSL_CONTINUE;
+  std::size_t iterations = 0;
+  while (status == GSL_CONTINUE && iterations < max_iterations) {
+    throw_if_interrupted("during the Haff fit; no table written");
+    // No progress at the first iteration: no step lowers the cost, more will not help.
+    if (gsl_multifit_nlinear_iterate(w) == GSL_ENOPROG && iterations == 0) return GSL_EMAXITER;
+    ++iterations;
+    status = gsl_multifit_nlinear_test(tol, tol, tol, &info, w);
+  }
+  // Converged to machine precision is converged.
+  if (status == GSL_ETOLF || status == GSL_ETOLX || status == GSL_ETOLG) status = GSL_SUCCESS;
+  if (iterations >= max_iterations && status != GSL_SUCCESS) status = GSL_EMAXITER;
+  return status;
+}
+
 }  // namespace
 
 HaffFit fit_haff(const FitData& data) {
@@ -85,8 +107,7 @@ HaffFit fit_haff(const FitData& data) {
   double start[2] = {std::log(E0_guess), std::log(t0_guess)};
   gsl_vector_view x0 = gsl_vector_view_array(start, np);
   gsl_multifit_nlinear_init(&x0.vector, &fdf, w.get());
-  int info = 0;
-  const int status = gsl_multifit_nlinear_driver(500, 1e-12, 1e-12, 1e-12, nullptr, nullptr, &info, w.get());
+  const int status = drive(w.get(), 500, 1e-12);
   if (status != GSL_SUCCESS)
     throw InputError(std::string("Haff fit did not converge (") + gsl_strerror(status) +
                      "); check the window holds the early, Haff-like part of E(t)");

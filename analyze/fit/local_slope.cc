@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "common/error.h"
+#include "common/interrupt.h"
 #include "common/tsv.h"
 
 namespace coolgas {
@@ -30,6 +31,8 @@ std::vector<SlopePoint> local_slope(const FitData& data, double half_width_decad
   std::size_t lo = 0, hi = 0;  // the window [lo, hi) slides with i (t increasing)
   const double slack = 1e-9 * h;  // grid points exactly h apart still count as inside
   for (std::size_t i = 0; i < lt.size(); ++i) {
+    // A window may hold millions of rows (10^7 in a table): a look before each fit.
+    throw_if_interrupted("during the local slope; no table written");
     // A one-sided window near either end would be biased to first order in h.
     if (lt[i] - h < lt.front() - slack || lt[i] + h > lt.back() + slack) continue;
     while (lt[lo] < lt[i] - h - slack) ++lo;

@@ -5,10 +5,12 @@
 
 #include "analyze/fit/table.h"
 #include "common/error.h"
+#include "common/interrupt.h"
 #include "common/tool_main.h"
 
 int main(int argc, char** argv) {
   return coolgas::run_tool("coolgas-fit", [&] {
+    coolgas::watch_interrupts();  // reading 10^7 rows, a local slope or Haff fit of them: exit code 3
     coolgas::FitOptions o;
     bool power = false, slope = false, haff = false, no_weights = false;
     std::string window = ":", err;

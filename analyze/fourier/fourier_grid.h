@@ -10,6 +10,13 @@
 // The transform is unnormalised: forward() gives sum_x f(x) e^{-i k.x}.
 // A 2D grid (disks) is the same with one plane: n^2 points, iz = kz = 0; a
 // 1D grid (rods) with one row of that plane: n points, iy = iz = 0.
+//
+// A transform is one FFTW call, which a signal cannot stop in its middle
+// (FFTW has no hook for it; splitting it into planes and columns would
+// change its arithmetic): the tool acts on SIGINT/SIGTERM/SIGHUP at its
+// next look after the call. What keeps a call short is --grid's limit of
+// 1024 points a side (structure_table.cc): about 30 s of CPU at the limit,
+// a few seconds for 512^3 (tests/bench/README.md, `structure_bench fft N`).
 #pragma once
 #include <fftw3.h>
 

@@ -206,6 +206,7 @@ void bind_reading(py::module_& m);
 void bind_clusters(py::module_& m);
 void bind_velocity(py::module_& m);
 void bind_structure(py::module_& m);
+void bind_fields(py::module_& m);
 void bind_shape(py::module_& m);
 void bind_collapse(py::module_& m);
 void bind_smoluchowski(py::module_& m);

@@ -24,6 +24,7 @@ PYBIND11_MODULE(_core, m) {
   coolgas::python::bind_clusters(m);
   coolgas::python::bind_velocity(m);
   coolgas::python::bind_structure(m);
+  coolgas::python::bind_fields(m);
   coolgas::python::bind_shape(m);
   coolgas::python::bind_collapse(m);
   coolgas::python::bind_smoluchowski(m);

@@ -5,10 +5,14 @@
 
 #include "analyze/snapshot/tool.h"
 #include "common/error.h"
+#include "common/interrupt.h"
 #include "common/tool_main.h"
 
 int main(int argc, char** argv) {
   return coolgas::run_tool("coolgas-snapshot", [&] {
+    // A 1D file's dumps are read one by one and gnuplot runs for seconds: a
+    // signal stops it there (exit code 3) and its temporary folder is removed.
+    coolgas::watch_interrupts();
     coolgas::SnapshotToolOptions o;
     CLI::App app{
         "Picture (PNG, PDF or SVG by the extension of -o, drawn by gnuplot) of the particles of a coolgas trajectory at the dump\n"

@@ -17,6 +17,7 @@
 #include <system_error>
 
 #include "common/error.h"
+#include "common/interrupt.h"
 #include "common/tsv.h"
 
 namespace coolgas {
@@ -216,6 +217,8 @@ void render_with_gnuplot(const std::function<void(const fs::path& data)>& write,
     if (!script_file) throw WriteError("cannot write the gnuplot script to " + gp.string() + ": " + std::strerror(errno));
   }
   const int rc = run_gnuplot(opt.gnuplot, gp, log);
+  // Ctrl-C reaches gnuplot too (one process group): its exit is then no failure of its own.
+  throw_if_interrupted("while gnuplot drew the picture; no picture or table written");
   if (rc == 127)
     throw InputError("cannot run gnuplot ('" + opt.gnuplot +
                      "'): not found; install the gnuplot package or pass --gnuplot PATH");

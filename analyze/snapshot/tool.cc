@@ -7,6 +7,7 @@
 #include "analyze/snapshot/space_time.h"
 #include "common/trajectory/frame_reader.h"
 #include "common/error.h"
+#include "common/interrupt.h"
 #include "common/memory.h"
 #include "common/output_file.h"
 #include "common/tsv.h"
@@ -71,13 +72,14 @@ struct RodDumps {
 };
 
 // The rows are held until gnuplot runs: refused before reading when they
-// would not fit the machine's memory.
+// would not fit the memory available.
 void check_rows_fit(const Trajectory& traj, std::size_t last) {
   const double bytes = double(last + 1) * double(traj.particles()) * sizeof(SpaceTimeRod);
-  if (bytes > physical_memory_bytes())
+  const double memory = usable_memory_bytes();
+  if (bytes > memory)
     throw InputError(traj.path() + ": " + std::to_string(last + 1) + " dumps of " + std::to_string(traj.particles()) +
-                     " rods take " + bytes_text(bytes) + ", more than this machine's memory (" +
-                     bytes_text(physical_memory_bytes()) + "); give an earlier --time");
+                     " rods take " + bytes_text(bytes) + ", more than the memory available (" + bytes_text(memory) +
+                     "); give an earlier --time");
 }
 
 RodDumps read_rod_dumps(const std::string& path, std::size_t last) {
@@ -86,6 +88,9 @@ RodDumps read_rod_dumps(const std::string& path, std::size_t last) {
   RodDumps dumps;
   Frame f;
   for (std::size_t d = 0; d <= last; ++d) {
+    if (interrupted())
+      throw Interrupted(interrupt_signal(), "after " + std::to_string(d) + " of " + std::to_string(last + 1) +
+                                                " dumps; no picture or table written");
     traj.read(d, f);
     dumps.rows.push_back(space_time_row(f.time, f.position, f.velocity,
                                         traj.aggregates() ? std::span<const double>(f.mass) : std::span<const double>()));

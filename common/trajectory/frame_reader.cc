@@ -106,11 +106,11 @@ void Trajectory::check_element(const std::string& element, bool vector, hsize_t 
   const auto n = static_cast<std::int64_t>(dims[1]);
   if (n < 1) throw InputError(path_ + ": " + element + "/value holds no particles");
   // Checked before a frame's buffers are sized by it (a damaged file may declare any shape).
-  const double bytes = double(n) * double(per_particle) * 8, memory = physical_memory_bytes();
+  const double bytes = double(n) * double(per_particle) * 8, memory = usable_memory_bytes();
   if (n > kMaxStoredParticles || bytes > memory)
     throw InputError(path_ + ": " + element + "/value holds rows of " + std::to_string(n) + " particles (" +
                      bytes_text(bytes) + " per dump); a trajectory holds at most " +
-                     std::to_string(kMaxStoredParticles) + " (32-bit ids), and this machine has " + bytes_text(memory));
+                     std::to_string(kMaxStoredParticles) + " (32-bit ids), and the memory available is " + bytes_text(memory));
   if (n_ != 0 && n != n_)
     throw InputError(path_ + ": " + element + "/value has " + std::to_string(n) + " particles, other elements " +
                      std::to_string(n_));

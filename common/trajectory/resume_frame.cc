@@ -43,10 +43,10 @@ struct Reader {
 
   // The last dump's arrays, N times `bytes_per_particle`, must fit in memory.
   void check_memory(std::int64_t N, double bytes_per_particle) const {
-    const double need = double(N) * bytes_per_particle, have = physical_memory_bytes();
+    const double need = double(N) * bytes_per_particle, have = usable_memory_bytes();
     if (need > have)
       fail("/parameters/N = " + std::to_string(N) + " particles need " + bytes_text(need) +
-           " for the last dump alone; this machine has " + bytes_text(have));
+           " for the last dump alone; the memory available is " + bytes_text(have));
   }
 
   std::int64_t counter(std::string_view dataset, hsize_t row) const {

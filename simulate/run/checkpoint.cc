@@ -51,9 +51,9 @@ std::optional<std::vector<char>> checkpoint_bytes(const std::string& path) {
     refuse(path, std::strerror(errno));
   }
   if (!S_ISREG(st.st_mode)) refuse(path, "it is not a regular file (a directory, device, pipe or socket)");
-  const double memory = physical_memory_bytes();
+  const double memory = usable_memory_bytes();
   if (double(st.st_size) > memory)
-    refuse(path, "its " + bytes_text(double(st.st_size)) + " do not fit in this machine's " + bytes_text(memory));
+    refuse(path, "its " + bytes_text(double(st.st_size)) + " do not fit in the memory available (" + bytes_text(memory) + ")");
   std::ifstream f(path, std::ios::binary);
   std::vector<char> bytes(static_cast<std::size_t>(st.st_size));
   if (!f || !f.read(bytes.data(), std::streamsize(bytes.size())) || f.peek() != std::ifstream::traits_type::eof())

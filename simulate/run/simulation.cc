@@ -415,7 +415,7 @@ int run_simulation(const SimulationRequest& req) {
   // Installed first, so a signal during set-up is noticed (a shell starts
   // background jobs with SIGINT ignored, and the default would leave no message).
   watch_interrupts();
-  const std::string fault = arm_fault_from_environment();
+  const std::string fault = armed_fault();  // armed by run_tool (common/tool_main.h)
   if (!fault.empty() && !req.quiet) std::cerr << "coolgas-simulate: note: COOLGAS_FAULT = '" << fault << "' (a test's fault)\n";
   return req.resume.empty() ? start_new(req) : resume(req);
 }

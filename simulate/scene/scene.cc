@@ -480,7 +480,7 @@ std::string dumps_blame(const Scene& s, double extra) {
 void check_scene_size(const Scene& s) {
   const std::string box = check_box_fits_grid(s.L, 1.0);
   if (!box.empty()) throw InputError(box);
-  check_scene_cost(s, physical_memory_bytes());
+  check_scene_cost(s, usable_memory_bytes());
 }
 
 void check_scene_cost(const Scene& s, double memory_bytes) {
@@ -497,7 +497,7 @@ void check_scene_cost(const Scene& s, double memory_bytes) {
   if (bytes > memory_bytes)
     throw InputError("the scene needs about " + bytes_text(bytes) + " of memory (" + format_number(n) +
                      " particles, " + format_number(kBytesPerParticle) + " B each, and " + about(cells) +
-                     " grid cells, " + format_number(kBytesPerCell) + " B each); this machine has " +
+                     " grid cells, " + format_number(kBytesPerCell) + " B each); the memory available is " +
                      bytes_text(memory_bytes));
   const double equilibration = n * s.equilibrate / 2;
   if (equilibration > kMaxEquilibrationCollisions)

@@ -134,8 +134,8 @@ inline constexpr double kMaxFccPhi = 0.7404;
 // cost is absurd (memory, collisions, rows and dumps; see check_scene_cost).
 Scene parse_scene(const std::string& toml_text, const std::string& source, const std::vector<std::string>& overrides);
 
-// The most the scene may cost (check_scene_cost); the machine's memory is
-// read at run time.
+// The most the scene may cost (check_scene_cost); the memory available
+// (common/memory.h) is read at run time.
 inline constexpr double kBytesPerParticle = 180;  // engine, measured (tests/bench/README.md)
 inline constexpr double kBytesPerCell = 20;       // the gas engine's grid of L^3 cells, measured
 inline constexpr double kMaxCells = kMaxIndex32;      // cell indices are 32-bit
@@ -152,7 +152,7 @@ inline constexpr int kMaxSceneNesting = 16;
 void check_scene_cost(const Scene& scene, double memory_bytes);
 
 // The checks that need the box: it fits the cell grid, and the cost against
-// this machine's memory. parse_scene() makes them; a start from a file,
+// the memory available. parse_scene() makes them; a start from a file,
 // whose size is known only once the file is read, makes them then.
 void check_scene_size(const Scene& scene);
 

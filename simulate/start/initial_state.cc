@@ -7,6 +7,7 @@
 #include <string>
 
 #include "common/error.h"
+#include "common/fault_point.h"
 #include "common/tsv.h"
 #include "simulate/engine/engine.h"
 #include "common/random.h"
@@ -97,6 +98,7 @@ std::vector<Vec3> equilibrated(Particles p, double duration, InterruptFlag inter
   while (status == RunStatus::kEventBudget) {
     status = melt.run_until(duration, kEquilibrationSlice, interrupt);
     if (status == RunStatus::kInterrupted) throw SetupInterrupted();
+    fault_point(FaultPoint::kEquilibration);  // a test's signal here: seen within the next 4096 events
     say("equilibrating: t = " + format_number(std::round(melt.now() * 100) / 100) + " / " + format_number(duration) +
             " elastic collision times (" + percent(melt.now(), duration) + ")",
         false);

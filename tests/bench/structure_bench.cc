@@ -8,12 +8,19 @@
 //      of the momentum field (three assignments, three r2c, one c2r).
 // Uniformly random centres in id order, the worst case for the assignment's
 // memory access. Prints medians of 5 repeats, wall-clock and thread CPU time.
+//
+// `structure_bench fft N`: one r2c transform of an N^3 grid alone (median of
+// 3), the longest call coolgas-structure makes that a signal cannot stop;
+// N = 1024, the --grid limit, needs 8.6 GB.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <string>
 #include <vector>
 
 #include "analyze/structure/cloud_in_cell.h"
+#include "analyze/fourier/fourier_grid.h"
 #include "analyze/structure/frame_structure.h"
 #include "analyze/structure/growing_length.h"
 #include "common/random.h"
@@ -33,9 +40,22 @@ void report(const char* what, const Timing& t) {
   std::printf("%-58s %7.0f ms wall, %7.0f ms cpu\n", what, 1e3 * t.wall, 1e3 * t.cpu);
 }
 
+// One transform of an n^3 grid of random numbers: the bound a signal may wait.
+int time_one_transform(int n) {
+  coolgas::FourierGrid g(n, coolgas::Geometry(3));
+  coolgas::Random rng(1);
+  const std::int64_t reals = std::int64_t(g.padded()) * n * n;
+  for (std::int64_t i = 0; i < reals; ++i) g.real()[i] = rng.uniform();
+  char what[64];
+  std::snprintf(what, sizeof what, "one r2c FFT of a %d^3 grid (FFTW_ESTIMATE)", n);
+  report(what, median_time(3, [&] { g.forward(); }));
+  return 0;
+}
+
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+  if (argc == 3 && std::string(argv[1]) == "fft") return time_one_transform(std::atoi(argv[2]));
   const int n = 2 * int(std::floor(kL / 2));
   std::printf("N = %lld, phi = %.3f, L = %.2f, grid %d^3\n", (long long)kN, kPhi, kL, n);
   coolgas::Random rng(1);

@@ -5,8 +5,9 @@
 // place, none), and the same command again finishes it to the uninterrupted
 // run's file bit for bit. A signal raised at a point runs its handler as a
 // signal from outside would; a run held at a point (WAIT) stays there until a
-// signal from outside comes, then handles it; a malformed COOLGAS_FAULT is
-// refused with one line; a fault the run never reaches changes nothing.
+// signal from outside comes, then handles it, and one that waits and is told
+// to go on ends as if it had not; a malformed COOLGAS_FAULT is refused with
+// one line; a fault the run never reaches changes nothing.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -183,7 +184,7 @@ TEST_F(FaultPoints, AConversionKilledAtEachPointFinishesExactly) {
 // checkpoint is within the engine's 4096 events of checking the flag past
 // it, far from the end), it exits 3, and --resume finishes it exactly.
 TEST_F(FaultPoints, ARunHeldAtAPointWaitsForASignalThenFinishesExactly) {
-  const std::string dir = test::scratch_dir("fault_points_wait");
+  const std::string dir = test::scratch_dir("fault_points_held");
   const std::string out = dir + "/run.h5", err = dir + "/err.txt";
   const std::int64_t k = std::max<std::int64_t>(1, collisions_ / 5);
   const std::string held = "COOLGAS_CHECKPOINT_INTERVAL=0 " + test::fault("events:" + std::to_string(k) + ":WAIT") +
@@ -193,8 +194,8 @@ TEST_F(FaultPoints, ARunHeldAtAPointWaitsForASignalThenFinishesExactly) {
   const auto r = run_command(held);
   const std::string said = test::read_text(err);
   ASSERT_EQ(r.exit_code, 3) << said;
-  EXPECT_NE(said.find("coolgas-simulate: fault: holding at COOLGAS_FAULT = 'events:" + std::to_string(k) +
-                      ":WAIT' until SIGINT, SIGTERM or SIGHUP"),
+  EXPECT_NE(said.find("coolgas: fault: holding at COOLGAS_FAULT = 'events:" + std::to_string(k) +
+                      ":WAIT' until SIGINT, SIGTERM, SIGHUP or SIGCONT"),
             std::string::npos)
       << said;
   EXPECT_NE(said.find("interrupted by SIGTERM"), std::string::npos) << said;
@@ -202,6 +203,18 @@ TEST_F(FaultPoints, ARunHeldAtAPointWaitsForASignalThenFinishesExactly) {
   ASSERT_TRUE(exists(out + ".checkpoint"));
   const auto a = run_command(test::simulate("--resume " + out));
   ASSERT_EQ(a.exit_code, 0) << a.err;
+  test::expect_same_trajectory(whole(), out);
+}
+
+// A run that waits at a point (WAIT) and is told to go on (SIGCONT) ends as
+// the uninterrupted run, bit for bit; the file it waits in validates.
+TEST_F(FaultPoints, ARunThatWaitedAtAPointAndWentOnFinishesExactly) {
+  const std::string dir = test::scratch_dir("fault_points_wait");
+  const std::string out = dir + "/run.h5", ready = dir + "/ready";
+  const auto r = run_command(test::when_ready(test::waiting_at("dump-flushed:5", ready) + fresh(out), ready,
+                                              test::bin("coolgas-validate") + " " + out + "; kill -CONT $pid"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find(" 4 frames, "), std::string::npos) << r.out;  // the 5th's completion row not yet written
   test::expect_same_trajectory(whole(), out);
 }
 
@@ -217,11 +230,11 @@ TEST(FaultPointsRefused, AMalformedFaultIsOneLineAndNothingIsWritten) {
   const std::string dir = test::scratch_dir("fault_points_refused");
   const std::string scene = test::write_file(dir, "gas.toml", test::kCoolingGasScene), out = dir + "/run.h5";
   for (const auto& [spec, needle] : std::vector<std::pair<std::string, std::string>>{
-           {"nowhere", "COOLGAS_FAULT = 'nowhere': no point named 'nowhere' (POINT[:COUNT][:SIGNAL]"},
+           {"nowhere", "COOLGAS_FAULT = 'nowhere': no point named 'nowhere' (POINT[:COUNT][:ACTION]"},
            {"dump-fram", "no point named 'dump-fram' (did you mean 'dump-frame'?)"},
            {"events:0", "COUNT '0' is not an integer >= 1"},
            {"events:1x", "COUNT '1x'"},
-           {"dump-frame:2:STOP", "SIGNAL 'STOP' is not KILL, INT, TERM, HUP or WAIT"},
+           {"dump-frame:2:STOP", "ACTION 'STOP' is not KILL, INT, TERM, HUP or WAIT"},
            {"events:1:INT:2", "more than three fields"}}) {
     test::expect_refused_with_one_line(run_command(test::fault(spec) + test::simulate(scene + " -o " + out)), needle,
                                        spec);

@@ -163,15 +163,14 @@ TEST(SimulateCli, ResumeContinuesBitIdentically) {
 
 const char* kLongRun = " --set system.N=30000 --set run.t_end=1e6";
 
-// Starts a long run, sends `signal` once its first dump is in place, returns
-// the exit code. The wait for the file is bounded (60 s), so a run that never
-// starts fails the test instead of hanging it.
+// Starts a long run, which waits after 10 events per particle (past its
+// first dumps) until `signal` comes from outside; returns the exit code.
 int run_and_signal(const std::string& dir, const std::string& signal) {
-  const std::string out = dir + "/long.h5";
-  const std::string cmd = simulate(write_scene(dir) + " -o " + out + kLongRun) + " & pid=$!; i=0; while [ ! -f " + out +
-                          " ] && [ $i -lt 600 ]; do sleep 0.1; i=$((i+1)); done; sleep 0.5; kill -" + signal +
-                          " $pid; wait $pid";
-  return run_command(cmd).exit_code;
+  const std::string out = dir + "/long.h5", ready = dir + "/ready";
+  return run_command(test::when_ready(test::waiting_at("events:300000", ready) +
+                                          simulate(write_scene(dir) + " -o " + out + kLongRun),
+                                      ready, "kill -" + signal + " $pid"))
+      .exit_code;
 }
 
 // The time of the last complete dump of a file.

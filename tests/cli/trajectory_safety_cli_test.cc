@@ -93,18 +93,18 @@ TEST_F(TrajectorySafety, SigkillAtAnyMomentLeavesEveryEarlierDumpValidAndResumab
 }
 
 // A reader opens the file while coolgas-simulate writes it (HDF5 SWMR) and
-// sees the complete dumps so far; a second writer is refused. (t_end = 1e8
-// keeps the writer busy, however fast the machine, until it is killed; the
-// reader starts once the first dump is in place, however slow the machine.)
+// sees the complete dumps so far; a second writer is refused. The writer
+// waits with its 4th dump's rows written but not flushed (the named point
+// `dump-frame`, common/fault_point.h) while the readers read: three
+// complete dumps, on every machine.
 TEST_F(TrajectorySafety, ToolsReadAFileWhileItIsWrittenAndASecondWriterIsRefused) {
-  const std::string out = dir + "/live.h5";
-  const auto r = run_command(
-      "(" + bin("coolgas-simulate") + " " + scene + " -q -o " + out + " --set run.t_end=1e8 & p=$!; n=0; " +
-      "while [ ! -f " + out + " ] && [ $n -lt 600 ]; do sleep 0.05; n=$((n+1)); done; " +
+  const std::string out = dir + "/live.h5", ready = dir + "/ready";
+  const auto r = run_command(test::when_ready(
+      test::waiting_at("dump-frame:4", ready) + bin("coolgas-simulate") + " " + scene + " -q -o " + out, ready,
       bin("coolgas-validate") + " " + out + " && " + bin("coolgas-energy") + " " + out + " | tail -1 && " +
-      bin("coolgas-clusters") + " --series " + out + " | tail -1; " + bin("coolgas-simulate") + " -q --resume " + out +
-      "; echo resume=$?; kill -KILL $p; wait $p)");
-  EXPECT_NE(r.out.find(": valid ("), std::string::npos) << r.out << r.err;
+          bin("coolgas-clusters") + " --series " + out + " | tail -1; " + bin("coolgas-simulate") + " -q --resume " +
+          out + "; echo resume=$?; kill -KILL $pid"));
+  EXPECT_NE(r.out.find(" 5968 particles, 3 frames, "), std::string::npos) << r.out << r.err;
   EXPECT_NE(r.out.find("resume=2"), std::string::npos) << r.out << r.err;
   EXPECT_NE(r.err.find("is being written by another coolgas-simulate"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
@@ -241,13 +241,15 @@ TEST_F(TrajectorySafety, AFileRecordingMoreBytesThanItHoldsIsRepairedByResume) {
 
 // While one --resume runs, a second of the same file is refused. (The lock
 // once went with the first close of any other descriptor of the file, which
-// a resume makes by reading it: two writers then wrote one file.)
+// a resume makes by reading it: two writers then wrote one file.) The first
+// waits after its first event (the named point `events`), having read,
+// checked and reopened the file, while the second starts.
 TEST_F(TrajectorySafety, ASecondResumeOfARunningResumeIsRefused) {
-  const std::string out = dir + "/twice.h5";
+  const std::string out = dir + "/twice.h5", ready = dir + "/ready";
   ASSERT_EQ(run_command(bin("coolgas-simulate") + " " + scene + " -q -o " + out + " --set run.t_end=3").exit_code, 0);
-  const auto r = run_command("(" + bin("coolgas-simulate") + " -q --resume " + out +
-                             " --set run.t_end=1e8 & p=$!; sleep 1; " + bin("coolgas-simulate") + " -q --resume " + out +
-                             " --set run.t_end=1e8; echo second=$?; kill -KILL $p; wait $p)");
+  const std::string resume = bin("coolgas-simulate") + " -q --resume " + out + " --set run.t_end=1e8";
+  const auto r = run_command(test::when_ready(test::waiting_at("events:1", ready) + resume, ready,
+                                              resume + "; echo second=$?; kill -KILL $pid"));
   EXPECT_NE(r.out.find("second=2"), std::string::npos) << r.out << r.err;
   EXPECT_NE(r.err.find("is being written by another coolgas-simulate"), std::string::npos) << r.err;
 }

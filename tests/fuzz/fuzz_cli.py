@@ -400,6 +400,20 @@ class Corpus:
                 f.write(text)
             self.add("refused", f"coolgas-fit --power, a table whose line {k} is 1 MiB long",
                      f"{p('coolgas-fit')} --power {path}", names="at most 1048576 bytes")
+        # An extended XYZ start of 200 particles, valid but for one line of
+        # 1 MiB + 1 (padding that was once read whole, and accepted): the
+        # count line, the comment line, a particle line.
+        scene = self.scene_file(toml({k: v for k, v in BASE.items() if k not in ("system.N", "system.phi")}))
+        box = 'Lattice="10 0 0 0 10 0 0 0 10" Time=1'
+        rows = [f"X {1 + i % 8} {1 + i // 8 % 8} {1 + i // 64}" for i in range(200)]
+        pad = " " * 2**20
+        for where, lines in [("count", ["200" + pad, box] + rows), ("comment", ["200", box + pad] + rows),
+                             ("particle", ["200", box] + rows[:7] + [rows[7] + pad] + rows[8:])]:
+            path = self.path(f"long_{where}_line.xyz")
+            with open(path, "w") as f:
+                f.write("\n".join(lines) + "\n")
+            self.add("refused", f"start from XYZ whose {where} line is 1 MiB long", self.start_command(scene, path),
+                     names="an extended XYZ file's lines are at most 1048576 bytes")
         smol = p("coolgas-smoluchowski")
         for k, (columns, row) in enumerate([("m\tN", "1e15\t1"), ("m\tN", "1e300\t1"), ("m\tN", "65\t1"),
                                             ("m\tdm\tN", "30\t1e12\t1"), ("m\tdm\tN", "1e200\t3\t1"),

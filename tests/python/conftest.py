@@ -4,6 +4,7 @@ rods (1D), simulated once per test file by the CLI (so every comparison is
 Python against the tool on the same file)."""
 import os
 import subprocess
+import time
 
 import pytest
 
@@ -62,6 +63,27 @@ model = "aggregation"
 [run]
 t_end = 20
 """
+
+
+# The longest a test waits for a program to reach a named point: only a hang
+# takes this long (tests/support/fault_points.h, kHangSeconds).
+HANG_S = 240
+
+
+def waiting_at(point, ready):
+    """The environment that makes coolgas-simulate wait at a named point
+    (common/fault_point.h, the WAIT action) after creating the file `ready`."""
+    return dict(os.environ, COOLGAS_FAULT=point + ":WAIT", COOLGAS_FAULT_READY=str(ready))
+
+
+def wait_for_point(ready, proc):
+    """Returns once `proc` is at its point (the file `ready` exists); fails
+    if it ended first or is not there within HANG_S."""
+    deadline = time.monotonic() + HANG_S
+    while not os.path.exists(ready):
+        assert proc.poll() is None, f"the program ended (exit {proc.returncode}) before reaching its point"
+        assert time.monotonic() < deadline, f"the program did not reach its point within {HANG_S} s"
+        time.sleep(0.05)
 
 
 def tool(name, *args, check=True):

@@ -8,7 +8,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from conftest import simulate_cli, tool
+from conftest import assert_the_tool_per_dump, simulate_cli, tool
 
 # An elastic gas equilibrated from random placement; dumps every 2 collision times.
 ELASTIC = """
@@ -89,6 +89,14 @@ def test_bad_options_are_one_line(elastic, tmp_path):
     assert r.returncode == 2 and r.stderr.count("\n") == 1 and "--cell = 0.5" in r.stderr
     r = tool("fields", elastic, "--vti", tmp_path / "missing", check=False)
     assert r.returncode == 2 and "not a directory" in r.stderr
+    import coolgas
+    fr = coolgas.open(elastic).frames[-1]
+    with pytest.raises(ValueError, match="cell = 0.5"):
+        coolgas.fields(fr, cell=0.5)
+    with pytest.raises(ValueError, match="is not a fields table"):
+        coolgas.fields(fr, table="vortices")
+    with pytest.raises(ValueError, match="velocities must have"):
+        coolgas.fields(fr.positions, L=fr.L, velocities=fr.velocities[:10])
 
 
 # The paper's gas (phi = 0.208, r0 = 0.1, delta = 1e-4) in a box of side 34,
@@ -129,3 +137,21 @@ def test_vortices_grow_before_clusters(tmp_path):
     # By the time the shear flow is five times its noise, the density's
     # variance has not yet grown five-fold.
     assert density[t.t == first_time(t.t, shear, 5)].iloc[0] < 5
+
+
+FLAGS = {"series": [], "spectrum": ["--spectrum"], "slab": ["--slab"]}
+
+
+@pytest.mark.parametrize("table", ["series", "spectrum", "slab"])
+@pytest.mark.parametrize("run", ["gas", "aggregates", "disks", "rods"])
+def test_the_python_kernel_equals_the_tool(run, table, request, tmp_path):
+    """coolgas.fields on a frame is coolgas-fields on its dump, to the last bit."""
+    import coolgas
+    path = request.getfixturevalue(run)
+    if run == "rods" and table == "slab":  # no plane of cells: both refuse
+        assert tool("fields", path, "--slab", check=False).returncode == 2
+        with pytest.raises(ValueError, match="rods have none"):
+            coolgas.fields(coolgas.open(path).frames[-1], table="slab")
+        return
+    assert_the_tool_per_dump(path, "fields", ["--cell", 2, *FLAGS[table]],
+                             lambda fr: coolgas.fields(fr, table=table, cell=2), tmp_path, block=table != "series")

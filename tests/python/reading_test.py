@@ -3,8 +3,8 @@ reads from the same file (the H5MD profile, data-schema/h5md-profile.md),
 read_table equals pandas on the same table, another program's H5MD file
 reads through the same objects, and a file still being written reads."""
 import os
+import signal
 import subprocess
-import time
 
 import h5py
 import numpy as np
@@ -12,7 +12,7 @@ import pandas as pd
 import pytest
 
 import coolgas
-from conftest import BIN, tool
+from conftest import BIN, HANG_S, tool, wait_for_point, waiting_at
 
 
 def test_parameters_are_the_files(gas):
@@ -185,34 +185,30 @@ def test_another_programs_2d_h5md_file(tmp_path):
 
 
 def test_a_file_being_written_reads_its_complete_dumps(tmp_path):
-    """coolgas.open while coolgas-simulate writes: every frame read is
-    complete and equal to the same dump of the finished file."""
+    """coolgas.open while coolgas-simulate writes: the writer waits with its
+    6th dump's rows written but not flushed (the named point dump-frame,
+    common/fault_point.h); the reader sees the 5 complete dumps, each equal
+    to the same dump of the finished file, and observables up to the last."""
     scene = tmp_path / "live.toml"
     scene.write_text("[system]\nN = 20000\nphi = 0.2\nseed = 5\n[collision]\nmodel = \"inelastic\"\nr0 = 0.5\n"
                      "delta = 1e-4\n[run]\nt_end = 60\n[output]\ndumps_per_decade = 20\nt_min = 0.1\n")
-    out = tmp_path / "live.h5"
-    proc = subprocess.Popen([os.path.join(BIN, "coolgas-simulate"), "-q", scene, "-o", out])
-    seen = []
+    out, ready = tmp_path / "live.h5", tmp_path / "ready"
+    proc = subprocess.Popen([os.path.join(BIN, "coolgas-simulate"), "-q", scene, "-o", out],
+                            env=waiting_at("dump-frame:6", ready))
     try:
-        deadline = time.time() + 120
-        while proc.poll() is None and time.time() < deadline:
-            if out.exists():
-                try:
-                    run = coolgas.open(out)
-                    obs = run.observables  # first: the frames read after hold at least its dumps
-                    frames = run.frames
-                except coolgas.InputError:  # the file exists but holds no dump yet
-                    time.sleep(0.05)
-                    continue
-                last = frames[-1]
-                seen.append((len(frames), last.t, last.velocities.copy()))
-                assert obs.index[-1] <= last.t  # observables up to the last complete dump
-            time.sleep(0.05)
+        wait_for_point(ready, proc)
+        run = coolgas.open(out)
+        obs = run.observables
+        seen = [(frame.t, frame.velocities.copy()) for frame in run.frames]
+        proc.send_signal(signal.SIGCONT)  # the writer goes on to the end
+        assert proc.wait(timeout=HANG_S) == 0
     finally:
-        proc.wait()
-    assert proc.returncode == 0
-    assert len({n for n, _, _ in seen}) >= 2, "the file was never seen growing"
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+    assert len(seen) == 5
+    assert obs.index[-1] <= seen[-1][0]  # observables up to the last complete dump
     done = coolgas.open(out).frames
-    for n, t, v in seen:
-        assert done[n - 1].t == t
-        np.testing.assert_array_equal(done[n - 1].velocities, v)
+    for i, (t, v) in enumerate(seen):
+        assert done[i].t == t
+        np.testing.assert_array_equal(done[i].velocities, v)

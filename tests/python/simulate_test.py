@@ -1,19 +1,18 @@
 """coolgas.simulate: a scene given as a dict gives the file the CLI gives;
 a bad scene raises the tool's own error line; Ctrl-C (SIGINT) leaves a
 checkpoint and a clear exception, and resume=True then ends on the
-uninterrupted run's trajectory, bit for bit; the progress line is relayed."""
+uninterrupted run's trajectory, bit for bit; the progress lines are relayed."""
 import os
 import signal
 import subprocess
 import sys
 import textwrap
-import time
 
 import numpy as np
 import pytest
 
 import coolgas
-from conftest import GAS, tool
+from conftest import GAS, HANG_S, tool, wait_for_point, waiting_at
 
 SCENE = {"system": {"L": 16, "phi": 0.208, "seed": 7},
          "collision": {"model": "inelastic", "r0": 0.1, "delta": 1e-4},
@@ -69,21 +68,18 @@ def test_sigint_checkpoints_and_resume_is_bit_identical(tmp_path):
         except coolgas.SimulationInterrupted as e:
             print("INTERRUPTED", e.output, e)
     """)
+    # The run waits after 10 events per particle (past its first dumps and
+    # checkpoint) for the Ctrl-C: a named point, the same on every machine.
+    ready = tmp_path / "ready"
     proc = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                            env=os.environ)
-    checkpoint = str(out) + ".checkpoint"
-    deadline = time.time() + 120
-    while not (os.path.exists(checkpoint) and len(coolgas.open(out).frames) >= 3):
-        assert proc.poll() is None and time.time() < deadline, "the run ended before it could be interrupted"
-        time.sleep(0.05)
-    time.sleep(1.2)  # the run is under way (a run of ~4 s); progress lines come every 0.5 s
-    assert proc.poll() is None, "the run ended before it could be interrupted"
+                            env=waiting_at("events:500000", ready))
+    wait_for_point(ready, proc)
     proc.send_signal(signal.SIGINT)
-    stdout, stderr = proc.communicate(timeout=60)
+    stdout, stderr = proc.communicate(timeout=HANG_S)
     assert proc.returncode == 0, stderr
     assert stdout.startswith("INTERRUPTED " + str(out)), stdout
     assert "SIGINT" in stdout and "resume=True" in stdout
-    assert "E/E0" in stderr  # the tool's progress line, relayed
+    assert "set-up (" in stderr  # the tool's progress lines, relayed (its run's come every 0.5 s of wall time)
     stopped_at = coolgas.open(out).frames[-1].t
     assert stopped_at < 3000
     run = coolgas.simulate(output=out, resume=True, progress=False)

@@ -119,6 +119,27 @@ def structure(frame, L=None, t=None, table="spectrum", velocities=None, masses=N
     return df
 
 
+def fields(frame, L=None, t=None, table="series", velocities=None, masses=None, cell=None):
+    """One dump's coolgas-fields table: "series" (one row: t cells E E_flow
+    E_thermal T E_flow_noise E_L E_T E_L_noise E_T_noise density_var
+    vorticity2), "spectrum" (t shell k E_L E_T modes) or "slab" (t x y
+    density vorticity: the middle plane's cells).
+
+    frame: a Frame (ballistic aggregation: the aggregates weighted by their
+    masses), or positions with L and velocities (and t, masses). cell: the
+    cell side wanted in sigma (default 4); df.attrs["cells"]: cells per side."""
+    positions, L, t, f = _frame_args(frame, L, t)
+    if f is not None:
+        velocities = f.velocities if velocities is None else velocities
+        masses = f.masses if masses is None else masses
+    if velocities is None:
+        raise TypeError("velocities are required with a positions array")
+    d = _core.fields_table(positions, velocities, float(L), float(t), table, masses=masses, **_given(cell=cell))
+    df = frame_of(d)
+    df.attrs["cells"] = d["cells"]
+    return df
+
+
 def shape(frame, L=None, t=None, table="mass_radius", bins_per_decade=None, fit_mass=None, min_mass=None,
           masses=None):
     """One dump's coolgas-shape table: "mass_radius" (t m dm clusters Rg

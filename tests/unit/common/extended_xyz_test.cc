@@ -2,7 +2,7 @@
 // in its shortest round-trip form), frames are chosen by Time=, files of
 // other programs (other column orders and names) are read, and a file that
 // is not a periodic extended XYZ frame (a cube, a square of disks, a ring of
-// rods) is refused naming the line.
+// rods), or has a line beyond the bound, is refused naming the line.
 #include "common/extended_xyz.h"
 
 #include <gtest/gtest.h>
@@ -12,6 +12,7 @@
 
 #include "common/error.h"
 #include "common/random.h"
+#include "common/text_line.h"
 
 namespace coolgas {
 namespace {
@@ -164,6 +165,18 @@ TEST(ExtendedXyz, ACountTheFileCannotHoldIsRefusedBeforeAllocating) {
   // The shortest lines (a word each, the last without its newline) pass the
   // bound and are then refused for what they miss, naming their line.
   EXPECT_NE(error_of("2\n" + box + "\nX\nX").find("line 3: expected 4 columns, got 1"), std::string::npos);
+}
+
+// Every line is bounded as a table's are (common/text_line.h, 1 MiB): a
+// line of 1 MiB + 1 is refused naming it, wherever it is, where it was once
+// read whole (and, being padding, accepted); one of 1 MiB is read.
+TEST(ExtendedXyz, ALineLongerThanOneMebibyteIsRefusedNamingIt) {
+  const std::string box = "Lattice=\"4 0 0 0 4 0 0 0 4\"", pad(kMaxLineBytes - 7, ' ');  // "X 1 2 3" + pad: 1 MiB
+  EXPECT_EQ(read("1\n" + box + "\nX 1 2 3" + pad + "\n").position.size(), 3u);
+  const std::string bound = "a line longer than 1048576 bytes; an extended XYZ file's lines are at most 1048576 bytes";
+  EXPECT_EQ(error_of("1" + pad + "       \n" + box + "\nX 1 2 3\n"), "f.xyz: line 1: " + bound);
+  EXPECT_EQ(error_of("1\n" + box + pad + "\nX 1 2 3\n"), "f.xyz: line 2: " + bound);
+  EXPECT_EQ(error_of("1\n" + box + "\nX 1 2 3" + pad + " \n"), "f.xyz: line 3: " + bound);
 }
 
 // A time that is not finite and >= 0 (then taken as the run's start, which
