@@ -83,6 +83,10 @@ class Geometry {
   // The formula of covered_fraction, as a message shows it.
   const char* covered_fraction_formula() const { return pick("N/L", "N pi/(4 L^2)", "N pi/(6 L^3)"); }
 
+  // The measure of a ball of radius r: a segment 2r, a disk pi r^2, a
+  // sphere 4 pi r^3 / 3 (the shells of the pair distribution g(r)).
+  double ball_measure(double r) const { return pick(2.0 * r, M_PI * r * r, 4.0 * M_PI * r * r * r / 3.0); }
+
   // ---- A particle: mass σ^d of diameter σ, and back.
   constexpr double mass_of_diameter(double sigma) const { return power(sigma); }
   double diameter_of_mass(double m) const { return root(m); }
@@ -105,6 +109,8 @@ class Geometry {
     if (d_ == 2) return (1.0 - 7.0 * phi / 16.0) / ((1.0 - phi) * (1.0 - phi));
     return 1.0 / (1.0 - phi);
   }
+  // Whose contact value contact_value() is, for provenance and messages.
+  const char* contact_value_name() const { return pick("Tonks (exact)", "Henderson", "Carnahan-Starling"); }
   // Enskog's collision frequency per particle of unit particles of mass 1 at
   // number density n, covered fraction phi and temperature T:
   // ω = (2 π^((d−1)/2) / Γ(d/2)) n g(σ) √(T/m) σ^(d−1), that is

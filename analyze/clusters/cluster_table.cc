@@ -19,15 +19,21 @@ const std::vector<std::string>& cluster_columns(ClusterTable table) {
   return distribution;
 }
 
-void fill_cluster_masses(MassHistogram& hist, ClusterLabeller& labeller, double L, std::span<const double> positions,
-                         std::span<const double> aggregate_mass, Geometry g) {
+void fill_cluster_masses(MassHistogram& hist, Labellers& labellers, const ClusterDefinition& definition, double L,
+                         std::span<const double> positions, std::span<const double> aggregate_mass, Geometry g) {
   hist.clear();
   if (!aggregate_mass.empty()) {
     for (double m : aggregate_mass) hist.add(std::llround(m));
     return;
   }
-  labeller.label(ClusterGrid(L, g), positions);
-  labeller.for_each_mass([&](std::int64_t m) { hist.add(m); });
+  auto add = [&](std::int64_t m) { hist.add(m); };
+  if (definition.contact()) {
+    labellers.contact.label(L, positions, definition.cutoff, g);
+    labellers.contact.for_each_mass(add);
+    return;
+  }
+  labellers.cells.label(ClusterGrid(L, g), positions);
+  labellers.cells.for_each_mass(add);
 }
 
 TableBlock cluster_block(ClusterTable table, double t, double L, const MassHistogram& h, Geometry g) {

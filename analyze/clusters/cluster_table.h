@@ -6,8 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "analyze/clusters/cluster_definition.h"
 #include "analyze/clusters/mass_distribution.h"
 #include "analyze/labelling/cluster_labeller.h"
+#include "analyze/labelling/contact_labeller.h"
 #include "common/tsv.h"
 #include "common/geometry.h"
 
@@ -21,14 +23,21 @@ enum class ClusterTable {
 
 const std::vector<std::string>& cluster_columns(ClusterTable table);
 
-// The masses of one frame into `hist` (cleared first): the paper's clusters
-// of the particles at `positions` (x0 y0 z0 x1 ...; z = 0 in 2D) in a box of
-// side L in the geometry g: unit cubes, unit squares or unit
-// segments of the ring; y = z = 0), or,
-// when `aggregate_mass` is not empty (ballistic aggregation), the
-// aggregates themselves, each of its mass rounded to whole particles.
-void fill_cluster_masses(MassHistogram& hist, ClusterLabeller& labeller, double L, std::span<const double> positions,
-                         std::span<const double> aggregate_mass, Geometry g);
+// The labellers of both definitions, their buffers kept from frame to frame.
+struct Labellers {
+  ClusterLabeller cells;
+  ContactLabeller contact;
+};
+
+// The masses of one frame into `hist` (cleared first): the clusters of the
+// particles at `positions` (x0 y0 z0 x1 ...; z = 0 in 2D, y = z = 0 in 1D)
+// in a box of side L in the geometry g by `definition` (the paper's unit
+// cubes, squares or segments of the ring; or contacts, the cutoff checked
+// against L by the caller), or, when `aggregate_mass` is not empty
+// (ballistic aggregation), the aggregates themselves, each of its mass
+// rounded to whole particles.
+void fill_cluster_masses(MassHistogram& hist, Labellers& labellers, const ClusterDefinition& definition, double L,
+                         std::span<const double> positions, std::span<const double> aggregate_mass, Geometry g);
 
 // The rows of one dump at time t in a box of side L in the geometry g: the
 // densities are per L^d. The series has one row and no comment (it is not a

@@ -10,6 +10,7 @@ namespace coolgas {
 
 struct ClustersOptions {
   std::string input;          // trajectory file
+  std::string definition = "cells";  // --definition: cells, contact or contact:CUTOFF (cluster_definition.h)
   int bins_per_decade = 10;   // logarithmic mass bins
   bool series = false;        // one row per dump instead of N(m) blocks
   bool scaled = false;        // N(m) blocks with only t, x = m/M_avg, y = N M_avg^2 (paper Fig. 3)

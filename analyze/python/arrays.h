@@ -210,5 +210,6 @@ void bind_fields(py::module_& m);
 void bind_shape(py::module_& m);
 void bind_collapse(py::module_& m);
 void bind_smoluchowski(py::module_& m);
+void bind_displacement(py::module_& m);
 
 }  // namespace coolgas::python

@@ -1,5 +1,6 @@
 // Clusters, wrapped: the paper's unit-cell labelling (analyze/labelling/) and
-// the coolgas-clusters table of one frame (analyze/clusters/cluster_table.h).
+// the coolgas-clusters table of one frame (analyze/clusters/cluster_table.h),
+// by either definition (--definition cells | contact[:CUTOFF]).
 #include "analyze/clusters/cluster_table.h"
 #include "analyze/labelling/particle_labels.h"
 #include "analyze/python/arrays.h"
@@ -37,7 +38,8 @@ py::tuple label(const py::object& positions, double L) {
 // One frame's coolgas-clusters rows. Gas: `positions`; aggregation: `masses`
 // (the aggregates are the clusters) and the slots N of the file, which size the bins.
 py::dict table(const py::object& positions, double L, double t, const std::string& table, int bins_per_decade,
-               const std::optional<py::object>& masses, std::optional<std::int64_t> slots) {
+               const std::optional<py::object>& masses, std::optional<std::int64_t> slots, const std::string& definition) {
+  const ClusterDefinition def = parse_cluster_definition(definition);
   if (bins_per_decade < 1) throw InputError("bins_per_decade must be >= 1, got " + std::to_string(bins_per_decade));
   if (!std::isfinite(t)) throw InputError("t = " + format_number(t) + " is not a finite number");
   const ClusterTable kind = table_of(table);
@@ -51,9 +53,12 @@ py::dict table(const py::object& positions, double L, double t, const std::strin
   // An aggregate holds 1 to N (the slots) particles: the histogram's bins end there.
   const std::vector<double> agg =
       masses ? coolgas::python::masses(*masses, "masses", pos.size() / 3, double(n), true) : std::vector<double>();
+  if (masses && def.contact())
+    throw InputError("definition " + definition_name(def) + ": aggregates (masses given) are clusters themselves");
+  check_cutoff(def, L, "positions");
   MassHistogram hist(bins_per_decade, n);
-  ClusterLabeller labeller;
-  fill_cluster_masses(hist, labeller, L, pos, agg, Geometry(rows.dimension()));
+  Labellers labellers;
+  fill_cluster_masses(hist, labellers, def, L, pos, agg, Geometry(rows.dimension()));
   const TableBlock b = cluster_block(kind, t, L, hist, Geometry(rows.dimension()));
   return table_dict(cluster_columns(kind), b.rows, b.comment);
 }
@@ -63,7 +68,8 @@ py::dict table(const py::object& positions, double L, double t, const std::strin
 void bind_clusters(py::module_& m) {
   m.def("label_clusters", &label, py::arg("positions"), py::arg("L"));
   m.def("cluster_table", &table, py::arg("positions"), py::arg("L"), py::arg("t"), py::arg("table"),
-        py::arg("bins_per_decade"), py::arg("masses") = py::none(), py::arg("slots") = py::none());
+        py::arg("bins_per_decade"), py::arg("masses") = py::none(), py::arg("slots") = py::none(),
+        py::arg("definition") = "cells");
 }
 
 }  // namespace coolgas::python

@@ -28,4 +28,5 @@ PYBIND11_MODULE(_core, m) {
   coolgas::python::bind_shape(m);
   coolgas::python::bind_collapse(m);
   coolgas::python::bind_smoluchowski(m);
+  coolgas::python::bind_displacement(m);
 }

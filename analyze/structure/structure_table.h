@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "analyze/structure/frame_structure.h"
+#include "analyze/structure/radial_distribution.h"
 #include "analyze/structure/tool.h"
 #include "common/tsv.h"
 
@@ -39,5 +40,21 @@ double structure_grid_bytes(int n, Geometry g);
 TableBlock structure_block(StructureTable table, FrameStructure& fs, double t, double L,
                            std::span<const double> positions, std::span<const double> velocities,
                            std::span<const double> weights, double peak_fraction, int direct_shells);
+
+// InputError unless r_max is 0 or positive and finite, bins_per_sigma in
+// [1, 1000] and contact_bins in [2, bins_per_sigma] (--r-max,
+// --bins-per-sigma, --contact-bins).
+void check_rdf_options(double r_max, int bins_per_sigma, int contact_bins);
+// g(r)'s range for a box of side L: `r_max`, or when 0 min(5, L/2). InputError
+// if it exceeds L/2 (the minimum image), leaves no room for the contact fit
+// (sigma + contact_bins / bins_per_sigma), or makes more than 10^7 bins.
+double rdf_range(double r_max, double L, int bins_per_sigma, int contact_bins);
+
+// The rows of one frame's g(r) (kRdf: a block, its comment the contact value)
+// or its contact value (kRdfSeries: one row) at time t in a box of side L, on
+// `pairs` (cleared first; its range checked against L by rdf_range).
+// Positions as for structure_block; every particle of diameter sigma.
+TableBlock rdf_block(StructureTable table, PairDistances& pairs, double t, double L,
+                     std::span<const double> positions, int contact_bins, Geometry g);
 
 }  // namespace coolgas

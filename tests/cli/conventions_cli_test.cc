@@ -105,7 +105,8 @@ TEST_F(TimeConventions, EveryToolThatReadsDumpsTakesTheSameTimeOptions) {
                                                        {"coolgas-shape", ""},
                                                        {"coolgas-structure", ""},
                                                        {"coolgas-fields", ""},
-                                                       {"coolgas-convert", ""}};
+                                                       {"coolgas-convert", ""},
+                                                       {"coolgas-displacement", ""}};
   for (const auto& [tool, extra] : tools) {
     const std::string base = bin(tool) + " " + run() + " " + extra;
     const auto commas = run_command(base + " --time 10,1000");
@@ -181,6 +182,7 @@ TEST_F(TimeConventions, NonFiniteTimesAndNumbersAreRefusedWithOneLine) {
       {bin("coolgas-structure") + " " + run() + " --time NaN", "--time NaN"},
       {bin("coolgas-fields") + " " + run() + " --cell inf", "--cell inf"},
       {bin("coolgas-convert") + " " + run() + " --time inf", "--time inf"},
+      {bin("coolgas-displacement") + " " + run() + " --from nan", "--from nan"},
       {bin("coolgas-snapshot") + " " + run() + " --time nan -o " + *dir + "/never.png", "--time nan"},
       {energy + bin("coolgas-fit") + " --power --window nan:1e3 -", "--t-window nan:1e3"},
       {energy + bin("coolgas-fit") + " --local-slope --smooth inf -", "--smooth inf"},

@@ -53,7 +53,8 @@ TEST(InterruptCli, ToolsLoopingOverDumpsStopWithOneLineAndNoTable) {
   test::write_gas_file(gas, false, false, 100000, 80);
   std::string times;
   for (int i = 0; i < 4000; ++i) times += " --time 10";
-  for (const char* tool : {"coolgas-clusters", "coolgas-velocity", "coolgas-structure", "coolgas-shape"}) {
+  for (const char* tool :
+       {"coolgas-clusters", "coolgas-velocity", "coolgas-structure", "coolgas-shape", "coolgas-displacement"}) {
     const std::string signal = std::string(tool) == "coolgas-velocity" ? "TERM" : "INT";
     const Stopped s = run_and_signal(bin(tool) + " " + gas + times, 3, signal, dir);
     expect_stopped(s, signal, tool);

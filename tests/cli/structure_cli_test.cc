@@ -88,6 +88,14 @@ TEST_F(StructureCli, BadOptionsAreOneErrorLine) {
   expect_one_error_line(run_command(run("coolgas-structure", gas + " --peak-fraction 1.5")), "--peak-fraction");
   expect_one_error_line(run_command(run("coolgas-structure", gas + " --direct-shells 9")), "--direct-shells");
   expect_one_error_line(run_command(run("coolgas-structure", gas + " --series --correlation")), "exclude");
+  expect_one_error_line(run_command(run("coolgas-structure", gas + " --rdf --correlation")), "exclude");
+  expect_one_error_line(run_command(run("coolgas-structure", gas + " --r-max 3")), "--rdf");
+  expect_one_error_line(run_command(run("coolgas-structure", gas + " --rdf --r-max 13")), "L/2 = 12.5");
+  expect_one_error_line(run_command(run("coolgas-structure", gas + " --rdf --r-max 1.05")), "raise --r-max");
+  expect_one_error_line(run_command(run("coolgas-structure", gas + " --rdf --r-max -1")), "--r-max");
+  expect_one_error_line(run_command(run("coolgas-structure", gas + " --rdf --bins-per-sigma 0")), "--bins-per-sigma");
+  expect_one_error_line(run_command(run("coolgas-structure", gas + " --rdf --contact-bins 1")), "--contact-bins");
+  expect_one_error_line(run_command(run("coolgas-structure", *dir + "/ba.h5 --rdf")), "ballistic-aggregation");
   expect_one_error_line(run_command(run("coolgas-shape", gas + " --bins-per-decade 0")), "--bins-per-decade");
   expect_one_error_line(run_command(run("coolgas-shape", gas + " --fit-mass ten:")), "--fit-mass");
   expect_one_error_line(run_command(run("coolgas-shape", gas + " --min-mass 0")), "--min-mass");
@@ -122,6 +130,28 @@ TEST_F(StructureCli, TablesHaveARowOrBlockPerDump) {
   EXPECT_EQ(c.rows.front()[c.column("C")], 1);
   const Table shape = table_of(run("coolgas-shape", "--series " + *dir + "/run.h5"));
   EXPECT_EQ(shape.rows.size(), 2u);
+}
+
+// g(r) of uniform random points: blocks of r in bins of sigma/50 up to 5 sigma
+// by default, flat at 1 (each bin within 5 errors); the series has one row
+// per dump, g(sigma+) near 1 beside the Carnahan-Starling value of the file's phi.
+TEST_F(StructureCli, RadialDistributionOfAnIdealGasIsFlat) {
+  const Table g = table_of(run("coolgas-structure", "--rdf --time 10 " + *dir + "/run.h5"));
+  EXPECT_EQ(g.columns, (std::vector<std::string>{"t", "r", "g", "g_err", "pairs"}));
+  ASSERT_EQ(g.rows.size(), 250u);
+  EXPECT_DOUBLE_EQ(g.rows.back()[g.column("r")], 4.99);
+  for (const auto& row : g.rows)
+    if (row[g.column("r")] > 1) EXPECT_NEAR(row[g.column("g")], 1, 5 * row[g.column("g_err")]);
+  const Table series = table_of(run("coolgas-structure", "--rdf --series --bins-per-sigma 20 --contact-bins 4 " + *dir + "/run.h5"));
+  EXPECT_EQ(series.columns,
+            (std::vector<std::string>{"t", "g_contact", "g_contact_err", "kappa", "contact_pairs", "g_equilibrium"}));
+  ASSERT_EQ(series.rows.size(), 2u);
+  const double phi = 3000 * M_PI / (6 * 25.0 * 25 * 25);
+  for (const auto& row : series.rows) {
+    EXPECT_NEAR(row[series.column("g_contact")], 1, 4 * row[series.column("g_contact_err")]);
+    EXPECT_DOUBLE_EQ(row[series.column("g_equilibrium")], (1 - phi / 2) / std::pow(1 - phi, 3));
+  }
+  EXPECT_NE(series.get("contact")->find("4 bins above sigma"), std::string::npos);
 }
 
 // Aggregates are the density's points, weighted by mass, and the shape

@@ -8,19 +8,14 @@
 // densities in each dimension.
 #include <gtest/gtest.h>
 
+#include "tests/support/density_cases.h"
 #include "tests/support/kinetic_theory.h"
 #include "tests/support/scenes.h"
 
 namespace coolgas {
 namespace {
 
-struct Density {
-  int dimension;
-  double phi;
-  std::int64_t seed;
-};
-
-void PrintTo(const Density& d, std::ostream* os) { *os << d.dimension << "D, phi = " << d.phi; }
+using test::Density;
 
 class CollisionRate : public ::testing::TestWithParam<Density> {};
 
@@ -30,15 +25,11 @@ TEST_P(CollisionRate, IsOne) {
   EXPECT_NEAR(test::initial_collision_rate(s), 1.0, 0.02);
 }
 
-std::string case_name(const ::testing::TestParamInfo<Density>& info) {
-  std::string phi = std::to_string(info.param.phi).substr(2, 3);  // 0.208 -> "208"
-  return std::to_string(info.param.dimension) + "D_phi0" + phi;
-}
 INSTANTIATE_TEST_SUITE_P(EveryDimension, CollisionRate,
                          ::testing::Values(Density{3, 0.05, 21}, Density{3, 0.208, 21}, Density{3, 0.35, 21},
                                            Density{2, 0.05, 41}, Density{2, 0.2, 41}, Density{2, 0.35, 41},
                                            Density{1, 0.1, 61}, Density{1, 0.3, 61}, Density{1, 0.5, 61}),
-                         case_name);
+                         test::density_case_name);
 
 }  // namespace
 }  // namespace coolgas

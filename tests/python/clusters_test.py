@@ -1,5 +1,6 @@
 """Clusters: coolgas.clusters on a frame's arrays equals coolgas-clusters on
-the same file to the last bit (every table, gas and aggregation), and
+the same file to the last bit (every table, gas and aggregation; both
+definitions, unit cells and contacts), and
 label_clusters' labels and size table agree with the tool's masses."""
 import numpy as np
 import pytest
@@ -29,6 +30,27 @@ def test_equals_the_tool(run, table, flag, request, tmp_path):
         if table != "series":
             assert "# " + py.attrs["comment"] in tool("clusters", path, "--time", repr(fr.t), "--bins-per-decade",
                                                       7).stdout
+
+
+@pytest.mark.parametrize("definition", ["contact", "contact:1.3"])
+@pytest.mark.parametrize("run", ["gas", "disks", "rods"])
+def test_contact_clusters_equal_the_tool(run, definition, request, tmp_path):
+    path = request.getfixturevalue(run)
+    for fr in coolgas.open(path).frames[-2:]:
+        for table, flag in (("distribution", []), ("series", ["--series"])):
+            cli = cli_table(tmp_path, path, "--time", repr(fr.t), "--exact-time", "--definition", definition, *flag)
+            py = coolgas.clusters(fr, table=table, definition=definition)
+            assert py.to_numpy().tobytes() == cli.to_numpy().tobytes()  # bit for bit
+
+
+def test_contact_clusters_refuse_bad_definitions(aggregates):
+    pos = np.random.default_rng(3).uniform(0, 10, size=(40, 3))
+    with pytest.raises(coolgas.InputError, match="not a cluster definition"):
+        coolgas.clusters(pos, L=10, definition="touching")
+    with pytest.raises(coolgas.InputError, match="exceeds half the box side"):
+        coolgas.clusters(pos, L=10, definition="contact:6")
+    with pytest.raises(coolgas.InputError, match="aggregates"):
+        coolgas.clusters(coolgas.open(aggregates).frames[-1], definition="contact")
 
 
 def test_labels_and_sizes_are_the_tools_clusters(gas, tmp_path):

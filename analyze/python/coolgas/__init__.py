@@ -34,10 +34,11 @@ __version__ = _program_version()
 
 from ._tables import read_table  # noqa: E402
 from ._run import open, Run, Frame, Frames  # noqa: E402,A001
-from ._kernels import label_clusters, clusters, velocity, structure, fields, shape  # noqa: E402
+from ._kernels import label_clusters, clusters, velocity, structure, fields, shape, displacement  # noqa: E402
 from ._collapse import collapse  # noqa: E402
 from ._smoluchowski import smoluchowski  # noqa: E402
 from ._simulate import simulate, SimulationError, SimulationInterrupted  # noqa: E402
 
 __all__ = ["__version__", "InputError", "read_table", "open", "Run", "Frame", "Frames", "label_clusters", "velocity",
-           "clusters", "structure", "fields", "shape", "collapse", "smoluchowski", "simulate", "SimulationError", "SimulationInterrupted"]
+           "clusters", "structure", "fields", "shape", "displacement", "collapse", "smoluchowski", "simulate",
+           "SimulationError", "SimulationInterrupted"]

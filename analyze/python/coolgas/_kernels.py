@@ -4,6 +4,7 @@ import numpy as np
 import pandas as pd
 
 from . import _core
+from ._core import InputError
 from ._run import Frame
 from ._tables import frame_of
 
@@ -36,19 +37,22 @@ def label_clusters(positions, L=None):
     return labels, sizes
 
 
-def clusters(frame, L=None, t=None, table="distribution", bins_per_decade=10, masses=None, slots=None):
+def clusters(frame, L=None, t=None, table="distribution", bins_per_decade=10, masses=None, slots=None,
+             definition="cells"):
     """One dump's coolgas-clusters table: "distribution" (t m dm N x y),
     "scaled" (t x y) or "series" (t M0 M1 M2 M_avg M_max largest_fraction).
 
     frame: a Frame (ballistic aggregation: its aggregates are the clusters),
     or positions with L (and t). masses and slots: the aggregates' masses and
-    the file's N, for arrays of a ballistic-aggregation frame. The block's
-    comment line is df.attrs["comment"]."""
+    the file's N, for arrays of a ballistic-aggregation frame. definition:
+    "cells" (the paper's unit cells) or "contact[:CUTOFF]" (particles closer
+    than CUTOFF sigma, default 1.1), as --definition. The block's comment
+    line is df.attrs["comment"]."""
     positions, L, t, f = _frame_args(frame, L, t)
     if f is not None and f.masses is not None and masses is None:
         masses, slots = f.masses, f.slots
     return frame_of(_core.cluster_table(positions, float(L), float(t), table, bins_per_decade, masses,
-                                        None if slots is None else int(slots)))
+                                        None if slots is None else int(slots), definition))
 
 
 def velocity(frame, t=None, table="Phi", bins=120, ymax=6.0, tail_from=1.5, min_count=25):
@@ -83,26 +87,35 @@ def window(w):
 
 
 def structure(frame, L=None, t=None, table="spectrum", velocities=None, masses=None, grid=None, peak_fraction=None,
-              direct_shells=None):
+              direct_shells=None, r_max=None, bins_per_sigma=None, contact_bins=None):
     """One dump's coolgas-structure table: "spectrum" (t shell k S S_err
     modes x y; x = k L_t, y = S / L_t^3), "series" (t L_t k_mean k_cut
-    k_peak S_peak L_C L_v) or "correlation" (t r C C_v points).
+    k_peak S_peak L_C L_v), "correlation" (t r C C_v points), "rdf" (t r g
+    g_err pairs: g(r), --rdf) or "rdf_series" (t g_contact g_contact_err
+    kappa contact_pairs g_equilibrium: --rdf --series).
 
     frame: a Frame (ballistic aggregation: the aggregates weighted by their
-    masses), or positions with L (and t, velocities, masses). velocities are
-    needed by "series" and "correlation". grid: points per side (default: the
-    even number below L); peak_fraction, direct_shells: the tool's options.
-    df.attrs: the block's comment (L_t, k_cut, the exact sum's check) and grid."""
+    masses; refused by the rdf tables), or positions with L (and t,
+    velocities, masses). velocities are needed by "series" and
+    "correlation". grid: points per side (default: the even number below L);
+    peak_fraction, direct_shells: the tool's options; r_max [sigma],
+    bins_per_sigma, contact_bins: those of --rdf.
+    df.attrs: the block's comment (L_t, k_cut, the exact sum's check; or
+    g(sigma+)) and grid (or r_max for the rdf tables)."""
     positions, L, t, f = _frame_args(frame, L, t)
+    rdf = table in ("rdf", "rdf_series")
     if f is not None:
         velocities = f.velocities if velocities is None else velocities
         masses = f.masses if masses is None else masses
-    if table == "spectrum":
-        velocities = None  # S(k) reads positions only, as the tool does
+    if table == "spectrum" or rdf:
+        velocities = None  # S(k) and g(r) read positions only, as the tool does
     d = _core.structure_table(positions, float(L), float(t), table, velocities=velocities, masses=masses,
-                              **_given(grid=grid, peak_fraction=peak_fraction, direct_shells=direct_shells))
+                              **_given(grid=grid, peak_fraction=peak_fraction, direct_shells=direct_shells,
+                                       r_max=r_max, bins_per_sigma=bins_per_sigma, contact_bins=contact_bins))
     df = frame_of(d)
-    df.attrs["grid"] = d["grid"]
+    for key in ("grid", "r_max"):
+        if key in d:
+            df.attrs[key] = d[key]
     return df
 
 
@@ -146,3 +159,19 @@ def shape(frame, L=None, t=None, table="mass_radius", bins_per_decade=None, fit_
     return frame_of(_core.shape_table(positions, float(L), float(t), table, masses=masses,
                                       **_given(bins_per_decade=bins_per_decade, fit_mass=window(fit_mass),
                                                min_mass=min_mass)))
+
+
+def displacement(frame, reference):
+    """One dump's coolgas-displacement row: t dt msd msd_err vacf vacf_norm
+    T D_apparent of `frame` from `reference`, two Frames of one coolgas run
+    (positions unwrapped by their image counts, as the tool does; the
+    particles in the same order). Not for ballistic-aggregation frames."""
+    for name, f in (("frame", frame), ("reference", reference)):
+        if not isinstance(f, Frame) or f.images is None:
+            raise TypeError(name + " must be a Frame of a coolgas run (with image counts)")
+        if f.masses is not None:
+            raise InputError(name + " is a ballistic-aggregation frame: its aggregates merge, and displacements "
+                             "need particles that keep their identity")
+    return frame_of(_core.displacement_row(frame.positions, frame.images, frame.velocities, float(frame.L),
+                                           float(frame.t), reference.positions, reference.images,
+                                           reference.velocities, float(reference.L), float(reference.t)))
