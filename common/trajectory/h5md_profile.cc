@@ -55,6 +55,7 @@ void append_parameters(Profile& p) {
                             .name = f.name,
                             .type = type_of(f.member),
                             .at_least = f.at_least,
+                            .above = f.above,
                             .meaning = f.meaning,
                             .presence = is_model_specific(f) ? Presence::kPerModel
                                         : is_optional(f)     ? Presence::kOptional

@@ -99,9 +99,9 @@ const std::vector<ParameterField>& run_parameter_fields() {
     for (const ModelParameter* m : model_parameters())
       f.push_back({m->name, ModelValue{}, m->meaning, kPhysics, m->since});
     f.push_back({"driving_power", &RunParameters::driving_power, "energy injected per particle per unit time",
-                 kPhysics, int(kDrivingSchemaVersion)});
+                 kPhysics, int(kDrivingSchemaVersion), std::nullopt, 0.0});
     f.push_back({"driving_period", &RunParameters::driving_period, "kick interval in mean collision times",
-                 kPhysics, int(kDrivingSchemaVersion)});
+                 kPhysics, int(kDrivingSchemaVersion), std::nullopt, 0.0});
     return f;
   }();
   return fields;

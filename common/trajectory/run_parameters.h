@@ -57,6 +57,7 @@ struct ParameterField {
   ParameterRole role = ParameterRole::kPhysics;
   int since = 1;                         // schema version that added it
   std::optional<std::int64_t> at_least;  // lower bound the validator checks (integers)
+  std::optional<double> above;           // floats: finite and above this (the validator checks)
 };
 
 const std::vector<ParameterField>& run_parameter_fields();
