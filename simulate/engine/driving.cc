@@ -64,20 +64,21 @@ RunStatus DrivenEngine::run_until(double t_stop, std::int64_t max_events, const 
 
 void DrivenEngine::kick() {
   const std::size_t n = engine_->size();
-  const int d = driving_.geometry.d();
+  const Geometry& g = driving_.geometry;
   const double elapsed = schedule_.next - schedule_.previous;
   // Every product and quotient here scales exactly with a power of 2 of the
   // power, the times and the velocities (the symmetry of driving.h).
-  const double s = std::sqrt(2.0 * driving_.power * elapsed * double(n) / (double(d) * double(n - 1)));
+  const double s = std::sqrt(2.0 * driving_.power * elapsed * double(n) / (double(g.d()) * double(n - 1)));
   Random rng(kick_seed(driving_.seed, schedule_.kicks));
   std::vector<Vec3> dv(n);
   CompensatedSum sum[3];
   for (Vec3& v : dv)
-    for (int a = 0; a < d; ++a) {
-      v[a] = s * rng.normal();
-      sum[a].add(v[a]);
-    }
-  for (int a = 0; a < d; ++a) {
+    for (int a = 0; a < 3; ++a)
+      if (g.spans(a)) {  // the axes beyond the dimension stay 0
+        v[a] = s * rng.normal();
+        sum[a].add(v[a]);
+      }
+  for (int a = 0; a < 3; ++a) {
     const double mean = sum[a].value() / double(n);
     for (Vec3& v : dv) v[a] -= mean;
   }

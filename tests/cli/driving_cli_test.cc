@@ -86,7 +86,7 @@ class DrivingResume : public ::testing::Test {
   // Runs the scene into `name` with the fault `spec` armed (a checkpoint
   // after every slice of events), expecting `exit_code`, then resumes it.
   static std::string stop_and_resume(const std::string& name, const std::string& spec, int exit_code) {
-    const std::string out = *dir_ + "/" + name + ".h5";
+    std::string out = *dir_ + "/" + name + ".h5";
     const auto stopped =
         run_command("COOLGAS_CHECKPOINT_INTERVAL=0 " + test::fault(spec) + simulate(*scene_ + " -o " + out));
     EXPECT_EQ(stopped.exit_code, exit_code) << spec << ": " << stopped.err;
