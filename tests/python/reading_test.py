@@ -12,7 +12,7 @@ import pandas as pd
 import pytest
 
 import coolgas
-from conftest import BIN, GAS, tool
+from conftest import BIN, tool
 
 
 def test_parameters_are_the_files(gas):
@@ -29,6 +29,7 @@ def test_parameters_are_the_files(gas):
 
 def test_a_driven_runs_parameters_hold_its_driving(gas, tmp_path):
     # Present exactly when the run is driven ([driving]; data-schema/h5md-profile.md, version 4).
+    from conftest import GAS
     assert "driving_power" not in coolgas.open(gas).parameters
     scene = tmp_path / "driven.toml"
     scene.write_text(GAS.replace("[run]", "[driving]\npower = 0.05\n[run]").replace("t_end = 300", "t_end = 5"))
