@@ -1,6 +1,7 @@
 #include "data-schema/validator.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <optional>
 #include <set>
@@ -10,6 +11,8 @@
 #include "common/trajectory/collision_models.h"
 #include "common/trajectory/frame_reader.h"
 #include "common/trajectory/layout.h"
+#include "common/trajectory/run_parameters.h"
+#include "common/tsv.h"
 #include "data-schema/hdf5_inspect.h"
 #include "data-schema/value_checks.h"
 
@@ -56,6 +59,7 @@ class Checker {
       d_ = 3;  // the attribute check reports any other value
     }
     for (const AttributeSpec& a : profile_.attributes) check_attribute(a);
+    check_driving();
     read_box_parameters();
     for (const ElementSpec& e : profile_.elements) guarded(e.path, [&] { check_element(e); });
     check_shared_rows(RowCount::kFrames, profile_.frames_from);
@@ -96,6 +100,21 @@ class Checker {
   bool model_has(const ElementSpec& e) const {
     const CollisionModelSpec* m = model_ ? find_collision_model(*model_) : nullptr;
     return m && (!e.only_in || *e.only_in == m->layout);
+  }
+
+  // The driven gas's attributes (common/trajectory/run_parameters.h): a
+  // driven run writes both, and says the schema version that added them.
+  void check_driving() {
+    const std::string group(layout::kParameters);
+    AttributeFound found;
+    const bool power = read_attribute(file_, group, "driving_power", found);
+    const bool period = read_attribute(file_, group, "driving_period", found);
+    if (power != period)
+      problem(group, std::string("attribute '") + (power ? "driving_power" : "driving_period") + "' without '" +
+                         (power ? "driving_period" : "driving_power") + "': a driven run writes both");
+    if ((power || period) && file_version_ < kDrivingSchemaVersion)
+      problem(group, "the driven gas's attributes in a file of schema version " + std::to_string(file_version_) +
+                         "; they came with version " + std::to_string(kDrivingSchemaVersion));
   }
 
   // The model decides which per-model rows are required; an unknown one is a problem of its own.
@@ -193,6 +212,8 @@ class Checker {
       problem(a.group, name + " is " + found.text + " but must be at least " + std::to_string(*a.at_least));
     else if (a.at_most && found.first_integer > *a.at_most)
       problem(a.group, name + " is " + found.text + " but must be at most " + std::to_string(*a.at_most));
+    else if (a.above && !(std::isfinite(found.first_number) && found.first_number > *a.above))
+      problem(a.group, name + " is " + found.text + " but must be a finite number above " + format_number(*a.above));
     else
       good_attributes_.insert(path_of(a.group, a.name));
   }

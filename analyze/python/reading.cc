@@ -24,7 +24,7 @@ py::dict read_table_dict(const std::string& path) {
   return d;
 }
 
-// Every /parameters field the file's model has (run_parameters.h), typed.
+// Every /parameters field the file holds (run_parameters.h), typed.
 py::dict parameters(const std::string& path) {
   const RunParameters p = read_run_info(path).params;
   py::dict d;
@@ -35,6 +35,8 @@ py::dict parameters(const std::string& path) {
           if constexpr (std::is_same_v<decltype(member), ModelValue>) {
             const auto it = p.collision.find(f.name);
             if (it != p.collision.end()) d[name] = it->second;
+          } else if constexpr (std::is_same_v<decltype(member), std::optional<double> RunParameters::*>) {
+            if (p.*member) d[name] = *(p.*member);  // present only in the runs that have it (driving)
           } else {
             d[name] = p.*member;
           }

@@ -55,8 +55,11 @@ void append_parameters(Profile& p) {
                             .name = f.name,
                             .type = type_of(f.member),
                             .at_least = f.at_least,
+                            .above = f.above,
                             .meaning = f.meaning,
-                            .presence = is_model_specific(f) ? Presence::kPerModel : Presence::kRequired,
+                            .presence = is_model_specific(f) ? Presence::kPerModel
+                                        : is_optional(f)     ? Presence::kOptional
+                                                             : Presence::kRequired,
                             .since = f.since});
 }
 
@@ -115,6 +118,7 @@ Profile make_profile() {
   };
   append_parameters(p);
   append_aggregation_layout(p);
+  p.version = int(kDrivingSchemaVersion);  // version 4 adds the driven gas's optional /parameters (above)
   p.schema_version = {kParameters, "schema_version"};
   p.particle_count = {kParameters, "N"};
   p.box_side = {kParameters, "L"};

@@ -66,6 +66,7 @@ struct AttributeSpec {
   std::string_view equals;               // the value as the validator prints it, e.g. "[1, 1]"; empty: any
   std::optional<std::int64_t> at_least;  // lower bound for integers
   std::optional<std::int64_t> at_most;   // upper bound for integers
+  std::optional<double> above;           // floats: finite and above this
   bool per_dimension = false;            // an array of d elements, each `equals` (shown as "[x, x]")
   std::string_view meaning;
   Presence presence = Presence::kRequired;

@@ -125,7 +125,7 @@ H5mdWriter H5mdWriter::create(const std::string& path, const RunParameters& para
   w.dimension_ = g.d();
   w.layout_ = model->layout;
   RunParameters p = params;
-  p.schema_version = model->schema_version;
+  p.schema_version = schema_version_of(p, model->schema_version);
   p.program_version = program_version();
   w.writing([&] { w.create_objects(p, storage); });
   return w;

@@ -1,5 +1,6 @@
 #include "common/trajectory/run_parameters.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "common/error.h"
@@ -36,7 +37,9 @@ H5T_class_t class_of(const ParameterField::Member& m) {
                     m);
 }
 
+// Whether a file of these parameters holds the field (optional ones: when set).
 bool present_for(const RunParameters& p, const ParameterField& f) {
+  if (const auto* m = std::get_if<std::optional<double> RunParameters::*>(&f.member)) return (p.**m).has_value();
   return !is_model_specific(f) || model_uses(p.model, f.name);
 }
 
@@ -50,6 +53,7 @@ void read_field_unchecked(hid_t g, const std::string& path, const ParameterField
   std::visit(Overloaded{[&](std::int64_t RunParameters::*m) { p.*m = h5::read_attr_int(g, name); },
                         [&](double RunParameters::*m) { p.*m = h5::read_attr_double(g, name); },
                         [&](std::string RunParameters::*m) { p.*m = h5::read_attr_string(g, name); },
+                        [&](std::optional<double> RunParameters::*m) { p.*m = h5::read_attr_double(g, name); },
                         [&](ModelValue) { p.collision[name] = h5::read_attr_double(g, name); }},
              f.member);
 }
@@ -94,6 +98,10 @@ const std::vector<ParameterField>& run_parameter_fields() {
     };
     for (const ModelParameter* m : model_parameters())
       f.push_back({m->name, ModelValue{}, m->meaning, kPhysics, m->since});
+    f.push_back({"driving_power", &RunParameters::driving_power, "energy injected per particle per unit time",
+                 kPhysics, int(kDrivingSchemaVersion), std::nullopt, 0.0});
+    f.push_back({"driving_period", &RunParameters::driving_period, "kick interval in mean collision times",
+                 kPhysics, int(kDrivingSchemaVersion), std::nullopt, 0.0});
     return f;
   }();
   return fields;
@@ -103,11 +111,23 @@ bool is_model_specific(const ParameterField& f) {
   return std::holds_alternative<ModelValue>(f.member);
 }
 
+bool is_optional(const ParameterField& f) {
+  return std::holds_alternative<std::optional<double> RunParameters::*>(f.member);
+}
+
+std::int64_t schema_version_of(const RunParameters& p, std::int64_t model_version) {
+  return p.driving_power ? std::max(model_version, kDrivingSchemaVersion) : model_version;
+}
+
 std::optional<std::string> field_text(const RunParameters& p, const ParameterField& f) {
   return std::visit(Overloaded{[&](ModelValue) -> std::optional<std::string> {
                                  const auto it = p.collision.find(f.name);
                                  if (it == p.collision.end()) return std::nullopt;
                                  return text_of(it->second);
+                               },
+                               [&](std::optional<double> RunParameters::*m) -> std::optional<std::string> {
+                                 if (!(p.*m)) return std::nullopt;
+                                 return text_of(*(p.*m));
                                },
                                [&](auto m) -> std::optional<std::string> { return text_of(p.*m); }},
                     f.member);
@@ -124,6 +144,9 @@ void write_parameters(hid_t g, const RunParameters& p) {
                               throw std::logic_error("parameter " + name + (want ? " missing" : " set") +
                                                      " for model " + p.model);
                             if (want) h5::write_attr(g, name, it->second);
+                          },
+                          [&](std::optional<double> RunParameters::*m) {
+                            if (p.*m) h5::write_attr(g, name, *(p.*m));
                           },
                           [&](auto m) { h5::write_attr(g, name, p.*m); }},
                f.member);
@@ -142,8 +165,10 @@ RunParameters read_parameters(hid_t g, const std::string& path) {
       break;
     }
   }
-  for (const ParameterField& f : run_parameter_fields())
-    if (f.name != "model" && present_for(p, f)) read_field(g, path, f, p);
+  for (const ParameterField& f : run_parameter_fields()) {
+    if (f.name == "model") continue;
+    if (is_optional(f) ? h5::has_attr(g, std::string(f.name)) : present_for(p, f)) read_field(g, path, f, p);
+  }
   check_particle_count(p, path);
   return p;
 }

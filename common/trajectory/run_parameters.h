@@ -31,7 +31,13 @@ struct RunParameters {
   // Model-specific (collision_models.h), by name: present exactly when the
   // model uses them. The defaults are those of the default model, elastic spheres.
   ParameterValues collision = {{"r0", 1.0}, {"delta", 0.0}};
+  // The driven gas (simulate/engine/driving.h): present exactly when the run
+  // is driven (the scene's [driving]); files of a driven run are of schema
+  // version kDrivingSchemaVersion or later.
+  std::optional<double> driving_power, driving_period;
 };
+
+inline constexpr std::int64_t kDrivingSchemaVersion = 4;
 
 // kPhysics: defines "the same physics"; runs of one ensemble agree in it.
 // kSeed: what the runs of an ensemble differ in.
@@ -43,19 +49,25 @@ struct ModelValue {};
 
 struct ParameterField {
   using Member = std::variant<std::int64_t RunParameters::*, double RunParameters::*, std::string RunParameters::*,
-                              ModelValue>;
+                              std::optional<double> RunParameters::*, ModelValue>;
   std::string_view name;  // the /parameters attribute
-  Member member;          // ModelValue: model-specific, one field per row of model_parameters()
+  Member member;          // ModelValue: model-specific, one field per row of model_parameters();
+                          // std::optional: present in some runs of every model (driving)
   std::string_view meaning;
   ParameterRole role = ParameterRole::kPhysics;
   int since = 1;                         // schema version that added it
   std::optional<std::int64_t> at_least;  // lower bound the validator checks (integers)
+  std::optional<double> above;           // floats: finite and above this (the validator checks)
 };
 
 const std::vector<ParameterField>& run_parameter_fields();
 
 // Present for every model, or only for those that list it (collision_models.h).
 bool is_model_specific(const ParameterField& f);
+// Present only in the runs that have it, whatever their model (driving).
+bool is_optional(const ParameterField& f);
+// The schema version a run's file says: its model's, or that of the driven gas if later.
+std::int64_t schema_version_of(const RunParameters& p, std::int64_t model_version);
 // The field's value as text ("32", "0.1", "inelastic"); nothing when absent.
 std::optional<std::string> field_text(const RunParameters& p, const ParameterField& f);
 

@@ -101,6 +101,7 @@ class Engine final : public EngineBase {
   Observables observables() const override;
   EngineFrame frame() const override;
   void save(StateWriter& out) const override;
+  void add_velocities(const std::vector<Vec3>& dv) override;
 
   // For tests: when set, every collision is appended.
   void record_collisions(std::vector<CollisionRecord>* log) { log_ = log; }

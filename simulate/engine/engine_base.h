@@ -112,6 +112,13 @@ class EngineBase {
   // Every field the engine's future depends on (state_archive.h); the
   // engine's restoring constructor reads them back.
   virtual void save(StateWriter& out) const = 0;
+  // Every particle brought to now(), dv[id] added to the velocity of
+  // particle id, and every event predicted afresh: a kick of the driven gas
+  // (driving.h), between events, never inside run_until's loop. Engines
+  // whose particles merge do not offer it (std::logic_error).
+  virtual void add_velocities(const std::vector<Vec3>& /*dv*/) {
+    throw std::logic_error("this engine's particles cannot be kicked");
+  }
 };
 
 }  // namespace coolgas

@@ -1,5 +1,6 @@
 // Chooses, once at start-up, the engine instantiation for the scene's
-// collision model, so the hot loop is compiled for exactly that rule.
+// collision model, so the hot loop is compiled for exactly that rule; a
+// scene with [driving] gets it wrapped in the kicks (simulate/engine/driving.h).
 #pragma once
 #include <memory>
 

@@ -65,7 +65,7 @@ const ModelRow& model_row(CollisionModel model) { return model_rows().at(std::si
 
 RunEta run_eta_for(const RunParameters& p, Geometry g) {
   const ModelRow* row = find_model_row(p.model);
-  RunEta eta = row ? row->eta(p) : eta_of_cooling_gas(p);
+  RunEta eta = p.driving_power ? eta_of_driven_gas(p) : row ? row->eta(p) : eta_of_cooling_gas(p);
   eta.set_dimension(g.d());
   return eta;
 }

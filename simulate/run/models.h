@@ -45,7 +45,8 @@ const std::vector<ModelRow>& model_rows();
 // The ETA of a run of these parameters in geometry g, by its model's row:
 // an elastic gas has no finite-size regime, aggregation at most N - 1
 // merges, the inelastic gas its own clustering floor and its crossings
-// modelled; other cooling gases (viscoelastic) the floor 0.5.
+// modelled; other cooling gases (viscoelastic) the floor 0.5; a driven gas,
+// whatever its model, its steady state (eta_of_driven_gas).
 RunEta run_eta_for(const RunParameters& p, Geometry g);
 const ModelRow& model_row(CollisionModel model);
 // The row named `name`, or nullptr.

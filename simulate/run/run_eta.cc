@@ -178,6 +178,7 @@ RunEta eta_of_inelastic_gas(const RunParameters& p) {
   if (r0 == p.collision.end() || delta == p.collision.end()) return eta_of_cooling_gas(p);
   return RunEta(p.L, INFINITY, clustering_floor(p.phi, r0->second, delta->second), crossing_floor(p.phi));
 }
+RunEta eta_of_driven_gas(const RunParameters&) { return RunEta(INFINITY, INFINITY, 1.0); }
 RunEta eta_of_aggregation(const RunParameters& p) {
   return RunEta::aggregation(p.L, double(p.N), AggregationEngine::kCellsPerAggregateLimit);
 }

@@ -168,6 +168,11 @@ RunEta eta_without_cooling(const RunParameters& p);
 RunEta eta_of_cooling_gas(const RunParameters& p);
 RunEta eta_of_inelastic_gas(const RunParameters& p);
 RunEta eta_of_aggregation(const RunParameters& p);
+// A driven gas (any model with [driving], simulate/engine/driving.h) tends
+// to a steady state, where C grows as t, or (elastic) heats, where it grows
+// faster: its exponent is held at 1 or more, with no finite-size regime.
+// run_eta_for picks it over the model's row whenever the run is driven.
+RunEta eta_of_driven_gas(const RunParameters& p);
 
 // ln(C(t_end) / C(t)) for a local exponent that is a at t and then falls
 // as under Haff's law, is at least `clustering` before t_knee and at most

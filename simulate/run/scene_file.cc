@@ -44,6 +44,10 @@ RunParameters parameters_of(const Scene& s) {
   p.collision.clear();
   for (const ModelParameter* m : model.parameters) p.collision[std::string(m->name)] = s.parameter(m->name);
   for (const FixedParameter& f : model.fixed) p.collision[std::string(f.parameter->name)] = f.value;
+  if (s.driving_power) {
+    p.driving_power = s.driving_power;
+    p.driving_period = s.driving_period;
+  }
   return p;
 }
 

@@ -159,6 +159,21 @@ const std::vector<SceneKey>& scene_keys() {
        .choices = model_names(),
        .set = [](Scene& s, const SceneValue& v) { s.model = choice<CollisionModel>(key_row("collision.model"), v); },
        .toml = [](const Scene& s) { return toml_string(s.model_name()); }},
+      // The [driving] table: absent, the gas cools freely (and its scene text
+      // is what it was before the table existed).
+      {.key = "driving.power", .type = KeyType::kFloat, .need = KeyNeed::kOptional,
+       .help = "energy injected per particle per unit time by white-noise kicks that keep the total momentum, in "
+               "units of the initial temperature T0 per initial collision time; absent: no driving, the gas "
+               "cools freely",
+       .lo = 0, .lo_open = true, .models = {M::kElastic, M::kInelastic, M::kViscoelastic},
+       .set = [](Scene& s, const SceneValue& v) { s.driving_power = std::get<double>(v); },
+       .toml = [](const Scene& s) { return s.driving_power ? toml_float(*s.driving_power) : std::string(); }},
+      {.key = "driving.period", .type = KeyType::kFloat, .need = KeyNeed::kOptional,
+       .help = "interval between kicks, in mean collision times at the gas's temperature (smaller: closer to the "
+               "continuous thermostat, and slower); absent: 0.5",
+       .lo = 0.01, .hi = 10, .models = {M::kElastic, M::kInelastic, M::kViscoelastic},
+       .set = [](Scene& s, const SceneValue& v) { s.driving_period = std::get<double>(v); },
+       .toml = [](const Scene& s) { return s.driving_power ? toml_float(s.driving_period) : std::string(); }},
       {.key = "run.t_end", .type = KeyType::kFloat, .need = KeyNeed::kRequired,
        .help = "simulated time to stop at, in initial mean collision times", .lo = 0, .lo_open = true,
        .set = [](Scene& s, const SceneValue& v) { s.t_end = std::get<double>(v); },
@@ -663,6 +678,13 @@ void check_required(const Scene& s, const KeyValues& kv) {
   }
 }
 
+// The kicks' interval means nothing without their power.
+void check_driving(const Scene& s, const KeyValues& kv) {
+  if (kv.count("driving.period") && !s.driving_power)
+    throw InputError("driving.period is set but driving.power is not; give driving.power (the energy injected per "
+                     "particle per unit time) or remove driving.period");
+}
+
 Scene build_scene(const KeyValues& kv, const std::set<std::string>& overridden) {
   Scene s;
   for (const auto& k : scene_keys()) {
@@ -673,6 +695,7 @@ Scene build_scene(const KeyValues& kv, const std::set<std::string>& overridden) 
     k.set(s, v);
   }
   check_unused_keys(s, kv);
+  check_driving(s, kv);
   check_required(s, kv);
   set_size(s, kv, overridden);
   check_relations(s);
@@ -743,9 +766,10 @@ std::string Scene::to_toml() const {
   std::string table;
   for (const auto& k : scene_keys()) {
     const std::string key = k.key, name = key.substr(0, key.find('.'));
-    if (name != table) out += (table.empty() ? "[" : "\n[") + name + "]\n", table = name;
     const std::string value = used_by(k, *this) ? k.toml(*this) : "";
-    if (!value.empty()) out += key.substr(key.find('.') + 1) + " = " + value + "\n";
+    if (value.empty()) continue;  // a table none of whose keys is written ([driving]) is left out
+    if (name != table) out += (table.empty() ? "[" : "\n[") + name + "]\n", table = name;
+    out += key.substr(key.find('.') + 1) + " = " + value + "\n";
   }
   return out;
 }

@@ -25,6 +25,9 @@ enum class InitialPositions { kRandom, kFcc, kFile };
 // The order is that of the file side's table, common/trajectory/collision_models.h,
 // which names each model (tests/unit/simulate/run/models_test.cc).
 enum class CollisionModel { kElastic, kInelastic, kViscoelastic, kAggregation };
+// driving.period when the scene does not give it: a kick every half mean
+// collision time (docs/simulate.md, "Driven gas": cost and accuracy).
+inline constexpr double kDefaultKickPeriod = 0.5;
 // collision.model and /parameters/model of `m`: "elastic", ...
 std::string model_name(CollisionModel m);
 
@@ -51,6 +54,10 @@ struct Scene {
   // The model's parameters collision.<name> (common/trajectory/collision_models.h)
   // the scene gives; the others take their defaults.
   ParameterValues collision;
+  // driving (simulate/engine/driving.h): the power of the white-noise
+  // kicks (none: a freely cooling gas) and their interval.
+  std::optional<double> driving_power;
+  double driving_period = kDefaultKickPeriod;
   // run
   double t_end = 0;
   // output

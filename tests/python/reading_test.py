@@ -27,6 +27,21 @@ def test_parameters_are_the_files(gas):
     assert "time" in p["units"]
 
 
+def test_a_driven_runs_parameters_hold_its_driving(gas, tmp_path):
+    # Present exactly when the run is driven ([driving]; data-schema/h5md-profile.md, version 4).
+    from conftest import GAS
+    assert "driving_power" not in coolgas.open(gas).parameters
+    scene = tmp_path / "driven.toml"
+    scene.write_text(GAS.replace("[run]", "[driving]\npower = 0.05\n[run]").replace("t_end = 300", "t_end = 5"))
+    out = tmp_path / "driven.h5"
+    tool("simulate", "-q", scene, "-o", out)
+    p = coolgas.open(out).parameters
+    with h5py.File(out, "r") as f:
+        assert p["driving_power"] == f["parameters"].attrs["driving_power"] == 0.05
+        assert p["driving_period"] == f["parameters"].attrs["driving_period"] == 0.5
+        assert p["schema_version"] == 4
+
+
 def test_observables_are_the_files(gas):
     obs = coolgas.open(gas).observables
     assert obs.index.name == "t"

@@ -162,6 +162,33 @@ const Corruption kCorruptions[] = {
     {"parameter_of_wrong_type",
      [](hid_t f) { set_attr(f, "parameters", [](hid_t g) { h5::write_attr(g, "seed", 11.0); }); },
      {"/parameters: attribute 'seed' has type float64 but the profile requires int64"}},
+    // The driven gas's attributes (schema version 4): both or neither, a
+    // finite power above 0, and only in a file of the version that added them.
+    {"driving_power_not_positive",
+     [](hid_t f) {
+       set_attr(f, "parameters", [](hid_t g) {
+         h5::write_attr(g, "schema_version", std::int64_t{4});
+         h5::write_attr(g, "driving_power", -1.0);
+         h5::write_attr(g, "driving_period", 0.5);
+       });
+     },
+     {"/parameters: attribute 'driving_power' is -1 but must be a finite number above 0"}},
+    {"driving_power_alone",
+     [](hid_t f) {
+       set_attr(f, "parameters", [](hid_t g) {
+         h5::write_attr(g, "schema_version", std::int64_t{4});
+         h5::write_attr(g, "driving_power", 0.1);
+       });
+     },
+     {"/parameters: attribute 'driving_power' without 'driving_period': a driven run writes both"}},
+    {"driving_in_an_older_version",
+     [](hid_t f) {
+       set_attr(f, "parameters", [](hid_t g) {
+         h5::write_attr(g, "driving_power", 0.1);
+         h5::write_attr(g, "driving_period", 0.5);
+       });
+     },
+     {"/parameters: the driven gas's attributes in a file of schema version 1; they came with version 4"}},
     {"old_schema_version",
      [](hid_t f) { set_attr(f, "parameters", [](hid_t g) { h5::write_attr(g, "schema_version", std::int64_t{0}); }); },
      {"/parameters: attribute 'schema_version' is 0 but must be at least 1"}},

@@ -50,6 +50,7 @@ void perturb(RunParameters& p, const ParameterField& f) {
     } else {
       using T = std::decay_t<decltype(p.*m)>;
       if constexpr (std::is_same_v<T, std::string>) p.*m += "x";
+      else if constexpr (std::is_same_v<T, std::optional<double>>) p.*m = 2 * (p.*m).value_or(0) + 1;
       else p.*m = 2 * (p.*m) + 1;
     }
   }, f.member);
@@ -108,26 +109,34 @@ std::set<std::string> attribute_names(hid_t group) {
   return names;
 }
 
+// Every model's file, and a driven gas's (simulate/engine/driving.h): the
+// driving attributes are there exactly when the run is driven, and make its
+// file of schema version 4.
 TEST(RunParameters, EachModelsFileHoldsExactlyItsFieldsAndReadsThemBack) {
-  for (const CollisionModelSpec& m : collision_models()) {
-    const std::string model(m.name);
-    const std::string path = test::scratch_dir("run_parameters_" + model) + "/run.h5";
-    const RunParameters written = params_for(model);
-    { H5mdWriter::create(path, written, true, Geometry(3)); }
-    h5::Handle f = h5::open_file(path, h5::Mode::kReadOnly);
-    h5::Handle g = h5::open_group(f.id(), std::string(layout::kParameters));
-    std::set<std::string> expected;
-    for (const ParameterField& field : run_parameter_fields())
-      if (!is_model_specific(field) || model_uses(model, field.name)) expected.insert(std::string(field.name));
-    EXPECT_EQ(attribute_names(g.id()), expected) << model;
-    EXPECT_EQ(h5::read_attr_int(g.id(), "schema_version"), m.schema_version) << model;
-    const RunParameters read = read_parameters(g.id(), path);
-    for (const ParameterField& field : run_parameter_fields()) {
-      if (field.role == ParameterRole::kRecord) continue;
-      EXPECT_EQ(field_text(read, field), field_text(written, field)) << model << " " << field.name;
+  for (const CollisionModelSpec& m : collision_models())
+    for (const bool driven : {false, true}) {
+      if (driven && m.layout != layout::Layout::kGas) continue;
+      const std::string model = std::string(m.name) + (driven ? "_driven" : "");
+      const std::string path = test::scratch_dir("run_parameters_" + model) + "/run.h5";
+      RunParameters written = params_for(std::string(m.name));
+      if (driven) written.driving_power = 0.3, written.driving_period = 0.5;
+      { H5mdWriter::create(path, written, true, Geometry(3)); }
+      h5::Handle f = h5::open_file(path, h5::Mode::kReadOnly);
+      h5::Handle g = h5::open_group(f.id(), std::string(layout::kParameters));
+      std::set<std::string> expected;
+      for (const ParameterField& field : run_parameter_fields())
+        if (is_optional(field) ? driven : !is_model_specific(field) || model_uses(m.name, field.name))
+          expected.insert(std::string(field.name));
+      EXPECT_EQ(attribute_names(g.id()), expected) << model;
+      EXPECT_EQ(h5::read_attr_int(g.id(), "schema_version"), driven ? kDrivingSchemaVersion : m.schema_version)
+          << model;
+      const RunParameters read = read_parameters(g.id(), path);
+      for (const ParameterField& field : run_parameter_fields()) {
+        if (field.role == ParameterRole::kRecord) continue;
+        EXPECT_EQ(field_text(read, field), field_text(written, field)) << model << " " << field.name;
+      }
+      EXPECT_EQ(read.scene_toml, written.scene_toml);
     }
-    EXPECT_EQ(read.scene_toml, written.scene_toml);
-  }
 }
 
 TEST(RunParameters, NotApplicableIsAbsentNotASentinel) {

@@ -3,7 +3,7 @@
 // event budget, with observables and frames read in between) changes
 // nothing; the budget is honoured exactly; frames are wrapped into the box;
 // momentum is kept; an engine restored from its saved state replays the
-// same events.
+// same events. Driven gases (simulate/engine/driving.h) keep it too.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -19,10 +19,11 @@
 namespace coolgas {
 namespace {
 
-// A case: a model in a dimension.
+// A case: a model in a dimension, driven (simulate/engine/driving.h) or cooling.
 struct ModelIn {
   CollisionModel model;
   int dimension;
+  bool driven = false;
 };
 
 Scene scene_of(const ModelIn& m) {
@@ -32,6 +33,7 @@ Scene scene_of(const ModelIn& m) {
   // Each of the model's parameters at its row's typical value (common/trajectory/collision_models.h).
   for (const ModelParameter* p : collision_models().at(std::size_t(m.model)).parameters) s.set_parameter(p->name, p->example);
   s.equilibrate = 0;
+  if (m.driven) s.driving_power = 0.1;  // a kick every half collision time
   return s;
 }
 
@@ -107,11 +109,15 @@ TEST(EngineContractRebuilds, ScheduledRebuildsDoNotDependOnSlicing) {
 std::vector<ModelIn> every_model() {
   std::vector<ModelIn> models;
   for (const int dimension : {3, 2})
-    for (const ModelRow& r : model_rows()) models.push_back({r.model, dimension});
+    for (const ModelRow& r : model_rows()) {
+      models.push_back({r.model, dimension});
+      if (r.model != CollisionModel::kAggregation) models.push_back({r.model, dimension, true});
+    }
   return models;
 }
 std::string case_name(const ::testing::TestParamInfo<ModelIn>& info) {
-  return model_name(info.param.model) + "_" + std::to_string(info.param.dimension) + "D";
+  return model_name(info.param.model) + "_" + std::to_string(info.param.dimension) + "D" +
+         (info.param.driven ? "_driven" : "");
 }
 INSTANTIATE_TEST_SUITE_P(EveryModel, EngineContract, ::testing::ValuesIn(every_model()), case_name);
 

@@ -35,6 +35,20 @@ TEST(RunPlan, AnElasticGasCollidesAtTheEnskogRate) {
   }
 }
 
+// A driven gas (simulate/engine/driving.h) whose power holds it at T0
+// (P = (1 - r0^2) T0 / 2, the energy balance of tests/physics/driven_gas_test.cc)
+// collides at the rate of t = 0 for ever: N t_end / 2 collisions to
+// t_end = 1000, within 3 % (its steady T lies about 1 % above T0 at
+// r0 = 0.8, its rate half that; the pilot's relaxation the rest), where a
+// cooling gas's rule would plan a fraction of them.
+TEST(RunPlan, ADrivenGasCollidesAtItsSteadyRate) {
+  Scene s = test::inelastic_scene(40000, 0.1, 0.8, 0.0, 3);
+  s.t_end = 1000;
+  s.driving_power = (1 - 0.8 * 0.8) * initial_temperature(s) / 2;
+  const RunPlan plan = plan_run(s, nullptr);
+  EXPECT_NEAR(plan.collisions / (double(s.N) * s.t_end / 2), 1.0, 0.03);
+}
+
 // A run no larger than the pilot and no longer than its time is its own
 // pilot: the plan's collisions are the run's, exactly (same seed, same
 // events); its dumps are the time grid's and t = 0; its memory the engine's
