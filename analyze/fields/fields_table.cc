@@ -58,7 +58,10 @@ namespace coolgas {
 
 TableBlock fields_block(FieldsTable table, FourierGrid& grid, double t, double L, std::span<const double> positions,
                         std::span<const double> velocities, std::span<const double> masses) {
-  const CellFields f = cell_fields(grid.n(), grid.geometry(), L, positions, velocities, masses);
+  return fields_block(table, grid, t, cell_fields(grid.n(), grid.geometry(), L, positions, velocities, masses));
+}
+
+TableBlock fields_block(FieldsTable table, FourierGrid& grid, double t, const CellFields& f) {
   if (table == FieldsTable::kSlab) return slab_block(t, f);
   const FieldEnergies e = field_energies(f);
   const FlowSplit s = flow_split(f, e.temperature, grid);

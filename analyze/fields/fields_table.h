@@ -22,6 +22,8 @@ const std::vector<std::string>& fields_columns(FieldsTable table);
 // x0 y0 z0 x1 ...; masses one per particle, empty for unit masses.
 TableBlock fields_block(FieldsTable table, FourierGrid& grid, double t, double L, std::span<const double> positions,
                         std::span<const double> velocities, std::span<const double> masses);
+// The same from the frame's cells (cell_fields on grid's n and geometry).
+TableBlock fields_block(FieldsTable table, FourierGrid& grid, double t, const CellFields& f);
 
 // The series row of a frame at time t: its energies and split.
 std::vector<double> fields_row(double t, const CellFields& f, const FieldEnergies& e, const FlowSplit& s);

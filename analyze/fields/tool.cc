@@ -73,10 +73,12 @@ void run_fields(const FieldsOptions& opt, std::ostream& final_out) {
   Frame buffer;
   traj.for_each_dump(dumps, buffer, [&](const Frame& frame) {
     const std::span<const double> masses = traj.aggregates() ? std::span<const double>(frame.mass) : std::span<const double>();
-    const TableBlock b = fields_block(table, grid, frame.time, frame.L, frame.position, frame.velocity, masses);
+    // The cells once, for the table and the .vti file.
+    const CellFields f = cell_fields(n, g, frame.L, frame.position, frame.velocity, masses);
+    const TableBlock b = fields_block(table, grid, frame.time, f);
     if (table == FieldsTable::kSeries) out.append(b);  // a row per dump, not a block
     else out.write(b);
-    if (!opt.vti.empty()) write_vti(vti_path(opt.vti, frame.dump), cell_fields(n, g, frame.L, frame.position, frame.velocity, masses));
+    if (!opt.vti.empty()) write_vti(vti_path(opt.vti, frame.dump), f);
   });
   final_out << os.str();
 }
