@@ -24,7 +24,7 @@ double a2_white_noise(double r, int d) {
   return 16 * (1 - r) * (1 - 2 * r * r) / (73 + 56 * d - 24 * d * r - 105 * r + 30 * (1 - r) * r * r);
 }
 
-// The steady temperature of power P: the root of P = (1 − r²) ω_E(T) T (1 + 3 a2/16) / 2, ω_E ∝ √T.
+// The steady temperature of power P (m σ² ω0³, the engine's unit): the root of P = (1 − r²) ω_E(T) T (1 + 3 a2/16) / 2, ω_E ∝ √T.
 double steady_temperature(const Scene& s, double power, double r) {
   const Geometry g = s.geometry();
   const double n = double(s.N) / g.box_measure(s.L), rate_at_1 = g.enskog_rate(n, s.phi, 1.0);
@@ -95,17 +95,16 @@ Scene driven_scene(double r, double power, std::int64_t seed) {
 // r = 0.5, Montanero & Santos, Granular Matter 2, 53 (2000)).
 TEST(DrivenGas, ReachesTheWhiteNoiseSteadyStateOfKineticTheory) {
   const double r = 0.5;
-  const Scene probe = driven_scene(r, 1.0, 7);
-  const double T0 = initial_temperature(probe);
-  const double power = (1 - r * r) * T0 / 2;
+  const double power = (1 - r * r) / 2;  // in T0 per collision time, the scene's unit
   const Scene s = driven_scene(r, power, 7);
+  const double T0 = initial_temperature(s);
   const Samples x = steady_samples(s, 20, 620, 2);
   const std::size_t half = x.T.size() / 2;
   const Mean first = block_mean({x.T.begin(), x.T.begin() + long(half)}, 10);
   const Mean second = block_mean({x.T.begin() + long(half), x.T.end()}, 10);
   EXPECT_NEAR(first.value, second.value, 4 * std::hypot(first.error, second.error)) << "not steady";
   const Mean T = block_mean(x.T, 10), a2 = block_mean(x.a2, 10);
-  const double theory = steady_temperature(s, power, r);
+  const double theory = steady_temperature(s, power * T0, r);  // in the engine's units
   EXPECT_NEAR(T.value / theory, 1.0, 0.04) << "T = " << T.value << " ± " << T.error << ", theory " << theory;
   const double a2_theory = a2_white_noise(r, 3);
   EXPECT_NEAR(a2.value, a2_theory, 4 * a2.error + 0.1 * a2_theory) << "a2 = " << a2.value << " ± " << a2.error;
@@ -119,8 +118,7 @@ TEST(DrivenGas, ReachesTheWhiteNoiseSteadyStateOfKineticTheory) {
 // the bit-for-bit form of the symmetry is tests/unit/simulate/engine/driving_test.cc).
 TEST(DrivenGas, EightTimesThePowerFourTimesTheTemperature) {
   const double r = 0.7;
-  const double T0 = initial_temperature(driven_scene(r, 1.0, 8));
-  const double power = 0.1 * T0;
+  const double power = 0.1;
   // The slower gas (T about T0/2, 1/ζ about 8 time units) relaxes for 50
   // and is sampled for 300; the faster one, whose times are half as long, for half as long.
   const Samples slow = steady_samples(driven_scene(r, power, 8), 50, 350, 2);
