@@ -79,6 +79,7 @@ lint: deps
 
 demo: build
 	$(MAKE) -C pipelines/demo -j $(JOBS) BIN=$(abspath $(BUILD))/bin OUT=$(abspath out/demo)
+	$(MAKE) -C pipelines/effects -j $(JOBS) BIN=$(abspath $(BUILD))/bin OUT=$(abspath out/effects)
 
 # Speed figures for the README (one core each; see tests/bench/). The
 # aggregation benchmarks (W3, ~1 CPU-min; W3b, far longer) are run by hand:

@@ -388,5 +388,38 @@ TEST(DimensionsPipeline, TinyRunsGiveEveryRowBothFiguresAndNothingLeftToDo) {
   EXPECT_EQ(dry.out.find("coolgas-simulate"), std::string::npos) << dry.out;
 }
 
+TEST(EffectsPipeline, TinyRunsGiveEveryRowJudgedAndTheFigure) {
+  // pipelines/effects with PARAMETERS=tiny.mk (seconds): each row of the
+  // effects table judged by pipelines/row-verdict.sh against its theory's
+  // exact value, and the figure; then make has nothing left to do.
+  std::string bin_dir = test::bin("coolgas-simulate");
+  bin_dir.erase(bin_dir.rfind('/'));
+  const std::string out = test::scratch_dir("effects_pipeline") + "/out";
+  const std::string make =
+      "make -C " + test::source("pipelines/effects") + " PARAMETERS=tiny.mk BIN=" + bin_dir + " OUT=" + out + " ";
+  const auto r = run_command(make + "-j2");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_TRUE(is_png(out + "/figures/driven.png"));
+  std::string columns;
+  const auto rows = tsv_rows(out + "/effects.tsv", &columns);
+  EXPECT_EQ(columns, "effect\tquantity\tmeasured\terror\ttheory\ttheory_error\ttolerance\tdeviation\tverdict\tsource");
+  std::map<std::string, double> theory;  // quantity -> theory
+  for (const auto& cells : rows) {
+    ASSERT_EQ(cells.size(), 10u) << cells.at(1);
+    EXPECT_TRUE(std::isfinite(std::stod(cells[2]))) << cells[1];
+    EXPECT_TRUE(std::isfinite(std::stod(cells[3]))) << cells[1];
+    EXPECT_TRUE(cells[8] == "agrees" || cells[8] == "differs" || cells[8] == "not decided") << cells[8];
+    theory[cells[1]] = std::stod(cells[4]);
+  }
+  ASSERT_EQ(rows.size(), 3u);
+  // T ~ P^(2/3): 8 times the power, 4 times the temperature, exactly.
+  EXPECT_DOUBLE_EQ(theory.at("T(8P)/T(P)"), 4.0);
+  // van Noije & Ernst's a2 at r0 = 0.5 in 3D: 16 (1/2)(1/2) / (73 + 168 - 36 - 52.5 + 3.75) = 4/156.25.
+  EXPECT_NEAR(theory.at("a2, steady"), 0.0256, 1e-6);
+  // Enskog's balance at P = (1 - r0^2)/2: T/T0 = (1 + 3 a2/16)^(-2/3).
+  EXPECT_NEAR(theory.at("T/T0, steady"), std::pow(1 + 3 * 0.0256 / 16, -2.0 / 3.0), 1e-5);
+  EXPECT_EQ(run_command(make + "-q").exit_code, 0);
+}
+
 }  // namespace
 }  // namespace coolgas

@@ -1,0 +1,21 @@
+# The effects pipeline's parameters (pipelines/effects/Makefile): sizes that
+# run in about a minute on two cores. tiny.mk overrides them for the test.
+#
+# The driven gas: the white-noise thermostat's steady state at r0 = 0.5,
+# delta = 0, phi = 0.05 (dilute enough for Enskog's energy balance within a
+# few per cent), N = 5240 (L = 38). POWER = (1 - r0^2)/2 in T0 per initial
+# collision time is what the collisions lose at T = T0, so the first run
+# stays near T0 and the second, at 8 times the power, heats to 4 T0
+# (T ~ P^(2/3) exactly at delta = 0). Both relax for DRIVEN_T_RELAX (1/zeta
+# is about 3 collision times at r0 = 0.5), then a dump every
+# DRIVEN_DUMP_EVERY samples a2 up to DRIVEN_T_END (about 200 samples, a2 to
+# +- 0.001). DRIVEN_PERIOD is the kicks' interval in collision times
+# (driving.period; its default).
+DRIVEN_L := 38
+DRIVEN_PHI := 0.05
+DRIVEN_R0 := 0.5
+DRIVEN_POWER := 0.375
+DRIVEN_T_RELAX := 20
+DRIVEN_T_END := 220
+DRIVEN_DUMP_EVERY := 1
+DRIVEN_PERIOD := 0.5

@@ -1,0 +1,57 @@
+#!/bin/sh
+# table.sh TABLES D T_RELAX
+# The effects pipeline's table (pipelines/effects/Makefile): each effect's
+# measured quantities against kinetic theory, one row each, judged by the
+# exponent table's rule (pipelines/row-verdict.sh). TSV columns
+#   effect quantity measured error theory theory_error tolerance deviation verdict source
+# deviation = (measured - theory) / sqrt(error^2 + theory_error^2). The
+# tolerance is what the theory itself is expected to miss by (its row's
+# source says why), so a row agrees when the two meet within it and the
+# measurement is that precise.
+# TABLES holds velocity_driven_P1.tsv and velocity_driven_P8.tsv
+# (coolgas-velocity --series, one row per dump); D is the dimension, and
+# the steady state is sampled from T_RELAX on.
+set -e
+tables=$1 d=$2 relax=$3
+here=$(dirname "$0")
+value() { sh "$here/../tsv-value.sh" "$@"; }
+calc() { awk "BEGIN { printf \"%.6g\", $1 }"; }
+steady() { sh "$here/steady.sh" "$@"; }
+row() {  # effect quantity measured error theory theory_error tolerance source
+  dev=$(awk "BEGIN { s = sqrt($4 * $4 + $6 * $6); if (s > 0) printf \"%.2f\", ($3 - $5) / s; else print \"-\" }")
+  verdict=$(sh "$here/../row-verdict.sh" "$3" "$4" "$5" "$6" "$7" yes)
+  printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$1" "$2" "$3" "$4" "$5" "$6" "$7" "$dev" "$verdict" "$8"
+}
+
+printf 'effect\tquantity\tmeasured\terror\ttheory\ttheory_error\ttolerance\tdeviation\tverdict\tsource\n'
+printf '# format: coolgas-table 2\n'
+printf '# tool: pipelines/effects/table.sh\n'
+printf '# version: %s\n' "$(value "$tables/velocity_driven_P1.tsv" version '#')"
+printf '# simulator_version: %s\n' "$(sed -n 's/^# simulator_version: //p' "$tables"/velocity_*.tsv | sort -u | paste -sd ';' -)"
+printf '# date: %s\n' "$(date -u +%Y-%m-%d)"
+
+# The driven gas: the white-noise thermostat's steady state. The knobs come
+# from the runs' own provenance, so the theory is that of the runs made.
+v1=$tables/velocity_driven_P1.tsv v8=$tables/velocity_driven_P8.tsv
+r=$(value "$v1" r0 '#') power=$(value "$v1" driving_power '#') T0=$(value "$v1" T0 '#')
+# a2 of the white-noise state, first Sonine approximation (van Noije & Ernst,
+# Granular Matter 1, 57 (1998)).
+a2=$(calc "16 * (1 - $r) * (1 - 2 * $r ^ 2) / (73 + 56 * $d - 24 * $d * $r - 105 * $r + 30 * (1 - $r) * $r ^ 2)")
+# Enskog's energy balance: P = (1 - r^2) omega_E(T) T (1 + 3 a2/16) / 2 with
+# omega_E(T) = sqrt(T/T0) in these units, so T/T0 = (2P / ((1 - r^2)(1 + 3 a2/16)))^(2/3).
+theory_T=$(calc "(2 * $power / ((1 - $r ^ 2) * (1 + 3 * $a2 / 16))) ^ (2 / 3)")
+# T = v_rms^2 (per component, unit mass) over the scene's T0 (not over the
+# energy at t = 0, whose sample of N Maxwellian velocities is off by ~ 1/sqrt(N)).
+set -- $(steady "$v1" v_rms "$relax" "$(calc "1 / $T0")" 2)
+T1=$1 T1_err=$2
+row "driving" "T/T0, steady" "$T1" "$T1_err" "$theory_T" 0 0.04 \
+  "Enskog's energy balance with the first Sonine a2; the tolerance is the velocity correlations molecular chaos leaves out (tests/physics/driven_gas_test.cc: 2.5 % at r0 = 0.5, phi = 0.05)"
+set -- $(steady "$v8" v_rms "$relax" "$(calc "1 / $T0")" 2)
+T8=$1 T8_err=$2
+ratio=$(calc "$T8 / $T1") ratio_err=$(calc "$T8 / $T1 * sqrt(($T1_err / $T1) ^ 2 + ($T8_err / $T8) ^ 2)")
+row "driving" "T(8P)/T(P)" "$ratio" "$ratio_err" 4 0 0.04 \
+  "exact at delta = 0: velocities x2, times /2, power x8 is the same dynamics (simulate/engine/driving.h)"
+# a2 = d kappa / (d + 2) from each dump's kappa (coolgas-velocity --series).
+set -- $(steady "$v1" kappa "$relax" "$(calc "$d / ($d + 2)")")
+row "driving" "a2, steady" "$1" "$2" "$a2" 0 "$(calc "0.1 * $a2")" \
+  "van Noije & Ernst's first Sonine approximation (the formula derived again in docs/effects.md); tolerance 10 % of it for the Sonine terms it leaves out"
