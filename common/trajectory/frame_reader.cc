@@ -246,12 +246,17 @@ void Trajectory::keep_present(Frame& frame) const {
 Provenance Trajectory::provenance() const {
   Provenance p{{"input", path_}};
   const std::string parameters(layout::kParameters);
-  if (h5::exists(file_.id(), parameters)) {
-    const RunParameters run = read_file_parameters(file_.id(), path_);
-    p.emplace_back("seed", std::to_string(run.seed));
-    for (auto& entry : physics_provenance(run)) p.push_back(std::move(entry));
+  if (!h5::exists(file_.id(), parameters)) {
+    add_dimension_line(p, dimension_);
+    return p;
   }
+  const RunParameters run = read_file_parameters(file_.id(), path_);
+  p.emplace_back("seed", std::to_string(run.seed));
+  for (auto& entry : physics_provenance(run)) p.push_back(std::move(entry));
   add_dimension_line(p, dimension_);
+  // Which build made the run, as coolgas-energy says it: a table made from
+  // dumps is traceable to its simulator too.
+  p.emplace_back("simulator_version", run.program_version);
   return p;
 }
 

@@ -17,4 +17,5 @@ awk -F '\t' '
   FNR == 1 || /^#/ || NF == 0 { next }
   { printf "| %s | %s | %s | %s | %s | %s | %s | %s |\n", $1, $2, show($3, $4), show($5, $6), show($7, ""), $8, $9, $10 }' "$tsv"
 echo
-echo "Verdicts: $(sh "$here/../row-verdict.sh" --rules)"
+# The exponent table's rule, with the row's theory where it says the paper.
+echo "Verdicts: $(sh "$here/../row-verdict.sh" --rules | sed "s/the paper's/the theory's/g; s/the paper/the theory/g")"

@@ -28,6 +28,7 @@ SKIPPED = {
     "make -C pipelines/demo -j2": "the demo pipeline: about 30 minutes (the recipes run at SCALE=tiny in tests/cli/pipeline_test.cc)",
     "make -C pipelines/demo reanalyze": "needs an archive of demo runs; tests/cli/pipeline_test.cc runs reanalyze from the tiny runs",
     "make -C pipelines/paper -j": "the paper scale: hundreds of core-hours on a cluster (srun)",
+    "make -C pipelines/workstation estimate": "the workstation's plan: a pilot of each of its 53 runs, minutes of CPU under load; tests/cli/docs_agree.py runs it and compares its totals with the docs",
     "make -C pipelines/workstation -j": "the workstation scale: hours on 2 cores, as its plan in docs/studies.md says (tests/cli/docs_agree.py runs the plan, make -C pipelines/workstation estimate)",
     "sbatch pipelines/cluster/paper.sbatch": "needs a Slurm cluster: ctest Slurm.* runs it on one (tests/cli/slurm_cluster_test.sh)",
     "sbatch --ntasks=2": "needs a Slurm cluster: ctest Slurm.* runs it on one (tests/cli/slurm_cluster_test.sh)",
