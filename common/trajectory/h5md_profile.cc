@@ -57,9 +57,9 @@ void append_parameters(Profile& p) {
                             .at_least = f.at_least,
                             .above = f.above,
                             .meaning = f.meaning,
-                            .presence = is_model_specific(f) ? Presence::kPerModel
-                                        : is_optional(f)     ? Presence::kOptional
-                                                             : Presence::kRequired,
+                            .presence = is_optional(f)         ? Presence::kOptional
+                                        : is_model_specific(f) ? Presence::kPerModel
+                                                               : Presence::kRequired,
                             .since = f.since});
 }
 
