@@ -527,6 +527,10 @@ RunStatus Engine<Rule, D>::run_until(double t_stop, std::int64_t max_events, con
           __builtin_prefetch(&m_[partner]);
           grid_.prefetch_cell(partner);
           calendar_.prefetch_event(partner);
+          if constexpr (Rule::kRough) {  // the spins the collision turns
+            __builtin_prefetch(&omega_[next]);
+            __builtin_prefetch(&omega_[partner]);
+          }
         } else {  // a crossing: the collision it kept, and its image counts
           __builtin_prefetch(&later_[next]);
           __builtin_prefetch(&image_[next]);
