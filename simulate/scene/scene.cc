@@ -141,7 +141,7 @@ const std::vector<SceneKey>& scene_keys() {
        .help = "the file to start from, relative to the working directory: a coolgas trajectory, an H5MD 1.1 file "
                "of another program (particles/<group>/position, box/edges) or an extended XYZ file, of "
                "system.dimension (disks: a square box, rods: a ring); velocities from the file, else drawn at T0 "
-               "with system.seed",
+               "with system.seed; rough particles' spins likewise (a rough coolgas run's, else drawn at T0)",
        .inits = {I::kFile},
        .set = [](Scene& s, const SceneValue& v) { s.from = std::get<std::string>(v); },
        .toml = [](const Scene& s) { return toml_string(s.from); }},
