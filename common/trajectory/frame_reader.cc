@@ -19,21 +19,21 @@ namespace coolgas {
 namespace {
 
 struct ElementSpec {
-  Field field;
   std::string_view path;  // the H5MD element (group holding step, time, value)
   hsize_t per_particle;   // numbers per particle: value is (F, N, 3) or (F, N)
+  Field field;
   bool per_axis = true;   // a vector of the box's d components (else of 3 in every dimension: spins)
 };
 
 // The per-particle elements a Trajectory can read.
 constexpr ElementSpec kElements[] = {
-    {Field::kPosition, layout::kPosition, 3},
-    {Field::kVelocity, layout::kVelocity, 3},
-    {Field::kImage, layout::kImage, 3},
-    {Field::kId, layout::kId, 1},
-    {Field::kMass, layout::kMass, 1},
-    {Field::kDiameter, layout::kDiameter, 1},
-    {Field::kAngularVelocity, layout::kAngularVelocity, 3, false},
+    {layout::kPosition, 3, Field::kPosition},
+    {layout::kVelocity, 3, Field::kVelocity},
+    {layout::kImage, 3, Field::kImage},
+    {layout::kId, 1, Field::kId},
+    {layout::kMass, 1, Field::kMass},
+    {layout::kDiameter, 1, Field::kDiameter},
+    {layout::kAngularVelocity, 3, Field::kAngularVelocity, false},
 };
 
 std::string value_of(const ElementSpec& e) { return layout::value_of(e.path); }

@@ -497,7 +497,8 @@ void Engine<Rule, D>::collide(int i, int j) {
   if (g > 0) {  // approaching (always, but for round-off at grazing contact)
     bool below = false;
     const double r = rule_.restitution(g, below);
-    if constexpr (Rule::kRough) apply_tangential_restitution(vi, vj, omega_[i], omega_[j], n, rule_.eta_t, rule_.spin_turn);
+    if constexpr (Rule::kRough)
+      apply_tangential_restitution(vi, vj, omega_[i], omega_[j], n, rule_.eta_t, rule_.spin_turn);
     apply_restitution(vi, vj, n, g, r);
     c_.below_delta += below;
   }

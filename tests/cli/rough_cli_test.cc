@@ -63,6 +63,13 @@ class RoughRun : public ::testing::Test {
     delete scene_;
   }
   static std::string whole() { return *dir_ + "/whole.h5"; }
+  // The same scene's smooth run (beta = -1) into `name`, briefly.
+  static std::string smooth_run(const std::string& name) {
+    const std::string out = *dir_ + "/" + name;
+    const auto r = run_command(simulate(*scene_ + " -o " + out + " --set collision.beta=-1 --set run.t_end=1"));
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return out;
+  }
   static std::string* dir_;
   static std::string* scene_;
 };
@@ -108,8 +115,7 @@ TEST_F(RoughRun, TheVelocityToolTakesTheSpins) {
   std::istringstream in(r.out);
   const Table t = read_table(in, "velocity");
   EXPECT_LT(std::fabs(t.column_values("kappa").at(0)), 4 * t.column_values("kappa_err").at(0));
-  const std::string smooth = *dir_ + "/smooth.h5";
-  ASSERT_EQ(run_command(simulate(*scene_ + " -o " + smooth + " --set collision.beta=-1 --set run.t_end=1")).exit_code, 0);
+  const std::string smooth = smooth_run("smooth.h5");
   test::expect_refused_with_one_line(run_command(test::bin("coolgas-velocity") + " --spins " + smooth),
                                      "no angular velocities", "coolgas-velocity --spins SMOOTH");
 }
@@ -117,18 +123,18 @@ TEST_F(RoughRun, TheVelocityToolTakesTheSpins) {
 // A rough start from the rough file takes its last dump's spins; from a
 // smooth file it draws them at T0 (rotational energy (d_r/2) T0 = 1.5 T0).
 TEST_F(RoughRun, AStartFromAFileTakesItsSpinsOrDrawsThem) {
-  const std::string next = *dir_ + "/next.h5", drawn = *dir_ + "/drawn.h5", smooth = *dir_ + "/smooth_start.h5";
+  const std::string next = *dir_ + "/next.h5", drawn = *dir_ + "/drawn.h5";
   const std::string from = "--set system.init=file --set system.equilibrate=5 --set run.t_end=1 --set system.from=";
   ASSERT_EQ(run_command(simulate(*scene_ + " -o " + next + " " + from + whole())).exit_code, 0);
   h5::Handle a = h5::open_file(whole(), h5::Mode::kReadOnly), b = h5::open_file(next, h5::Mode::kReadOnly);
   const auto last = h5::shape(h5::open_dataset(a.id(), "particles/all/angular_velocity/value").id())[0] - 1;
   EXPECT_EQ(h5::read_row<double>(h5::open_dataset(a.id(), "particles/all/angular_velocity/value").id(), last),
             h5::read_row<double>(h5::open_dataset(b.id(), "particles/all/angular_velocity/value").id(), 0));
-  ASSERT_EQ(run_command(simulate(*scene_ + " -o " + smooth + " --set collision.beta=-1 --set run.t_end=1")).exit_code, 0);
-  ASSERT_EQ(run_command(simulate(*scene_ + " -o " + drawn + " " + from + smooth)).exit_code, 0);
+  ASSERT_EQ(run_command(simulate(*scene_ + " -o " + drawn + " " + from + smooth_run("smooth_start.h5"))).exit_code, 0);
   h5::Handle c = h5::open_file(drawn, h5::Mode::kReadOnly);
   const double T0 = h5::read_attr_double(h5::open_group(c.id(), "parameters").id(), "T0");
-  const double E_rot = h5::read_row<double>(h5::open_dataset(c.id(), "observables/rotational_energy/value").id(), 0).at(0);
+  const double E_rot =
+      h5::read_row<double>(h5::open_dataset(c.id(), "observables/rotational_energy/value").id(), 0).at(0);
   EXPECT_NEAR(E_rot / (1.5 * T0), 1.0, 1e-12);
 }
 

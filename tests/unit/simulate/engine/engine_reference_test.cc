@@ -80,7 +80,9 @@ struct Viscoelastic : RuleCase<ViscoelasticRule, D> {
 // shell's inertia.
 template <int D>
 struct Rough : RuleCase<RoughRule<ConstantRestitutionRule>, D> {
-  static Scene scene() { return test::in_dimension(test::rough(test::inelastic_scene(120, 0.15, 0.7, 1e-3, 10), 0.4), D); }
+  static Scene scene() {
+    return test::in_dimension(test::rough(test::inelastic_scene(120, 0.15, 0.7, 1e-3, 10), 0.4), D);
+  }
   static RoughRule<ConstantRestitutionRule> rule() { return {{0.7, 1e-3}, 0.4, Geometry(D).uniform_inertia()}; }
   static constexpr int kEvents = 300;
 };
