@@ -65,7 +65,7 @@ class RoughRun : public ::testing::Test {
   static std::string whole() { return *dir_ + "/whole.h5"; }
   // The same scene's smooth run (beta = -1) into `name`, briefly.
   static std::string smooth_run(const std::string& name) {
-    const std::string out = *dir_ + "/" + name;
+    std::string out = *dir_ + "/" + name;
     const auto r = run_command(simulate(*scene_ + " -o " + out + " --set collision.beta=-1 --set run.t_end=1"));
     EXPECT_EQ(r.exit_code, 0) << r.err;
     return out;
