@@ -95,6 +95,16 @@ class Geometry {
     return d_ == 3 ? std::cbrt(a * a * a + b * b * b) : (d_ == 2 ? std::sqrt(a * a + b * b) : a + b);
   }
 
+  // ---- Rotation (rough particles): a sphere spins about 3 axes, a disk
+  // about z alone, a rod not at all (its contacts have no tangent).
+  constexpr int rotational_axes() const { return pick(0, 1, 3); }
+  // The moment of inertia per m a² (a the radius) of a uniform ball: 2/5 for
+  // a sphere, 1/2 for a disk; and the largest any mass distribution of the
+  // particle's symmetry allows, all of it on the rim: a thin shell, 2/3 (the
+  // mean of x² + y² over a sphere of radius a is 2a²/3), a ring, 1.
+  constexpr double uniform_inertia() const { return pick(0.0, 0.5, 0.4); }
+  constexpr double largest_inertia() const { return pick(0.0, 1.0, 2.0 / 3.0); }
+
   // ---- Kinetic theory.
   // Kinetic energy per particle per unit temperature: E = (d/2) N T.
   constexpr double energy_per_temperature() const { return 0.5 * d_; }

@@ -60,6 +60,7 @@ class Checker {
     }
     for (const AttributeSpec& a : profile_.attributes) check_attribute(a);
     check_driving();
+    check_rough();
     read_box_parameters();
     for (const ElementSpec& e : profile_.elements) guarded(e.path, [&] { check_element(e); });
     check_shared_rows(RowCount::kFrames, profile_.frames_from);
@@ -115,6 +116,30 @@ class Checker {
     if ((power || period) && file_version_ < kDrivingSchemaVersion)
       problem(group, "the driven gas's attributes in a file of schema version " + std::to_string(file_version_) +
                          "; they came with version " + std::to_string(kDrivingSchemaVersion));
+  }
+
+  // Rough particles (collision_models.h, beta): a rough run writes beta
+  // (in (-1, 1]) with its inertia (in (0, 1]), for a model that has beta,
+  // in a file of the version that added them, and its spins and rotational
+  // energy (check_element); a smooth run none of these.
+  void check_rough() {
+    const std::string group(layout::kParameters);
+    AttributeFound beta, inertia;
+    rough_ = read_attribute(file_, group, "beta", beta);
+    const bool has_inertia = read_attribute(file_, group, "inertia", inertia);
+    if (rough_ != has_inertia)
+      problem(group, std::string("attribute '") + (rough_ ? "beta" : "inertia") + "' without '" +
+                         (rough_ ? "inertia" : "beta") + "': a run of rough particles writes both");
+    if (!rough_) return;
+    if (file_version_ < kRoughSchemaVersion)
+      problem(group, "rough particles' attributes in a file of schema version " + std::to_string(file_version_) +
+                         "; they came with version " + std::to_string(kRoughSchemaVersion));
+    if (model_ && !model_uses(*model_, "beta"))
+      problem(group, "attribute 'beta' in a file of model " + *model_ + ", which has no rough particles");
+    if (!(beta.first_number > -1 && beta.first_number <= 1))
+      problem(group, "attribute 'beta' is " + beta.text + "; rough particles have beta in (-1, 1]");
+    if (has_inertia && !(inertia.first_number > 0 && inertia.first_number <= 1))
+      problem(group, "attribute 'inertia' is " + inertia.text + "; a moment of inertia per m a^2 is in (0, 1]");
   }
 
   // The model decides which per-model rows are required; an unknown one is a problem of its own.
@@ -283,10 +308,11 @@ class Checker {
   void check_element(const ElementSpec& e) {
     const ObjectKind kind = kind_of(file_, e.path);
     if (kind == ObjectKind::kMissing) {
-      if (required(e.presence, e.since, model_has(e)))
+      if (required(e.presence, e.since, model_has(e)) || (e.rough_only && rough_))
         problem(e.path, "missing element (" + std::string(e.meaning) + ")");
       return;
     }
+    if (e.rough_only && !rough_) return problem(e.path, "in a file of smooth particles (no /parameters/beta)");
     if (kind == ObjectKind::kDamaged) return problem(e.path, kDamagedText);
     if (kind != ObjectKind::kGroup) return problem(e.path, "is not a group (an H5MD element holds step, time, value)");
     auto step = check_series(path_of(e.path, "step"), DataType::kInt64, e.rows, {});
@@ -409,6 +435,7 @@ class Checker {
   std::vector<GoodElement> good_;              // in table order
   std::map<RowCount, GoodElement> reference_;  // the element defining F or K
   std::optional<std::string> model_;           // /parameters/model, when readable
+  bool rough_ = false;                         // /parameters/beta present: rough particles
   std::map<RowCount, hsize_t> complete_;       // rows of complete dumps, when /restart/time is usable
   bool interrupted_ = false;                   // rows of an interrupted burst follow them
 };

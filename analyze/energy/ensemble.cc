@@ -8,6 +8,7 @@
 
 #include "analyze/energy/grid.h"
 #include "common/error.h"
+#include "common/geometry.h"
 #include "common/trajectory/layout.h"
 #include "common/tsv.h"
 
@@ -37,15 +38,10 @@ double first_positive_time(const EnergyRun& run) {
   throw InputError(run.info.path + ": /observables/kinetic_energy has no row with t > 0 (the run did not advance)");
 }
 
-// Each run's rows with t > 0: the t = 0 row has ln t = -inf.
-std::vector<ObservableSeries> positive_times(const std::vector<EnergyRun>& runs) {
-  std::vector<ObservableSeries> out;
-  for (const auto& r : runs) {
-    const auto& s = r.energy;
-    const auto first = std::upper_bound(s.time.begin(), s.time.end(), 0.0) - s.time.begin();
-    out.push_back({{s.time.begin() + first, s.time.end()}, {s.value.begin() + first, s.value.end()}});
-  }
-  return out;
+// A series' rows with t > 0: the t = 0 row has ln t = -inf.
+ObservableSeries positive_part(const ObservableSeries& s) {
+  const auto first = std::upper_bound(s.time.begin(), s.time.end(), 0.0) - s.time.begin();
+  return {{s.time.begin() + first, s.time.end()}, {s.value.begin() + first, s.value.end()}};
 }
 
 EnergyRow average_row(double t, const std::vector<double>& E, const std::vector<double>& ratio) {
@@ -53,15 +49,37 @@ EnergyRow average_row(double t, const std::vector<double>& E, const std::vector<
   return {t, e.mean, e.err, r.mean, r.err, static_cast<int>(E.size())};
 }
 
+// Every energy of a series is positive (log-log interpolation needs it).
+void require_positive(const std::string& path, const ObservableSeries& s, const char* what) {
+  for (std::size_t i = 0; i < s.value.size(); ++i)
+    if (!(s.value[i] > 0))
+      throw InputError(path + ": " + what + " " + format_number(s.value[i]) + " at t = " + format_number(s.time[i]) +
+                       " is not positive; coolgas-energy needs E > 0 (it interpolates ln E against ln t)");
+}
+
+// A rough ensemble's temperatures from each run's energies at one time
+// (E_tr the kinetic energy, E_rot the rotational, per particle).
+TwoTemperatures temperatures_of(const std::vector<double>& E_tr, const std::vector<double>& E_rot, Geometry g) {
+  std::vector<double> tr(E_tr.size()), rot(E_rot.size());
+  for (std::size_t k = 0; k < tr.size(); ++k) {
+    tr[k] = E_tr[k] / g.energy_per_temperature();
+    rot[k] = 2.0 * E_rot[k] / g.rotational_axes();
+  }
+  const MeanErr a = mean_and_standard_error(tr), b = mean_and_standard_error(rot);
+  return {a.mean, a.err, b.mean, b.err};
+}
+
 }  // namespace
 
 EnergyRun load_energy_run(const std::string& path) {
-  EnergyRun run{read_run_info(path), read_observable(path, layout::kKineticEnergy)};
-  const auto& s = run.energy;
-  for (std::size_t i = 0; i < s.value.size(); ++i)
-    if (!(s.value[i] > 0))
-      throw InputError(path + ": kinetic energy " + format_number(s.value[i]) + " at t = " + format_number(s.time[i]) +
-                       " is not positive; coolgas-energy needs E > 0 (it interpolates ln E against ln t)");
+  EnergyRun run{read_run_info(path), read_observable(path, layout::kKineticEnergy), std::nullopt};
+  require_positive(path, run.energy, "kinetic energy");
+  if (is_rough(run.info.params.collision)) {
+    run.rotational = read_observable(path, layout::kRotationalEnergy);
+    require_positive(path, *run.rotational, "rotational energy");
+    if (run.rotational->time != run.energy.time)
+      throw InputError(path + ": /observables/rotational_energy is not recorded at the kinetic energy's times");
+  }
   return run;
 }
 
@@ -90,18 +108,30 @@ std::vector<EnergyRow> ensemble_energy(const std::vector<EnergyRun>& runs, int p
                      " > earliest end " + format_number(t_hi) + ")");
   std::vector<EnergyRow> rows;
   const bool all_have_zero = std::all_of(runs.begin(), runs.end(), [](const EnergyRun& r) { return r.energy.time[0] == 0; });
-  std::vector<double> E(runs.size()), ratio(runs.size());
+  std::vector<double> E(runs.size()), ratio(runs.size()), rot(runs.size());
+  const bool rough = runs[0].rotational.has_value();  // the runs share their physics
+  const Geometry g(runs[0].info.dimension);
   if (all_have_zero) {
-    for (std::size_t k = 0; k < runs.size(); ++k) E[k] = runs[k].energy.value[0], ratio[k] = 1;
+    for (std::size_t k = 0; k < runs.size(); ++k) {
+      E[k] = runs[k].energy.value[0], ratio[k] = 1;
+      if (rough) rot[k] = runs[k].rotational->value[0];
+    }
     rows.push_back(average_row(0, E, ratio));
+    if (rough) rows.back().temperatures = temperatures_of(E, rot, g);
   }
-  const std::vector<ObservableSeries> positive = positive_times(runs);
+  std::vector<ObservableSeries> positive, positive_rot;
+  for (const auto& r : runs) {
+    positive.push_back(positive_part(r.energy));
+    if (rough) positive_rot.push_back(positive_part(*r.rotational));
+  }
   for (double t : log_time_grid(t_lo, t_hi, per_decade)) {
     for (std::size_t k = 0; k < runs.size(); ++k) {
       E[k] = interpolate_loglog(positive[k].time, positive[k].value, t);
       ratio[k] = E[k] / runs[k].energy.value[0];
+      if (rough) rot[k] = interpolate_loglog(positive_rot[k].time, positive_rot[k].value, t);
     }
     rows.push_back(average_row(t, E, ratio));
+    if (rough) rows.back().temperatures = temperatures_of(E, rot, g);
   }
   return rows;
 }

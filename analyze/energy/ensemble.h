@@ -1,6 +1,7 @@
 // E(t) of one run, or the mean over an ensemble of runs that differ only in
 // their seed, on a common log-spaced time grid (coolgas-energy).
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,13 @@ namespace coolgas {
 struct EnergyRun {
   RunInfo info;
   ObservableSeries energy;  // /observables/kinetic_energy
+  std::optional<ObservableSeries> rotational;  // /observables/rotational_energy: rough particles only
+};
+
+// A rough run's two temperatures per axis, T_tr = 2 E_tr/d and T_rot = 2 E_rot/d_r:
+// the mean over runs and its standard error.
+struct TwoTemperatures {
+  double T_tr = 0, T_tr_err = 0, T_rot = 0, T_rot_err = 0;
 };
 
 // One row of the coolgas-energy table (data-schema/tsv-tables.md).
@@ -20,6 +28,7 @@ struct EnergyRow {
   double E = 0, E_err = 0;                  // mean over runs and its standard error
   double E_over_E0 = 0, E_over_E0_err = 0;  // mean of each run's E(t)/E(first row)
   int runs = 0;
+  std::optional<TwoTemperatures> temperatures;  // rough runs only
 };
 
 // Reads a trajectory; rejects non-positive energies (log-log interpolation needs E > 0).

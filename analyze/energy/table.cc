@@ -48,9 +48,15 @@ void write_energy_table(const EnergyOptions& options, std::ostream& out) {
   require_same_physics(runs);
   // Everything is computed before the first line is written: an error leaves no half table.
   const auto rows = ensemble_energy(runs, options.per_decade);
-  TsvWriter w(out, "coolgas-energy", energy_provenance(runs, options.per_decade),
-              {"t", "E", "E_err", "E_over_E0", "E_over_E0_err", "runs"});
-  for (const auto& r : rows) w.row({r.t, r.E, r.E_err, r.E_over_E0, r.E_over_E0_err, double(r.runs)});
+  // Rough particles add both temperatures per axis (a smooth run's table is as before).
+  std::vector<std::string> columns = {"t", "E", "E_err", "E_over_E0", "E_over_E0_err", "runs"};
+  if (runs[0].rotational) columns.insert(columns.end(), {"T_tr", "T_tr_err", "T_rot", "T_rot_err"});
+  TsvWriter w(out, "coolgas-energy", energy_provenance(runs, options.per_decade), columns);
+  for (const auto& r : rows) {
+    std::vector<double> row = {r.t, r.E, r.E_err, r.E_over_E0, r.E_over_E0_err, double(r.runs)};
+    if (const auto& T = r.temperatures) row.insert(row.end(), {T->T_tr, T->T_tr_err, T->T_rot, T->T_rot_err});
+    w.row(row);
+  }
 }
 
 }  // namespace coolgas

@@ -63,7 +63,7 @@ bool is_coolgas_file(const std::string& path) {
 class TrajectoryView {
  public:
   explicit TrajectoryView(const std::string& path)
-      : traj_(path, kPosition | kVelocity | kImage | kDiameter | kAnyDimension) {}
+      : traj_(path, kPosition | kVelocity | kImage | kDiameter | kAngularVelocity | kAnyDimension) {}
 
   py::dict read(std::size_t dump) const {
     if (dump >= traj_.dump_times().size())
@@ -81,6 +81,7 @@ class TrajectoryView {
     d["positions"] = rows_of(std::move(f.position), std::size_t(n), dim);
     d["velocities"] = rows_of(std::move(f.velocity), std::size_t(n), dim);
     d["images"] = rows_of(std::move(f.image), std::size_t(n), dim);
+    if (!f.angular_velocity.empty()) d["angular_velocities"] = rows_of(std::move(f.angular_velocity), std::size_t(n), 3);
     if (traj_.aggregates()) {
       d["ids"] = to_numpy(std::move(f.id), {n});
       d["masses"] = to_numpy(std::move(f.mass), {n});

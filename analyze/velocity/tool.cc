@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <ostream>
+#include <span>
 #include <sstream>
 
 #include "common/trajectory/frame_reader.h"
@@ -48,6 +49,17 @@ std::string no_tail_text(const Trajectory& traj, const Frame& f, const VelocityO
   throw InputError(no_tail_text(traj, f, o, points) + "; lower --tail-from or --min-count, or use wider bins");
 }
 
+// A rough run's spins as vectors of a space of d_r dimensions, the geometry
+// the statistics take them in: spheres' as they are (d_r = 3), disks' z
+// components first (d_r = 1, the others 0).
+Geometry spin_space(const Trajectory& traj) { return Geometry(traj.geometry().rotational_axes()); }
+std::span<const double> spins_of(const Frame& f, Geometry space, std::vector<double>& packed) {
+  if (space.d() == 3) return f.angular_velocity;
+  packed.assign(f.angular_velocity.size(), 0.0);
+  for (std::size_t i = 0; 3 * i < packed.size(); ++i) packed[3 * i] = f.angular_velocity[3 * i + 2];
+  return packed;
+}
+
 }  // namespace
 
 void run_velocity(const VelocityOptions& opt, std::ostream& final_out) {
@@ -56,14 +68,22 @@ void run_velocity(const VelocityOptions& opt, std::ostream& final_out) {
   std::ostringstream os;
   check_tail_options(opt.tail_from, opt.min_count);
   ComponentHistogram hist(opt.bins, opt.ymax);
-  Trajectory traj(opt.input, kVelocity | kAnyDimension);
-  TsvWriter out(os, "coolgas-velocity", provenance(traj, opt), velocity_columns(opt.table));
+  Trajectory traj(opt.input, kVelocity | (opt.spins ? kAngularVelocity : 0u) | kAnyDimension);
+  if (opt.spins && !traj.has(kAngularVelocity))
+    throw InputError(opt.input + ": no angular velocities (its particles are smooth); --spins needs a run of rough "
+                     "particles (collision.beta > -1)");
+  const Geometry space = opt.spins ? spin_space(traj) : traj.geometry();
+  std::vector<double> packed;
+  Provenance p = provenance(traj, opt);
+  if (opt.spins) p.emplace_back("of", "angular_velocity");
+  TsvWriter out(os, "coolgas-velocity", p, velocity_columns(opt.table));
   Frame buffer;
   std::vector<std::string> notes;  // printed once every dump is read: an error stays one line
   traj.for_each_dump(traj.dumps_nearest(opt.times, opt.exact_time), buffer, [&](const Frame& frame) {
     const VelocityStats s = [&] {
       try {
-        return velocity_stats(frame.velocity, hist, opt.tail_from, opt.min_count, traj.geometry());
+        const std::span<const double> values = opt.spins ? spins_of(frame, space, packed) : frame.velocity;
+        return velocity_stats(values, hist, opt.tail_from, opt.min_count, space);
       } catch (const InputError& e) {  // the dump the statistics refuse
         throw InputError(opt.input + ": dump at t = " + format_number(frame.time) + ": " + e.what());
       }

@@ -23,6 +23,9 @@ struct VelocityOptions {
   double min_count = 25;      // fit only bins with at least this many samples (both signs)
   std::vector<double> times;  // dumps nearest these times; empty = all dumps
   bool exact_time = false;  // --exact-time: refuse a time no dump has
+  // --spins: the same statistics of a rough run's angular velocities, over
+  // their d_r spinning axes (3 for spheres, z alone for disks) instead of the d velocity components.
+  bool spins = false;
 };
 
 void run_velocity(const VelocityOptions& opt, std::ostream& out);

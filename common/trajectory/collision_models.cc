@@ -30,6 +30,22 @@ const ModelParameter kViscoelasticB{
     .since = 2,
     .example = 0.3};
 
+// Rough spheres (Walton 1993; Huthmann & Zippelius 1997): at a contact the
+// tangential relative velocity of the touching surfaces g_t becomes
+// -beta g_t. -1 is smooth (the spins never change and are not kept), +1
+// perfectly rough (energy conserved with r0 = 1).
+const ModelParameter kBeta{.name = "beta",
+                           .meaning = "tangential restitution",
+                           .help = "tangential coefficient of restitution: the contact points' tangential relative "
+                                   "velocity becomes -beta times itself; -1: smooth spheres, 1: perfectly rough "
+                                   "(spins kept and turned; in 2D and 3D, see system.inertia)",
+                           .lo = -1,
+                           .hi = 1,
+                           .default_value = -1.0,
+                           .off = -1.0,
+                           .since = int(kRoughSchemaVersion),
+                           .example = 0.4};
+
 }  // namespace
 
 const std::vector<CollisionModelSpec>& collision_models() {
@@ -42,12 +58,12 @@ const std::vector<CollisionModelSpec>& collision_models() {
       {.name = "elastic",
        .summary = "\"elastic\"",
        .rule = "ElasticRule: the normal relative velocity is reversed (r = 1)",
-       .parameters = {},
+       .parameters = {&kBeta},
        .fixed = {{&kR0, 1.0}, {&kDelta, 0.0}}},
       {.name = "inelastic",
        .summary = "\"inelastic\" (paper Eq. 1 with the delta cut-off)",
        .rule = "ConstantRestitutionRule: the paper's Eq. (1), r = r0, r = 1 below delta",
-       .parameters = {&kR0, &kDelta}},
+       .parameters = {&kR0, &kDelta, &kBeta}},
       {.name = "viscoelastic",
        .summary = "\"viscoelastic\" (restitution rising to 1 as the impact speed falls; see "
                   "collision.viscoelastic_b)",
@@ -68,8 +84,19 @@ const std::vector<CollisionModelSpec>& collision_models() {
 const std::vector<const ModelParameter*>& model_parameters() {
   // The order of the scene's collision.* keys (and so of a scene's text, which
   // every file and checkpoint records) and of /parameters.
-  static const std::vector<const ModelParameter*> all = {&kR0, &kViscoelasticB, &kDelta};
+  static const std::vector<const ModelParameter*> all = {&kR0, &kViscoelasticB, &kDelta, &kBeta};
   return all;
+}
+
+const ModelParameter* find_model_parameter(std::string_view name) {
+  for (const ModelParameter* p : model_parameters())
+    if (p->name == name) return p;
+  return nullptr;
+}
+
+bool is_rough(const ParameterValues& collision) {
+  const auto it = collision.find(kBeta.name);
+  return it != collision.end() && it->second != *kBeta.off;
 }
 
 const CollisionModelSpec* find_collision_model(std::string_view name) {

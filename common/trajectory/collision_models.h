@@ -32,6 +32,10 @@ struct ModelParameter {
   double lo = -std::numeric_limits<double>::infinity(), hi = std::numeric_limits<double>::infinity();
   bool lo_open = false, hi_open = false;
   std::optional<double> default_value;  // none: a scene of the model must give it
+  // The value at which the parameter's effect is off (beta = -1: smooth
+  // spheres): a scene's text and a run's file leave it out there, so those
+  // of runs without the effect stay what they were before it existed.
+  std::optional<double> off;
   int since = 1;                        // the schema version that added the attribute
   double example = 0;                   // a typical value (the engine contract test runs with it)
 };
@@ -59,6 +63,9 @@ const std::vector<CollisionModelSpec>& collision_models();
 // here): the order of the scene's collision.* keys and of /parameters.
 const std::vector<const ModelParameter*>& model_parameters();
 
+// The parameter row of `name`, or nullptr for a name no model has.
+const ModelParameter* find_model_parameter(std::string_view name);
+
 // The row of `name`, or nullptr for a model this build does not know.
 const CollisionModelSpec* find_collision_model(std::string_view name);
 
@@ -71,5 +78,12 @@ std::string collision_model_names();
 
 // Values of model-specific parameters by name, as a scene or a file has them.
 using ParameterValues = std::map<std::string, double, std::less<>>;
+
+// Rough spheres (collision.beta > -1): files carry beta, the particles'
+// inertia, their angular velocities and the rotational energy, and say this
+// schema version or later (data-schema/h5md-profile.md).
+inline constexpr std::int64_t kRoughSchemaVersion = 5;
+// Whether values of a run's parameters make its particles rough.
+bool is_rough(const ParameterValues& collision);
 
 }  // namespace coolgas

@@ -19,19 +19,21 @@ namespace coolgas {
 namespace {
 
 struct ElementSpec {
-  Field field;
   std::string_view path;  // the H5MD element (group holding step, time, value)
   hsize_t per_particle;   // numbers per particle: value is (F, N, 3) or (F, N)
+  Field field;
+  bool per_axis = true;   // a vector of the box's d components (else of 3 in every dimension: spins)
 };
 
 // The per-particle elements a Trajectory can read.
 constexpr ElementSpec kElements[] = {
-    {Field::kPosition, layout::kPosition, 3},
-    {Field::kVelocity, layout::kVelocity, 3},
-    {Field::kImage, layout::kImage, 3},
-    {Field::kId, layout::kId, 1},
-    {Field::kMass, layout::kMass, 1},
-    {Field::kDiameter, layout::kDiameter, 1},
+    {layout::kPosition, 3, Field::kPosition},
+    {layout::kVelocity, 3, Field::kVelocity},
+    {layout::kImage, 3, Field::kImage},
+    {layout::kId, 1, Field::kId},
+    {layout::kMass, 1, Field::kMass},
+    {layout::kDiameter, 1, Field::kDiameter},
+    {layout::kAngularVelocity, 3, Field::kAngularVelocity, false},
 };
 
 std::string value_of(const ElementSpec& e) { return layout::value_of(e.path); }
@@ -58,10 +60,13 @@ Trajectory::Trajectory(const std::string& path, unsigned fields) : path_(path), 
                      "); this tool reads 3D trajectories only for now");
   if (aggregates_) fields_ |= Field::kId | Field::kMass;
   else fields_ &= ~unsigned(Field::kDiameter);  // gas files have unit spheres and no diameter element
+  if (!h5::exists(file_.id(), std::string(layout::kAngularVelocity)))
+    fields_ &= ~unsigned(Field::kAngularVelocity);  // smooth particles' files have no spins
   std::size_t frames = SIZE_MAX;
   for (const auto& e : kElements) {
     if (!(fields_ & e.field)) continue;
-    check_element(std::string(e.path), e.per_particle == 3, e.per_particle == 3 ? hsize_t(dimension_) : 1);
+    check_element(std::string(e.path), e.per_particle == 3,
+                  e.per_particle == 3 ? (e.per_axis ? hsize_t(dimension_) : 3) : 1);
     h5::Handle value = h5::open_dataset(file_.id(), value_of(e));
     h5::Handle time = h5::open_dataset(file_.id(), layout::time_of(e.path));
     frames = std::min<std::size_t>({frames, h5::shape(value.id())[0], h5::shape(time.id())[0]});
@@ -219,6 +224,11 @@ void Trajectory::read(std::size_t dump, Frame& frame) const {
         frame.diameter.resize(std::size_t(n_));
         h5::read_rows(value.id(), h5::Type::kFloat64, dump, 1, frame.diameter.data());
         check_finite(frame.diameter, where + std::string(e.path), 1);
+        break;
+      case Field::kAngularVelocity:
+        frame.angular_velocity.resize(3 * n);
+        h5::read_rows(value.id(), h5::Type::kFloat64, dump, 1, frame.angular_velocity.data());
+        check_finite(frame.angular_velocity, where + std::string(e.path));
         break;
       case Field::kAnyDimension:  // not an element (it is never in kElements)
         break;

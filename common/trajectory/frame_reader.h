@@ -39,7 +39,8 @@ enum Field : unsigned {
   kId = 8u,
   kMass = 16u,
   kDiameter = 32u,
-  kAnyDimension = 64u
+  kAnyDimension = 64u,
+  kAngularVelocity = 128u  // rough runs' spins; read where the file has them (else left empty)
 };
 
 // One dump. Arrays hold 3 numbers per particle, in particle-id order (for a
@@ -58,6 +59,8 @@ struct Frame {
   std::vector<std::int32_t> id;
   std::vector<double> mass;
   std::vector<double> diameter;
+  // rough runs only (empty otherwise), when opened for kAngularVelocity: 3 per particle in every dimension
+  std::vector<double> angular_velocity;
 
   std::size_t particles() const { return id.empty() ? std::max({position.size(), velocity.size(), image.size()}) / 3 : id.size(); }
 };
@@ -67,6 +70,8 @@ class Trajectory {
   // Opens `path` for reading the elements in `fields` (InputError naming the
   // file and the missing dataset if it is not a coolgas trajectory).
   Trajectory(const std::string& path, unsigned fields);
+  // Whether frames hold `f` (an element asked for that the file has: a smooth run has no spins).
+  bool has(Field f) const { return (fields_ & f) != 0; }
 
   const std::string& path() const { return path_; }
   std::int64_t particles() const { return n_; }  // N (slots, for aggregation files)

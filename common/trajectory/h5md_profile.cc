@@ -42,6 +42,19 @@ void append_aggregation_layout(Profile& p) {
                                     .meaning = "largest aggregate mass"}));
 }
 
+// Version 5 adds rough particles (collision.beta > -1): their spins in the
+// dumps, as 3-vectors whatever the dimension (disks spin about z, their x
+// and y components 0), and their rotational energy among the observables;
+// the attributes beta and inertia are rows of the parameter table.
+void append_rough_particles(Profile& p) {
+  p.elements.push_back({.path = kAngularVelocity, .row = {kParticles, Extent{.size = 3}}, .rule = kFinite,
+                        .meaning = "angular velocities (2D: about z)", .presence = Presence::kOptional,
+                        .since = int(kRoughSchemaVersion), .rough_only = true});
+  p.elements.push_back({.path = kRotationalEnergy, .rows = kObservableRows, .rule = kFinite,
+                        .meaning = "rotational energy per particle", .presence = Presence::kOptional,
+                        .since = int(kRoughSchemaVersion), .rough_only = true});
+}
+
 DataType type_of(const ParameterField::Member& m) {
   if (std::holds_alternative<std::int64_t RunParameters::*>(m)) return kInt64;
   if (std::holds_alternative<std::string RunParameters::*>(m)) return kVlenString;
@@ -57,9 +70,9 @@ void append_parameters(Profile& p) {
                             .at_least = f.at_least,
                             .above = f.above,
                             .meaning = f.meaning,
-                            .presence = is_model_specific(f) ? Presence::kPerModel
-                                        : is_optional(f)     ? Presence::kOptional
-                                                             : Presence::kRequired,
+                            .presence = is_optional(f)         ? Presence::kOptional
+                                        : is_model_specific(f) ? Presence::kPerModel
+                                                               : Presence::kRequired,
                             .since = f.since});
 }
 
@@ -118,7 +131,9 @@ Profile make_profile() {
   };
   append_parameters(p);
   append_aggregation_layout(p);
-  p.version = int(kDrivingSchemaVersion);  // version 4 adds the driven gas's optional /parameters (above)
+  append_rough_particles(p);
+  // Version 4 added the driven gas's optional /parameters (above), 5 rough particles.
+  p.version = int(kRoughSchemaVersion);
   p.schema_version = {kParameters, "schema_version"};
   p.particle_count = {kParameters, "N"};
   p.box_side = {kParameters, "L"};

@@ -85,6 +85,7 @@ struct ElementSpec {
   Presence presence = Presence::kRequired;
   int since = 1;
   std::optional<layout::Layout> only_in;  // written only in files of this layout
+  bool rough_only = false;                // written exactly in files of rough runs (/parameters/beta)
   std::optional<std::int64_t> fill;       // the dataset's fill value (H5MD: marks absent particles)
 };
 

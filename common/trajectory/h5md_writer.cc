@@ -34,7 +34,10 @@ h5::Type h5_type(schema::DataType t) {
   }
 }
 
-bool in_layout(const schema::ElementSpec& e, Layout l) { return !e.only_in || *e.only_in == l; }
+// Whether files of layout l (rough or not) hold element e.
+bool in_file(const schema::ElementSpec& e, Layout l, bool rough) {
+  return (!e.only_in || *e.only_in == l) && (!e.rough_only || rough);
+}
 
 // Per-particle series of the dumps are cut and compressed (DumpStorage); the
 // small ones (box edges, observables, steps, times) are kept as they are.
@@ -69,10 +72,10 @@ void write_metadata(hid_t file, int dimension) {
 
 // The largest chunk of the per-particle series, in bytes, uncompressed (a
 // deflated chunk is no larger, give or take its header).
-hsize_t largest_frame_chunk(hid_t file, Layout layout) {
+hsize_t largest_frame_chunk(hid_t file, Layout layout, bool rough) {
   hsize_t most = 0;
   for (const schema::ElementSpec& e : schema::h5md_profile().elements)
-    if (in_layout(e, layout) && e.rows == schema::RowCount::kFrames)
+    if (in_file(e, layout, rough) && e.rows == schema::RowCount::kFrames)
       most = std::max(most, h5::chunk_bytes(h5::open_dataset(file, value_of(e.path)).id()));
   return most;
 }
@@ -124,6 +127,7 @@ H5mdWriter H5mdWriter::create(const std::string& path, const RunParameters& para
   w.box_ = params.L;
   w.dimension_ = g.d();
   w.layout_ = model->layout;
+  w.rough_ = is_rough(params.collision);
   RunParameters p = params;
   p.schema_version = schema_version_of(p, model->schema_version);
   p.program_version = program_version();
@@ -141,7 +145,7 @@ void H5mdWriter::create_objects(const RunParameters& params, const DumpStorage& 
   h5::Handle par = h5::open_group(f, std::string(kParameters));
   write_parameters(par.id(), params);
   for (const schema::ElementSpec& e : profile.elements)
-    if (in_layout(e, layout_)) create_element(f, e, static_cast<hsize_t>(n_), dimension_, storage);
+    if (in_file(e, layout_, rough_)) create_element(f, e, static_cast<hsize_t>(n_), dimension_, storage);
   for (const schema::DatasetSpec& d : profile.datasets)
     h5::create_series(f, std::string(d.path), h5_type(d.type), {}, kObservableChunk);
   flush_file();
@@ -177,11 +181,12 @@ H5mdWriter H5mdWriter::reopen(const std::string& path, const std::string* new_sc
     throw InputError("cannot append to '" + path + "': its box/dimension is " + std::to_string(w.dimension_) +
                      "; allowed are 1, 2 and 3");
   w.layout_ = layout_of(f);
+  w.rough_ = is_rough(p.collision);
   w.writing([&] {
     // A writer killed while it wrote a frame leaves chunks past the recorded
     // end of allocation; dropping them (below) would fail, or the file's close
     // would. One chunk more than the file's size covers any half-written one.
-    h5::extend_allocation_past_file_end(w.file_, largest_frame_chunk(f, w.layout_) + (hsize_t{1} << 16));
+    h5::extend_allocation_past_file_end(w.file_, largest_frame_chunk(f, w.layout_, w.rough_) + (hsize_t{1} << 16));
     w.drop_interrupted_burst();
   });
   fault_point(FaultPoint::kResumeReopened);
@@ -244,7 +249,7 @@ void H5mdWriter::drop_interrupted_burst() {
   if (times.empty()) throw InputError("'" + path_ + "' holds no complete dump to resume from");
   const hsize_t frames = times.size();
   for (const schema::ElementSpec& e : schema::h5md_profile().elements) {
-    if (!in_layout(e, layout_)) continue;
+    if (!in_file(e, layout_, rough_)) continue;
     if (e.rows == schema::RowCount::kFrames) {
       truncate_element(f, e.path, frames);
       continue;
@@ -288,6 +293,7 @@ void H5mdWriter::write_pending() {
     append(kCollisionsPerParticle, r.collisions, r.time, h5::Type::kFloat64, &per_particle);
     append(kCollisionsBelowDelta, r.collisions, r.time, h5::Type::kInt64, &r.below_delta);
     append(kTotalMomentum, r.collisions, r.time, h5::Type::kFloat64, r.momentum.data());
+    if (rough_) append(kRotationalEnergy, r.collisions, r.time, h5::Type::kFloat64, &r.rotational_energy);
     if (layout_ != Layout::kAggregation) continue;
     append(kAggregates, r.collisions, r.time, h5::Type::kInt64, &r.aggregates);
     append(kMeanMass, r.collisions, r.time, h5::Type::kFloat64, &r.mean_mass);
@@ -303,6 +309,10 @@ void H5mdWriter::write_frame(const FrameView& fr) {
   append(kPosition, fr.collisions, fr.time, h5::Type::kFloat64, fr.position, fr.position_stride);
   append(kImage, fr.collisions, fr.time, h5::Type::kInt32, fr.image, 3);  // the first d of each 3
   append(kVelocity, fr.collisions, fr.time, h5::Type::kFloat64, fr.velocity, fr.velocity_stride);
+  if (rough_) {
+    if (!fr.angular_velocity) throw std::logic_error("a rough run's frame without angular velocities");
+    append(kAngularVelocity, fr.collisions, fr.time, h5::Type::kFloat64, fr.angular_velocity);
+  }
   if (layout_ != Layout::kAggregation) return;
   if (!fr.id || !fr.mass || !fr.diameter) throw std::logic_error("aggregation frame without id, mass or diameter");
   append(kId, fr.collisions, fr.time, h5::Type::kInt32, fr.id);
@@ -331,6 +341,7 @@ hsize_t H5mdWriter::burst_bytes(bool with_frame) const {
   const auto n = static_cast<hsize_t>(n_);
   hsize_t frame = n * (3 * 8 + 3 * 4 + 3 * 8) + 9 * 8 + 4 * 16;
   if (layout_ == Layout::kAggregation) frame += n * (4 + 8 + 8) + 3 * 16;
+  if (rough_) frame += n * 3 * 8 + 16;
   const hsize_t rows = pending_.size() * 8 * 48;
   return (with_frame ? frame + frame / 64 : 0) + rows + (hsize_t{1} << 20);
 }

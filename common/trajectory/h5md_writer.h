@@ -46,6 +46,7 @@ struct ObservableRow {
   // aggregation only
   std::int64_t aggregates = 0;
   double mean_mass = 0, largest_mass = 0;
+  double rotational_energy = 0;  // rough runs only: per particle
 };
 
 // One dump: N particles in particle-id order. Particle i's position is
@@ -65,6 +66,8 @@ struct FrameView {
   const std::int32_t* id = nullptr;
   const double* mass = nullptr;
   const double* diameter = nullptr;
+  // rough runs only: angular velocities, 3 per particle
+  const double* angular_velocity = nullptr;
 };
 
 // How the per-particle series of the dumps (positions, velocities, images
@@ -142,6 +145,7 @@ class H5mdWriter {
   double box_ = 0;
   int dimension_ = 3;
   layout::Layout layout_ = layout::Layout::kGas;
+  bool rough_ = false;  // rough particles: their spins and rotational energy are written too
   bool appending_ = false;  // SWMR writing started (or, for an old-format file, first row written)
   std::vector<ObservableRow> pending_;
 };

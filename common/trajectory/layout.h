@@ -35,6 +35,7 @@ inline constexpr std::string_view kVelocity = "/particles/all/velocity";
 inline constexpr std::string_view kId = "/particles/all/id";  // aggregation layout
 inline constexpr std::string_view kMass = "/particles/all/mass";
 inline constexpr std::string_view kDiameter = "/particles/all/diameter";
+inline constexpr std::string_view kAngularVelocity = "/particles/all/angular_velocity";  // rough runs
 
 // Observable elements.
 inline constexpr std::string_view kKineticEnergy = "/observables/kinetic_energy";
@@ -45,6 +46,7 @@ inline constexpr std::string_view kTotalMomentum = "/observables/total_momentum"
 inline constexpr std::string_view kAggregates = "/observables/aggregates";  // aggregation layout
 inline constexpr std::string_view kMeanMass = "/observables/mean_mass";
 inline constexpr std::string_view kLargestMass = "/observables/largest_mass";
+inline constexpr std::string_view kRotationalEnergy = "/observables/rotational_energy";  // rough runs
 
 // The /restart series: one row per complete dump. The writer appends the
 // time row last, so its length is the number of complete dumps.

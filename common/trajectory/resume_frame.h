@@ -19,6 +19,7 @@ struct ResumeFrame {
   int dimension = 3;                             // box/dimension: 3, or 2 (disks, z = 0 below)
   std::vector<double> position, velocity;        // 3 per particle, in id order
   std::vector<std::int32_t> image;
+  std::vector<double> angular_velocity;  // rough runs only (else empty): 3 per particle
   // aggregation layout only (empty otherwise): slot ids (-1 when absent), masses, diameters
   bool aggregates = false;
   std::vector<std::int32_t> id;

@@ -40,7 +40,9 @@ H5T_class_t class_of(const ParameterField::Member& m) {
 // Whether a file of these parameters holds the field (optional ones: when set).
 bool present_for(const RunParameters& p, const ParameterField& f) {
   if (const auto* m = std::get_if<std::optional<double> RunParameters::*>(&f.member)) return (p.**m).has_value();
-  return !is_model_specific(f) || model_uses(p.model, f.name);
+  if (!is_model_specific(f)) return true;
+  if (!model_uses(p.model, f.name)) return false;
+  return !is_optional(f) || p.collision.count(f.name) != 0;  // beta: present when not at its `off` value
 }
 
 void read_field_unchecked(hid_t g, const std::string& path, const ParameterField& f, RunParameters& p) {
@@ -102,6 +104,8 @@ const std::vector<ParameterField>& run_parameter_fields() {
                  kPhysics, int(kDrivingSchemaVersion), std::nullopt, 0.0});
     f.push_back({"driving_period", &RunParameters::driving_period, "kick interval in mean collision times",
                  kPhysics, int(kDrivingSchemaVersion), std::nullopt, 0.0});
+    f.push_back({"inertia", &RunParameters::inertia, "moment of inertia per m a^2 (rough particles)", kPhysics,
+                 int(kRoughSchemaVersion), std::nullopt, 0.0});
     return f;
   }();
   return fields;
@@ -112,11 +116,18 @@ bool is_model_specific(const ParameterField& f) {
 }
 
 bool is_optional(const ParameterField& f) {
+  if (is_model_specific(f)) {
+    const ModelParameter* m = find_model_parameter(f.name);
+    return m && m->off;
+  }
   return std::holds_alternative<std::optional<double> RunParameters::*>(f.member);
 }
 
 std::int64_t schema_version_of(const RunParameters& p, std::int64_t model_version) {
-  return p.driving_power ? std::max(model_version, kDrivingSchemaVersion) : model_version;
+  std::int64_t v = model_version;
+  if (p.driving_power) v = std::max(v, kDrivingSchemaVersion);
+  if (is_rough(p.collision)) v = std::max(v, kRoughSchemaVersion);
+  return v;
 }
 
 std::optional<std::string> field_text(const RunParameters& p, const ParameterField& f) {

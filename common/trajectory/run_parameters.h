@@ -35,6 +35,9 @@ struct RunParameters {
   // is driven (the scene's [driving]); files of a driven run are of schema
   // version kDrivingSchemaVersion or later.
   std::optional<double> driving_power, driving_period;
+  // Rough particles' moment of inertia per m a² (a the radius): present
+  // exactly when the run is rough (collision beta > -1, is_rough()).
+  std::optional<double> inertia;
 };
 
 inline constexpr std::int64_t kDrivingSchemaVersion = 4;
@@ -64,9 +67,12 @@ const std::vector<ParameterField>& run_parameter_fields();
 
 // Present for every model, or only for those that list it (collision_models.h).
 bool is_model_specific(const ParameterField& f);
-// Present only in the runs that have it, whatever their model (driving).
+// Present only in the runs that have it: the driven gas's fields, whatever
+// the model; the rough particles' inertia; a model parameter with an `off`
+// value (beta) in the runs of its models that are not at it.
 bool is_optional(const ParameterField& f);
-// The schema version a run's file says: its model's, or that of the driven gas if later.
+// The schema version a run's file says: its model's, or that of the driven
+// gas or of rough particles if later.
 std::int64_t schema_version_of(const RunParameters& p, std::int64_t model_version);
 // The field's value as text ("32", "0.1", "inelastic"); nothing when absent.
 std::optional<std::string> field_text(const RunParameters& p, const ParameterField& f);

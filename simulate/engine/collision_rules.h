@@ -6,6 +6,7 @@
 //   static constexpr bool kDissipative;      // can energy be lost? (enables collapse detection)
 //   double restitution(double g, bool& below_delta) const;
 //   int collapse_limit() const;              // (dissipative rules) see engine.cc
+//   static constexpr bool kRough;            // do collisions turn the particles' spins? (RoughRule)
 // where g > 0 is the normal relative speed before the collision; it returns
 // the coefficient of restitution r and sets below_delta when the collision
 // was made elastic by the δ cut-off. Adding a rule: a struct here, one line
@@ -19,6 +20,7 @@ namespace coolgas {
 
 struct ElasticRule {
   static constexpr bool kDissipative = false;
+  static constexpr bool kRough = false;
   double restitution(double /*g*/, bool& below_delta) const {
     below_delta = false;
     return 1.0;
@@ -29,6 +31,7 @@ struct ElasticRule {
 // r = r0, except r = 1 when the normal relative speed is below δ.
 struct ConstantRestitutionRule {
   static constexpr bool kDissipative = true;
+  static constexpr bool kRough = false;
   double r0 = 1.0;
   double delta = 0.0;
   double restitution(double g, bool& below_delta) const {
@@ -51,6 +54,7 @@ struct ConstantRestitutionRule {
 // still make the slowest collisions exactly elastic. b is in (σ ω0)^{-1/5}.
 struct ViscoelasticRule {
   static constexpr bool kDissipative = true;
+  static constexpr bool kRough = false;
   ViscoelasticRule(double b_, double delta_) : b(b_), delta(delta_), eps(&ViscoelasticTable::get()) {}
   double b;
   double delta;
@@ -62,6 +66,28 @@ struct ViscoelasticRule {
   // Collapse is impossible (ε -> 1 as g -> 0), but dense clusters resolve
   // thousands of near-simultaneous collisions: only a far longer run is a hang.
   int collapse_limit() const { return 60000; }
+};
+
+// Rough spheres (collision.beta > -1): the normal rule's restitution, and
+// the tangential relative velocity of the contact points reversed and scaled
+// by beta (pair_prediction.h, apply_tangential_restitution), which turns
+// the spins. An engine of this rule keeps an angular velocity per particle;
+// smooth scenes never instantiate it, so their hot loop is as before. The
+// tangential part cannot collapse a gas (the normal speeds are the normal
+// rule's), so collapse detection is the normal rule's.
+template <class Normal>
+struct RoughRule : Normal {
+  static constexpr bool kRough = true;
+  // beta in [-1, 1], q = I / (m a^2) in (0, 1].
+  RoughRule(const Normal& normal, double beta_, double q_)
+      : Normal(normal),
+        beta(beta_),
+        inertia(q_),
+        eta_t(q_ * (1.0 + beta_) / (2.0 * (1.0 + q_))),
+        spin_turn((1.0 + beta_) / (1.0 + q_)) {}
+  double beta, inertia;
+  double eta_t;      // the tangential impulse per unit tangential speed (unit masses)
+  double spin_turn;  // each spin's change per unit of n x g_t
 };
 
 }  // namespace coolgas

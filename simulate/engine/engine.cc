@@ -88,6 +88,11 @@ Engine<Rule, D>::Engine(Particles particles, const Rule& rule, double now, const
   for (std::size_t i = 0; i < n; ++i) m_[i] = {particles.r[i], particles.v[i], particles.t[i], 0, -1};
   grid_.bind_next_links(&m_[0].next, sizeof(Motion) / sizeof(std::int32_t));
   image_ = std::move(particles.image);
+  if constexpr (Rule::kRough) {  // spins not given: at rest
+    omega_ = std::move(particles.omega);
+    if (omega_.empty()) omega_.resize(n);
+    if (omega_.size() != n) throw std::logic_error("a rough engine's particles: one spin per particle");
+  }
   particles = Particles();  // the records hold it all now: free the copy before growing more arrays
   id_.resize(n);
   for (std::size_t i = 0; i < n; ++i) id_[i] = std::int32_t(i);
@@ -112,9 +117,10 @@ Engine<Rule, D>::Engine(const Rule& rule, const StateReader& in) : rule_(rule) {
   id_ = in.get<std::int32_t>("engine/id");
   later_ = in.get<Event>("engine/later");
   stall_ = in.get<std::uint32_t>("engine/stall");
+  if constexpr (Rule::kRough) omega_ = in.get<Vec3>("engine/omega");
   const std::size_t n = m_.size();
   if (n == 0 || image_.size() != n || id_.size() != n || later_.size() != n ||
-      stall_.size() != (Rule::kDissipative ? n : 0))
+      stall_.size() != (Rule::kDissipative ? n : 0) || omega_.size() != (Rule::kRough ? n : 0))
     in.fail("the engine's arrays differ in length");
   check_records(in);
   check_grid_size(in, "engine/grid/heads", CellGrid::cells_for(L_, cell_width<D>(L_, n), Geometry(D)));
@@ -152,6 +158,7 @@ void Engine<Rule, D>::check_records(const StateReader& in) const {
       in.fail("engine/id[" + std::to_string(i) + "] = " + std::to_string(id) + ": ids must be 0.." +
               std::to_string(n - 1) + ", each once");
     seen[std::size_t(id)] = true;
+    if (Rule::kRough && !finite(omega_[i])) in.fail("engine/omega[" + std::to_string(i) + "]: not finite");
     if (!EventCalendar::event_in_range(later_[i], std::int64_t(n)))
       in.fail("engine/later[" + std::to_string(i) + "]: an event with a partner or face out of range");
   }
@@ -165,6 +172,7 @@ void Engine<Rule, D>::save(StateWriter& out) const {
   out.put("engine/id", id_);
   out.put("engine/later", later_);
   out.put("engine/stall", stall_);
+  if constexpr (Rule::kRough) out.put("engine/omega", omega_);
   grid_.save(out, "engine/grid/");
   calendar_.save(out, "engine/calendar/");
   out.put_value("engine/time_watch", watch_);
@@ -201,7 +209,20 @@ Observables Engine<Rule, D>::observables() const {
   Observables o(now_, c_);
   o.kinetic_energy = energy.value() / double(m_.size());
   o.momentum = {p[0].value(), p[1].value(), p[2].value()};
+  if constexpr (Rule::kRough) o.rotational_energy = rotational_energy();
   return o;
+}
+
+// Σ ½ I ω² / N in id order with compensation, I = q a² = q/4 (unit
+// diameter and mass).
+template <class Rule, int D>
+double Engine<Rule, D>::rotational_energy() const {
+  if constexpr (Rule::kRough) {
+    CompensatedSum energy;
+    for (const std::int32_t i : slot_of_id()) energy.add(0.5 * dot(omega_[std::size_t(i)], omega_[std::size_t(i)]));
+    return 0.25 * rule_.inertia * energy.value() / double(m_.size());
+  }
+  return 0;
 }
 
 template <class Rule, int D>
@@ -217,6 +238,10 @@ EngineFrame Engine<Rule, D>::frame() const {
     f.image[id] = image_[i];
     wrap_into_box(f.position[id], f.image[id], L_);
     f.velocity[id] = m_[i].v;
+  }
+  if constexpr (Rule::kRough) {
+    f.angular_velocity.resize(n);
+    for (std::size_t i = 0; i < n; ++i) f.angular_velocity[static_cast<std::size_t>(id_[i])] = omega_[i];
   }
   return f;
 }
@@ -249,6 +274,7 @@ std::vector<Vec3> Engine<Rule, D>::release_positions() {
   id_ = {};
   later_ = {};
   stall_ = {};
+  omega_ = {};
   std::vector<Vec3> r(m_.size());
   for (std::size_t i = 0; i < m_.size(); ++i) r[i] = m_[i].r;
   m_ = {};
@@ -277,6 +303,7 @@ void Engine<Rule, D>::order_by_space() {
   apply_permutation(m_, order);
   apply_permutation(image_, order);
   apply_permutation(id_, order);
+  if constexpr (Rule::kRough) apply_permutation(omega_, order);
 }
 
 template <class Rule, int D>
@@ -286,6 +313,7 @@ void Engine<Rule, D>::order_by_id() {
   apply_permutation(m_, order);
   apply_permutation(image_, order);
   apply_permutation(id_, order);
+  if constexpr (Rule::kRough) apply_permutation(omega_, order);
 }
 
 // Everything but the particles, rebuilt from the particles (at now_).
@@ -469,6 +497,8 @@ void Engine<Rule, D>::collide(int i, int j) {
   if (g > 0) {  // approaching (always, but for round-off at grazing contact)
     bool below = false;
     const double r = rule_.restitution(g, below);
+    if constexpr (Rule::kRough)
+      apply_tangential_restitution(vi, vj, omega_[i], omega_[j], n, rule_.eta_t, rule_.spin_turn);
     apply_restitution(vi, vj, n, g, r);
     c_.below_delta += below;
   }
@@ -498,6 +528,10 @@ RunStatus Engine<Rule, D>::run_until(double t_stop, std::int64_t max_events, con
           __builtin_prefetch(&m_[partner]);
           grid_.prefetch_cell(partner);
           calendar_.prefetch_event(partner);
+          if constexpr (Rule::kRough) {  // the spins the collision turns
+            __builtin_prefetch(&omega_[next]);
+            __builtin_prefetch(&omega_[partner]);
+          }
         } else {  // a crossing: the collision it kept, and its image counts
           __builtin_prefetch(&later_[next]);
           __builtin_prefetch(&image_[next]);
@@ -554,5 +588,10 @@ COOLGAS_ENGINE_OF(ElasticRule)
 COOLGAS_ENGINE_OF(ConstantRestitutionRule)
 COOLGAS_ENGINE_OF(ViscoelasticRule)
 #undef COOLGAS_ENGINE_OF
+// Rough spheres and disks (rods cannot spin: the scene refuses them).
+template class Engine<RoughRule<ElasticRule>, 2>;
+template class Engine<RoughRule<ElasticRule>, 3>;
+template class Engine<RoughRule<ConstantRestitutionRule>, 2>;
+template class Engine<RoughRule<ConstantRestitutionRule>, 3>;
 
 }  // namespace coolgas

@@ -25,6 +25,10 @@
 //     tests/bench/engine_bench.cc.
 //   - the collision rule is a template parameter (collision_rules.h), so the
 //     hot loop of an elastic scene contains no inelastic code;
+//   - rough spheres are a rule of their own (RoughRule): only its engines
+//     keep spins, an array apart from the records (the partner search never
+//     reads them; a collision turns them), so a smooth scene's engine is
+//     the one it was;
 //   - so is the dimension D: 3 (spheres in a periodic cube) or 2 (disks in a
 //     periodic square). A 2D particle keeps the same record, with z and v_z
 //     exactly 0 forever (every z term of a prediction or a collision is then
@@ -115,6 +119,7 @@ class Engine final : public EngineBase {
  private:
   void advance(int i);
   void move_all_to_now();
+  double rotational_energy() const;
   void rebuild();
   void order_by_space();
   void order_by_id();
@@ -148,6 +153,7 @@ class Engine final : public EngineBase {
   std::vector<Motion> m_;
   std::vector<Image> image_;
   std::vector<std::int32_t> id_;  // particle id of each internal index
+  std::vector<Vec3> omega_;       // angular velocities (rough rules only; else empty)
   Rule rule_;
   CellGrid grid_;
   EventCalendar calendar_;  // each particle's event

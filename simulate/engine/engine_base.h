@@ -78,6 +78,7 @@ struct Observables {
   std::int64_t collisions = 0, below_delta = 0;
   double kinetic_energy = 0;  // Σ ½ m v² / N over the N initial particles, summed in id order with compensation
   Vec3 momentum;              // Σ m v, likewise
+  std::optional<double> rotational_energy;  // Σ ½ I ω² / N likewise: rough particles only
   std::optional<AggregateStats> aggregates;
 };
 
@@ -90,6 +91,7 @@ struct EngineFrame {
   double time = 0;
   std::int64_t collisions = 0, below_delta = 0;
   std::vector<Vec3> position, velocity;
+  std::vector<Vec3> angular_velocity;  // rough particles only
   std::vector<Image> image;
   std::vector<std::int32_t> id;
   std::vector<double> mass, diameter;

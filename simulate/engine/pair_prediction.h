@@ -79,4 +79,32 @@ inline void apply_restitution(Vec3& vi, Vec3& vj, const Vec3& n, double g, doubl
   }
 }
 
+// The tangential part of a rough collision (Walton 1993; Huthmann &
+// Zippelius 1997) between unit-diameter spheres (radius a = 1/2, mass 1)
+// with spins wi, wj, the unit normal n pointing from i to j: the contact
+// points' relative velocity is v_i - v_j + a (w_i + w_j) x n, and its
+// tangential part g_t becomes -beta g_t. The impulse -eta_t g_t on i (+ on
+// j), eta_t = q (1 + beta) / (2 (1 + q)), turns both spins by
+// a n x P / I = -(1 + beta) / (1 + q) n x g_t (I = q a^2). The normal part
+// is apply_restitution's, which commutes with this one (g_t has no normal
+// part, and the impulse here none either): call this one first, on the
+// velocities before either. In 2D every z term of the velocities and the
+// x, y terms of the spins are exact zeros and stay so.
+inline void apply_tangential_restitution(Vec3& vi, Vec3& vj, Vec3& wi, Vec3& wj, const Vec3& n, double eta_t,
+                                         double spin_turn) {
+  const Vec3 w{0.5 * (wi.x + wj.x), 0.5 * (wi.y + wj.y), 0.5 * (wi.z + wj.z)};  // a (w_i + w_j)
+  const Vec3 g{vi.x - vj.x + (w.y * n.z - w.z * n.y), vi.y - vj.y + (w.z * n.x - w.x * n.z),
+               vi.z - vj.z + (w.x * n.y - w.y * n.x)};
+  const double gn = dot(g, n);
+  const Vec3 gt{g.x - gn * n.x, g.y - gn * n.y, g.z - gn * n.z};
+  const Vec3 turn{spin_turn * (n.y * gt.z - n.z * gt.y), spin_turn * (n.z * gt.x - n.x * gt.z),
+                  spin_turn * (n.x * gt.y - n.y * gt.x)};
+  for (int d = 0; d < 3; ++d) {
+    vi[d] -= eta_t * gt[d];
+    vj[d] += eta_t * gt[d];
+    wi[d] -= turn[d];
+    wj[d] -= turn[d];
+  }
+}
+
 }  // namespace coolgas

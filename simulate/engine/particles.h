@@ -26,6 +26,9 @@ struct Particles {
   std::vector<Vec3> v;               // velocity
   std::vector<double> t;             // time at which r[i] is valid
   std::vector<Image> image;          // periodic image counts (unwrapped = r + L * image)
+  // Angular velocities of rough particles (collision_rules.h, RoughRule);
+  // empty for smooth ones, whose spins never change and are not kept.
+  std::vector<Vec3> omega;
 
   std::size_t size() const { return r.size(); }
   void resize(std::size_t n) {

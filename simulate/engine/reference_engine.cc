@@ -38,6 +38,7 @@ template <class Rule>
 std::vector<CollisionRecord> reference_collisions(Particles p, const Rule& rule, double now, double t_end,
                                                   std::int64_t max_collisions) {
   const int n = int(p.size());
+  if constexpr (Rule::kRough) p.omega.resize(p.size());  // spins not given: at rest
   std::vector<std::uint32_t> count(n, 0);
   std::priority_queue<PairEvent, std::vector<PairEvent>, std::greater<>> queue;
   auto predict = [&](int i) {
@@ -65,7 +66,12 @@ std::vector<CollisionRecord> reference_collisions(Particles p, const Rule& rule,
     const Vec3 dv{p.v[e.i].x - p.v[e.j].x, p.v[e.i].y - p.v[e.j].y, p.v[e.i].z - p.v[e.j].z};
     const double g = dot(dv, nrm);
     bool below = false;
-    if (g > 0) apply_restitution(p.v[e.i], p.v[e.j], nrm, g, rule.restitution(g, below));
+    if (g > 0) {
+      const double r = rule.restitution(g, below);
+      if constexpr (Rule::kRough)
+        apply_tangential_restitution(p.v[e.i], p.v[e.j], p.omega[e.i], p.omega[e.j], nrm, rule.eta_t, rule.spin_turn);
+      apply_restitution(p.v[e.i], p.v[e.j], nrm, g, r);
+    }
     ++count[e.i];
     ++count[e.j];
     out.push_back({e.i, e.j, now});
@@ -81,6 +87,10 @@ template std::vector<CollisionRecord> reference_collisions(Particles, const Cons
                                                            double, std::int64_t);
 template std::vector<CollisionRecord> reference_collisions(Particles, const ViscoelasticRule&, double, double,
                                                            std::int64_t);
+template std::vector<CollisionRecord> reference_collisions(Particles, const RoughRule<ElasticRule>&, double, double,
+                                                           std::int64_t);
+template std::vector<CollisionRecord> reference_collisions(Particles, const RoughRule<ConstantRestitutionRule>&,
+                                                           double, double, std::int64_t);
 
 namespace {
 

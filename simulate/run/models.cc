@@ -1,5 +1,7 @@
 #include "simulate/run/models.h"
 
+#include <type_traits>
+
 #include "simulate/engine/aggregation_engine.h"
 #include "simulate/engine/engine.h"
 #include "simulate/engine/state_archive.h"
@@ -13,19 +15,36 @@ ElasticRule elastic_rule(const Scene&) { return {}; }
 ConstantRestitutionRule inelastic_rule(const Scene& s) { return {s.parameter("r0"), s.parameter("delta")}; }
 ViscoelasticRule viscoelastic_rule(const Scene& s) { return {s.parameter("viscoelastic_b"), s.parameter("delta")}; }
 
+// The models whose particles may be rough (collision.beta; engine.cc
+// instantiates their rough engines in 2D and 3D).
+template <class Rule>
+constexpr bool kMayBeRough = std::is_same_v<Rule, ElasticRule> || std::is_same_v<Rule, ConstantRestitutionRule>;
+
 // The engine of a collision rule (simulate/engine/collision_rules.h) in the
-// scene's dimension: the hot loop is compiled for exactly that rule and D.
+// scene's dimension: the hot loop is compiled for exactly that rule and D,
+// and for rough particles (the scene allows them where they can spin) the
+// rough rule's engine, so a smooth scene's is the one it was.
+template <class Rule, Rule (*rule_of)(const Scene&), class Make>
+std::unique_ptr<EngineBase> rule_engine(const Scene& s, const Make& make) {
+  return s.geometry().dispatch([&]<int D>() -> std::unique_ptr<EngineBase> {
+    if constexpr (kMayBeRough<Rule> && Geometry(D).rotational_axes() > 0) {
+      if (s.rough())
+        return make.template operator()<D>(RoughRule<Rule>(rule_of(s), s.parameter("beta"), s.particle_inertia()));
+    }
+    return make.template operator()<D>(rule_of(s));
+  });
+}
 template <class Rule, Rule (*rule_of)(const Scene&)>
 std::unique_ptr<EngineBase> make_rule_engine(const Scene& s, Particles p, double now, const EngineCounters& c,
                                              const AggregateState*) {
-  return s.geometry().dispatch([&]<int D>() -> std::unique_ptr<EngineBase> {
-    return std::make_unique<Engine<Rule, D>>(std::move(p), rule_of(s), now, c);
+  return rule_engine<Rule, rule_of>(s, [&]<int D, class R>(const R& rule) -> std::unique_ptr<EngineBase> {
+    return std::make_unique<Engine<R, D>>(std::move(p), rule, now, c);
   });
 }
 template <class Rule, Rule (*rule_of)(const Scene&)>
 std::unique_ptr<EngineBase> restore_rule_engine(const Scene& s, const StateReader& state) {
-  return s.geometry().dispatch([&]<int D>() -> std::unique_ptr<EngineBase> {
-    return std::make_unique<Engine<Rule, D>>(rule_of(s), state);
+  return rule_engine<Rule, rule_of>(s, [&]<int D, class R>(const R& rule) -> std::unique_ptr<EngineBase> {
+    return std::make_unique<Engine<R, D>>(rule, state);
   });
 }
 

@@ -20,6 +20,8 @@ ResumePoint read_resume_point(const std::string& path) {
     rp.particles.image[i] = {f.image[3 * i], f.image[3 * i + 1], f.image[3 * i + 2]};
     rp.particles.t[i] = f.time;
   }
+  const std::vector<double>& w = f.angular_velocity;  // rough runs only
+  for (std::size_t i = 0; 3 * i < w.size(); ++i) rp.particles.omega.push_back({w[3 * i], w[3 * i + 1], w[3 * i + 2]});
   if (f.aggregates) rp.aggregates = AggregateState{std::move(f.mass), std::move(f.diameter), std::move(f.id)};
   check_configuration(rp.particles, rp.aggregates ? &*rp.aggregates : nullptr, "cannot resume from '" + path + "'",
                       Geometry(f.dimension));

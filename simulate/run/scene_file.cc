@@ -42,12 +42,15 @@ RunParameters parameters_of(const Scene& s) {
   // each the scene's key collision.<name>, or the value its files fix.
   const CollisionModelSpec& model = collision_models().at(std::size_t(s.model));
   p.collision.clear();
-  for (const ModelParameter* m : model.parameters) p.collision[std::string(m->name)] = s.parameter(m->name);
+  // A parameter at its `off` value (beta = -1) is left out, as the scene's text leaves it.
+  for (const ModelParameter* m : model.parameters)
+    if (!m->off || s.parameter(m->name) != *m->off) p.collision[std::string(m->name)] = s.parameter(m->name);
   for (const FixedParameter& f : model.fixed) p.collision[std::string(f.parameter->name)] = f.value;
   if (s.driving_power) {
     p.driving_power = s.driving_power;
     p.driving_period = s.driving_period;
   }
+  if (s.rough()) p.inertia = s.particle_inertia();
   return p;
 }
 

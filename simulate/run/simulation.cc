@@ -69,6 +69,7 @@ ObservableRow row_of(const Observables& o) {
     row.mean_mass = o.aggregates->mean_mass;
     row.largest_mass = o.aggregates->largest_mass;
   }
+  row.rotational_energy = o.rotational_energy.value_or(0.0);
   return row;
 }
 
@@ -80,6 +81,7 @@ FrameView view_of(const EngineFrame& f) {
     v.mass = f.mass.data();
     v.diameter = f.diameter.data();
   }
+  if (!f.angular_velocity.empty()) v.angular_velocity = &f.angular_velocity[0].x;
   return v;
 }
 

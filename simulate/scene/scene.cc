@@ -79,7 +79,9 @@ SceneKey parameter_key(const ModelParameter& p) {
           .lo = p.lo, .hi = p.hi, .lo_open = p.lo_open, .hi_open = p.hi_open, .models = models_setting(p),
           .set = [name](Scene& s, const SceneValue& v) { s.set_parameter(name, std::get<double>(v)); },
           .toml = [name, &p](const Scene& s) {
-            return s.collision.count(name) || p.default_value ? toml_float(s.parameter(name)) : std::string();
+            if (!s.collision.count(name) && !p.default_value) return std::string();
+            const double value = s.parameter(name);
+            return p.off && value == *p.off ? std::string() : toml_float(value);  // at `off`: the text as before
           }};
 }
 
@@ -139,7 +141,7 @@ const std::vector<SceneKey>& scene_keys() {
        .help = "the file to start from, relative to the working directory: a coolgas trajectory, an H5MD 1.1 file "
                "of another program (particles/<group>/position, box/edges) or an extended XYZ file, of "
                "system.dimension (disks: a square box, rods: a ring); velocities from the file, else drawn at T0 "
-               "with system.seed",
+               "with system.seed; rough particles' spins likewise (a rough coolgas run's, else drawn at T0)",
        .inits = {I::kFile},
        .set = [](Scene& s, const SceneValue& v) { s.from = std::get<std::string>(v); },
        .toml = [](const Scene& s) { return toml_string(s.from); }},
@@ -155,6 +157,14 @@ const std::vector<SceneKey>& scene_keys() {
        .lo = 0, .lo_open = true, .inits = {I::kFile},
        .set = [](Scene& s, const SceneValue& v) { s.T0 = std::get<double>(v); },
        .toml = [](const Scene& s) { return s.T0 > 0 ? toml_float(s.T0) : std::string(); }},
+      // Written to TOML only for rough particles (collision.beta > -1), so a
+      // smooth scene's text is what it was before the key existed.
+      {.key = "system.inertia", .type = KeyType::kFloat, .need = KeyNeed::kOptional,
+       .help = "moment of inertia of rough particles (collision.beta > -1) per m a^2, a the radius: 0.4 a uniform "
+               "sphere, up to 2/3 a thin shell; 0.5 a uniform disk, up to 1 a ring; absent: the uniform one",
+       .lo = 0, .hi = 1, .lo_open = true, .models = {M::kElastic, M::kInelastic},
+       .set = [](Scene& s, const SceneValue& v) { s.inertia = std::get<double>(v); },
+       .toml = [](const Scene& s) { return s.rough() ? toml_float(s.particle_inertia()) : std::string(); }},
       {.key = "collision.model", .type = KeyType::kString, .need = KeyNeed::kDefault, .help = model_help(),
        .choices = model_names(),
        .set = [](Scene& s, const SceneValue& v) { s.model = choice<CollisionModel>(key_row("collision.model"), v); },
@@ -685,6 +695,27 @@ void check_driving(const Scene& s, const KeyValues& kv) {
                      "particle per unit time) or remove driving.period");
 }
 
+// Spins mean something only for rough particles that can turn: disks and
+// spheres, whose inertia a mass distribution of their shape allows.
+void check_rough(const Scene& s, const KeyValues& kv) {
+  if (!s.rough()) {
+    if (kv.count("system.inertia"))
+      throw InputError("system.inertia is set but the particles are smooth (collision.beta = -1: their spins never "
+                       "change); set collision.beta in (-1, 1] or remove system.inertia");
+    return;
+  }
+  const Geometry g = s.geometry();
+  if (g.rotational_axes() == 0)
+    out_of_range("collision.beta", s.parameter("beta"),
+                 std::string("rods (system.dimension = 1) cannot spin, their contacts have no tangent; need beta = "
+                             "-1, or system.dimension = 2 or 3"));
+  if (s.particle_inertia() > g.largest_inertia())
+    out_of_range("system.inertia", s.particle_inertia(),
+                 std::string("the moment of inertia of ") + g.particles() + " per m a^2 is at most " +
+                     format_number(g.largest_inertia()) + " (all the mass on the rim); need (0, " +
+                     format_number(g.largest_inertia()) + "]");
+}
+
 Scene build_scene(const KeyValues& kv, const std::set<std::string>& overridden) {
   Scene s;
   for (const auto& k : scene_keys()) {
@@ -696,6 +727,7 @@ Scene build_scene(const KeyValues& kv, const std::set<std::string>& overridden) 
   }
   check_unused_keys(s, kv);
   check_driving(s, kv);
+  check_rough(s, kv);
   check_required(s, kv);
   set_size(s, kv, overridden);
   check_relations(s);
@@ -738,8 +770,7 @@ std::string physics_toml(const Scene& s) {
 namespace {
 
 const ModelParameter& parameter_row(std::string_view name) {
-  for (const ModelParameter* p : model_parameters())
-    if (p->name == name) return *p;
+  if (const ModelParameter* p = find_model_parameter(name)) return *p;
   throw std::logic_error("no model parameter " + std::string(name));
 }
 

@@ -49,6 +49,9 @@ struct Scene {
   std::string from;
   std::optional<double> from_time;
   double T0 = 0;
+  // system.inertia: rough particles' moment of inertia per m a² (a the
+  // radius); absent: a uniform ball's (Geometry::uniform_inertia).
+  std::optional<double> inertia;
   // collision
   CollisionModel model = CollisionModel::kElastic;
   // The model's parameters collision.<name> (common/trajectory/collision_models.h)
@@ -76,6 +79,10 @@ struct Scene {
   std::string to_toml() const;
   std::string model_name() const;
   Geometry geometry() const { return Geometry(dimension); }
+  // collision.beta > -1: the particles spin and collisions turn them.
+  bool rough() const { return is_rough(collision); }
+  // system.inertia, else a uniform ball's in the scene's dimension.
+  double particle_inertia() const { return inertia.value_or(geometry().uniform_inertia()); }
   // collision.<name>: the scene's value, else the parameter's default;
   // std::logic_error for a name no model has, or one without a default not given.
   double parameter(std::string_view name) const;

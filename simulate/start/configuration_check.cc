@@ -71,6 +71,9 @@ void check_values(const Spheres& s, const std::string& source) {
     if (!std::isfinite(dot(s.p.v[i], s.p.v[i])))
       refuse(source, "particle " + std::to_string(i) + " has velocity " + vec_text(s.p.v[i]) +
                          "; velocities are finite (and their squares too)");
+    if (i < s.p.omega.size() && !std::isfinite(dot(s.p.omega[i], s.p.omega[i])))
+      refuse(source, "particle " + std::to_string(i) + " has angular velocity " + vec_text(s.p.omega[i]) +
+                         "; angular velocities are finite (and their squares too)");
   }
 }
 

@@ -24,11 +24,12 @@ bool is_coolgas_trajectory(const std::string& path) {
 }
 
 FileConfiguration from_coolgas(const std::string& path, std::optional<double> time) {
-  const Trajectory t(path, kPosition | kVelocity | kDiameter | kAnyDimension);
+  const Trajectory t(path, kPosition | kVelocity | kDiameter | kAngularVelocity | kAnyDimension);
   Frame f;
   t.read(time ? t.nearest_dump(*time) : t.dump_times().size() - 1, f);
   FileConfiguration c{"coolgas trajectory", t.dimension(), f.L, f.time, std::move(f.position), std::move(f.velocity),
-                      std::move(f.diameter), std::move(f.mass), read_run_info(path).params.T0, ""};
+                      std::move(f.diameter), std::move(f.mass), read_run_info(path).params.T0, "",
+                      std::move(f.angular_velocity)};
   return c;
 }
 

@@ -99,7 +99,9 @@ double temperature(const Particles& p, const std::vector<double>& mass, Geometry
   return sum / (2 * g.energy_per_temperature() * double(p.size()));
 }
 
-// Positions as they are; velocities the file's, else drawn at T0 (masses set first).
+// Positions as they are; velocities the file's, else drawn at T0 (masses set
+// first); rough particles' spins the file's (a rough coolgas run's), else
+// drawn at T0 after the velocities.
 Particles particles_of(const FileConfiguration& c, const Scene& s) {
   const std::size_t n = c.position.size() / 3;
   Particles p;
@@ -107,11 +109,17 @@ Particles particles_of(const FileConfiguration& c, const Scene& s) {
   p.resize(n);
   const auto vec = [](const std::vector<double>& x, std::size_t i) { return Vec3{x[3 * i], x[3 * i + 1], x[3 * i + 2]}; };
   for (std::size_t i = 0; i < n; ++i) p.r[i] = vec(c.position, i);
+  Random rng(std::uint64_t(s.seed));
   if (c.velocity.empty()) {
-    Random rng(std::uint64_t(s.seed));
     draw_velocities(p, s.T0, rng, c.mass.empty() ? nullptr : &c.mass, s.geometry());
   } else {
     for (std::size_t i = 0; i < n; ++i) p.v[i] = vec(c.velocity, i);
+  }
+  if (!s.rough()) return p;
+  if (c.angular_velocity.empty()) {
+    draw_spins(p, s.T0, s.particle_inertia(), rng, s.geometry());
+  } else {
+    for (std::size_t i = 0; i < n; ++i) p.omega.push_back(vec(c.angular_velocity, i));
   }
   return p;
 }
@@ -125,7 +133,9 @@ std::string notice(const Scene& s, const FileConfiguration& c, const FileStart& 
   const std::string T0 = own_T0 ? "system.T0" : c.T0 ? "the file's" : "Enskog, as for a fresh start";
   return "starting from '" + s.from + "' (" + c.format + (c.time ? ", t = " + format_number(*c.time) : "") +
          "): N = " + std::to_string(s.N) + ", L = " + format_number(s.L) + ", phi = " + three_digits(s.phi) +
-         "; velocities " + velocities + "; T0 = " + format_number(s.T0) + " (" + T0 + ")" +
+         "; velocities " + velocities +
+         (s.rough() ? std::string("; spins ") + (c.angular_velocity.empty() ? "drawn at T0" : "from the file") : "") +
+         "; T0 = " + format_number(s.T0) + " (" + T0 + ")" +
          (c.length_unit.empty() ? "" : "; the file's length unit '" + c.length_unit + "' is read as one diameter");
 }
 

@@ -83,6 +83,20 @@ void draw_velocities(Particles& p, double T0, Random& rng, const std::vector<dou
     for (int d = 0; d < 3; ++d) v[d] *= scale;
 }
 
+// I = q a² = q/4 for unit diameter and mass. The spinning axes are the last
+// rotational_axes() of the three: all in 3D, z alone in 2D.
+void draw_spins(Particles& p, double T0, double inertia, Random& rng, Geometry g) {
+  p.omega.assign(p.size(), Vec3{});
+  double sum2 = 0;
+  for (Vec3& w : p.omega) {
+    for (int k = 3 - g.rotational_axes(); k < 3; ++k) w[k] = rng.normal();
+    sum2 += dot(w, w);
+  }
+  const double scale = std::sqrt(double(g.rotational_axes()) * T0 * double(p.size()) / (0.25 * inertia * sum2));
+  for (Vec3& w : p.omega)
+    for (int k = 0; k < 3; ++k) w[k] *= scale;
+}
+
 constexpr std::int64_t kEquilibrationSlice = 1 << 18;  // events between progress updates
 
 namespace {
@@ -154,6 +168,7 @@ Particles initial_state(const Scene& s, InterruptFlag interrupt, const SetupRepo
     p.r = std::move(relaxed);
     draw_velocities(p, T0, rng, nullptr, s.geometry());
   }
+  if (s.rough()) draw_spins(p, T0, s.particle_inertia(), rng, s.geometry());
   return p;
 }
 

@@ -39,4 +39,10 @@ double initial_energy(const Scene& scene);
 // only x.
 void draw_velocities(Particles& p, double T0, Random& rng, const std::vector<double>* mass, Geometry g);
 
+// Rough particles' spins at temperature T0 (per rotational axis: I <w_k^2> =
+// T0, I = inertia a² m), rescaled to T0 exactly. A rough start draws them
+// last, from the same generator, so its positions and velocities are those
+// of the smooth start of the same seed. In 2D only w_z is drawn.
+void draw_spins(Particles& p, double T0, double inertia, Random& rng, Geometry g);
+
 }  // namespace coolgas

@@ -2,6 +2,8 @@
 // excluded) and memory per particle, for the workloads of the simulator issue:
 //   W1  elastic,               N = 108000, phi = 0.208
 //   W2  r0 = 0.1, delta = 1e-3, N = 108000, phi = 0.208
+//   W1R W1 with perfectly rough spheres (collision.beta = 1, inertia 2/5: the
+//       energy is kept, spins drawn at T0): the rough rule's own cost
 // each from the Gaussian start for 50 collisions per particle, and
 //   W5  elastic,               N = 10^6,   phi = 0.208, 20 collisions per particle
 //   W5D2 as W5 with hard disks (system.dimension = 2), area fraction 0.208
@@ -16,7 +18,7 @@
 // Rates are given per second of wall time and per second of this process's
 // CPU time: on an idle machine they agree; on a shared one the CPU figure is
 // the engine's own speed.
-// usage: engine_bench [W1|W2|all|W5|W5D2|W5D1|W7] [N] [collisions_per_particle] [repeats] [checkpoint_seconds]
+// usage: engine_bench [W1|W2|all|W1R|W5|W5D2|W5D1|W7] [N] [collisions_per_particle] [repeats] [checkpoint_seconds]
 // (W5 and W7 take their own N and collisions per particle unless given;
 // W7's N must be 64 times a tiled state's)
 // (repeats: runs of each workload, then a line with the best, median and worst;
@@ -247,6 +249,11 @@ int main(int argc, char** argv) {
   if (which == "W1" || which == "all") repeat("W1", workload(false, n), coolgas::ElasticRule{}, per, times);
   if (which == "W2" || which == "all")
     repeat("W2", workload(true, n), coolgas::ConstantRestitutionRule{0.1, 1e-3}, per, times);
+  if (which == "W1R") {
+    coolgas::Scene s = workload(false, n);
+    s.set_parameter("beta", 1.0);  // initial_state draws the spins
+    repeat("W1R", s, coolgas::RoughRule<coolgas::ElasticRule>({}, 1.0, s.particle_inertia()), per, times);
+  }
   if (which == "W5") repeat("W5", workload(false, n), coolgas::ElasticRule{}, per, times);
   if (which == "W5D2") {
     const coolgas::Scene s = disk_workload(n);

@@ -42,6 +42,33 @@ def test_a_driven_runs_parameters_hold_its_driving(gas, tmp_path):
         assert p["schema_version"] == 4
 
 
+def test_a_rough_runs_spins_and_temperatures(gas, tmp_path):
+    # Rough particles (collision.beta > -1; data-schema/h5md-profile.md, version 5):
+    # beta and inertia, each frame's spins and T_rot exactly as the file has
+    # them; a smooth run has none of them.
+    from conftest import GAS
+    smooth = coolgas.open(gas)
+    assert "beta" not in smooth.parameters and smooth.frames[0].angular_velocities is None
+    assert list(smooth.temperatures.columns) == ["T_tr"]
+    scene = tmp_path / "rough.toml"
+    scene.write_text(GAS.replace("delta = 1e-4", "delta = 1e-4\nbeta = 0.5").replace("t_end = 300", "t_end = 5"))
+    out = tmp_path / "rough.h5"
+    tool("simulate", "-q", scene, "-o", out)
+    run = coolgas.open(out)
+    p = run.parameters
+    with h5py.File(out, "r") as f:
+        assert p["beta"] == f["parameters"].attrs["beta"] == 0.5
+        assert p["inertia"] == f["parameters"].attrs["inertia"] == 0.4
+        assert p["schema_version"] == 5
+        frame = run.frames[-1]
+        assert np.array_equal(frame.angular_velocities, f["particles/all/angular_velocity/value"][-1])
+        E_rot = f["observables/rotational_energy/value"][:]
+    T = run.temperatures
+    assert np.array_equal(T["T_rot"].to_numpy(), 2.0 * E_rot / 3)
+    assert T["T_rot"].iloc[0] == pytest.approx(p["T0"], rel=1e-12)  # spins drawn at T0
+    assert T["T_tr"].iloc[0] == pytest.approx(p["T0"], rel=1e-12)
+
+
 def test_observables_are_the_files(gas):
     obs = coolgas.open(gas).observables
     assert obs.index.name == "t"

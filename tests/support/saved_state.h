@@ -44,6 +44,9 @@ inline void expect_same_frame(const EngineFrame& a, const EngineFrame& b) {
       ASSERT_EQ(a.velocity[i][d], b.velocity[i][d]) << "particle " << i;
       ASSERT_EQ(a.image[i][d], b.image[i][d]) << "particle " << i;
     }
+  ASSERT_EQ(a.angular_velocity.size(), b.angular_velocity.size());
+  for (std::size_t i = 0; i < a.angular_velocity.size(); ++i)
+    for (int d = 0; d < 3; ++d) ASSERT_EQ(a.angular_velocity[i][d], b.angular_velocity[i][d]) << "particle " << i;
   EXPECT_EQ(a.id, b.id);
   EXPECT_EQ(a.mass, b.mass);
   EXPECT_EQ(a.diameter, b.diameter);

@@ -1,6 +1,7 @@
 // Scenes for engine tests, built in code (the parser has tests of its own).
 #pragma once
 #include <cmath>
+#include <optional>
 
 #include "simulate/scene/scene.h"
 
@@ -48,6 +49,14 @@ inline Scene rod_scene(std::int64_t N, double phi, std::int64_t seed = 1) {
 
 inline Scene inelastic_rod_scene(std::int64_t N, double phi, double r0, double delta, std::int64_t seed = 1) {
   return in_dimension(inelastic_scene(N, phi, r0, delta, seed), 1);
+}
+
+// The scene's particles made rough: collision.beta = beta, the inertia
+// (system.inertia) that of a uniform ball unless given.
+inline Scene rough(Scene s, double beta, std::optional<double> inertia = std::nullopt) {
+  s.set_parameter("beta", beta);
+  s.inertia = inertia;
+  return s;
 }
 
 }  // namespace coolgas::test

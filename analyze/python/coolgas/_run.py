@@ -44,6 +44,7 @@ class Frame:
     diameters: np.ndarray = None
     slots: int = None              # N of the file: particles, or aggregation slots
     extra: dict = field(default_factory=dict)
+    angular_velocities: np.ndarray = None  # (n, 3) a rough run's spins (disks: about z, x and y 0); else None
 
     @property
     def dimension(self):
@@ -97,7 +98,8 @@ class Frames:
             n = len(d["positions"])
             return Frame(index=j, t=d["t"], L=d["L"], positions=d["positions"], velocities=d["velocities"],
                          ids=d.get("ids", np.arange(n, dtype=np.int32)), step=d["step"], images=d["images"],
-                         masses=d.get("masses"), diameters=d.get("diameters"), slots=self._slots)
+                         masses=d.get("masses"), diameters=d.get("diameters"), slots=self._slots,
+                         angular_velocities=d.get("angular_velocities"))
         d = _core.h5md_frame(self._path, j)
         n = len(d["positions"])
         ids = d.get("ids")
@@ -179,6 +181,18 @@ class Run:
         if all(len(c.index) == len(columns[0].index) and (c.index == columns[0].index).all() for c in columns):
             return pd.concat(columns, axis=1)
         return pd.concat(columns, axis=1, join="outer").sort_index()
+
+    @property
+    def temperatures(self):
+        """The temperatures per axis by time, from the observables: T_tr =
+        2 E/d and, for a run of rough particles, T_rot = 2 E_rot/d_r with
+        d_r = d(d - 1)/2 spinning axes (3 for spheres, 1 for disks)."""
+        o = self.observables
+        d = self.dimension
+        T = pd.DataFrame({"T_tr": 2.0 * o["kinetic_energy"] / d}, index=o.index)
+        if "rotational_energy" in o:
+            T["T_rot"] = 2.0 * o["rotational_energy"] / (d * (d - 1) // 2)
+        return T
 
     @property
     def frames(self):

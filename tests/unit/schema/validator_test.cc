@@ -12,6 +12,7 @@
 
 #include "common/error.h"
 #include "common/trajectory/h5md_writer.h"
+#include "common/trajectory/resume_frame.h"
 #include "common/hdf5_file.h"
 #include "tests/support/run_command.h"
 
@@ -94,6 +95,35 @@ TEST(Validator, FileFromTheWriterIsValid) {
   EXPECT_EQ(cli.exit_code, 0) << cli.err;
   EXPECT_EQ(cli.out, path + ": valid (coolgas H5MD profile v1, 2 particles, 3 frames, 3 observable rows)\n");
   EXPECT_EQ(cli.err, "");
+}
+
+// A run of rough particles (schema version 5): beta and inertia, the spins
+// of each dump, the rotational energy of each observable row.
+TEST(Validator, RoughFileFromTheWriterIsValid) {
+  const std::string path = test::scratch_dir("schema_rough") + "/run.h5";
+  RunParameters p;
+  p.scene_toml = "[system]\nN = 2\n";
+  p.N = 2;
+  p.L = 5;
+  p.phi = 2 * 3.141592653589793 / 6 / 125;
+  p.T0 = 0.5;
+  p.model = "elastic";
+  p.collision = {{"r0", 1.0}, {"delta", 0.0}, {"beta", 0.5}};
+  p.inertia = 0.4;
+  {
+    H5mdWriter w = H5mdWriter::create(path, p, true, Geometry(3));
+    const double pos[6] = {0.5, 1.5, 2.5, 3.0, 4.0, 0.0}, vel[6] = {0.1, 0.2, -0.3, -0.1, -0.2, 0.3};
+    const double spin[6] = {1, 2, 3, -1, -2, -3};
+    const std::int32_t img[6] = {};
+    ObservableRow row{0, 0, 0, 0.5, {0, 0, 0}};
+    row.rotational_energy = 0.2;
+    w.add_observables(row);
+    FrameView frame{0, 0, 0, pos, img, vel};
+    frame.angular_velocity = spin;
+    w.add_frame(frame);
+  }
+  EXPECT_EQ(lines(validate(path)), std::vector<std::string>{});
+  EXPECT_EQ(read_resume_frame(path).angular_velocity, (std::vector<double>{1, 2, 3, -1, -2, -3}));
 }
 
 struct Corruption {
@@ -189,6 +219,27 @@ const Corruption kCorruptions[] = {
        });
      },
      {"/parameters: the driven gas's attributes in a file of schema version 1; they came with version 4"}},
+    // Rough particles' attributes (schema version 5) come with their spins
+    // and rotational energy, both attributes together, in a file of that version.
+    {"rough_attributes_without_spins",
+     [](hid_t f) {
+       set_attr(f, "parameters", [](hid_t g) {
+         h5::write_attr(g, "schema_version", std::int64_t{5});
+         h5::write_attr(g, "beta", 0.5);
+         h5::write_attr(g, "inertia", 0.4);
+       });
+     },
+     {"/particles/all/angular_velocity: missing element (angular velocities (2D: about z))",
+      "/observables/rotational_energy: missing element (rotational energy per particle)"}},
+    {"beta_alone_in_an_older_version",
+     [](hid_t f) {
+       set_attr(f, "parameters", [](hid_t g) { h5::write_attr(g, "beta", 2.0); });
+     },
+     {"/parameters: attribute 'beta' without 'inertia': a run of rough particles writes both",
+      "/parameters: rough particles' attributes in a file of schema version 1; they came with version 5",
+      "/parameters: attribute 'beta' is 2; rough particles have beta in (-1, 1]",
+      "/particles/all/angular_velocity: missing element (angular velocities (2D: about z))",
+      "/observables/rotational_energy: missing element (rotational energy per particle)"}},
     {"old_schema_version",
      [](hid_t f) { set_attr(f, "parameters", [](hid_t g) { h5::write_attr(g, "schema_version", std::int64_t{0}); }); },
      {"/parameters: attribute 'schema_version' is 0 but must be at least 1"}},

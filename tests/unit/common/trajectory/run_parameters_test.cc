@@ -45,8 +45,8 @@ RunParameters params_for(const std::string& model) {
 void perturb(RunParameters& p, const ParameterField& f) {
   std::visit([&](auto m) {
     if constexpr (std::is_same_v<decltype(m), ModelValue>) {
-      double& x = p.collision.at(std::string(f.name));
-      x = 2 * x + 1;
+      const auto [it, absent] = p.collision.try_emplace(std::string(f.name), 0.0);  // beta: absent when smooth
+      it->second = absent ? 0.5 : 2 * it->second + 1;
     } else {
       using T = std::decay_t<decltype(p.*m)>;
       if constexpr (std::is_same_v<T, std::string>) p.*m += "x";
@@ -109,26 +109,35 @@ std::set<std::string> attribute_names(hid_t group) {
   return names;
 }
 
-// Every model's file, and a driven gas's (simulate/engine/driving.h): the
-// driving attributes are there exactly when the run is driven, and make its
-// file of schema version 4.
+// Every model's file, a driven gas's (simulate/engine/driving.h) and one of
+// rough particles: the driving attributes are there exactly when the run is
+// driven, and make its file of schema version 4; beta and inertia exactly
+// when the particles are rough (beta > -1), of version 5.
 TEST(RunParameters, EachModelsFileHoldsExactlyItsFieldsAndReadsThemBack) {
+  const std::set<std::string> driving = {"driving_power", "driving_period"}, rough = {"beta", "inertia"};
   for (const CollisionModelSpec& m : collision_models())
-    for (const bool driven : {false, true}) {
-      if (driven && m.layout != layout::Layout::kGas) continue;
-      const std::string model = std::string(m.name) + (driven ? "_driven" : "");
+    for (const std::string effect : {"", "driven", "rough"}) {
+      if (effect == "driven" && m.layout != layout::Layout::kGas) continue;
+      if (effect == "rough" && !model_uses(m.name, "beta")) continue;
+      const std::string model = std::string(m.name) + (effect.empty() ? "" : "_" + effect);
       const std::string path = test::scratch_dir("run_parameters_" + model) + "/run.h5";
       RunParameters written = params_for(std::string(m.name));
-      if (driven) written.driving_power = 0.3, written.driving_period = 0.5;
+      if (effect == "driven") written.driving_power = 0.3, written.driving_period = 0.5;
+      if (effect == "rough") written.collision["beta"] = 0.5, written.inertia = 0.4;
       { H5mdWriter::create(path, written, true, Geometry(3)); }
       h5::Handle f = h5::open_file(path, h5::Mode::kReadOnly);
       h5::Handle g = h5::open_group(f.id(), std::string(layout::kParameters));
       std::set<std::string> expected;
-      for (const ParameterField& field : run_parameter_fields())
-        if (is_optional(field) ? driven : !is_model_specific(field) || model_uses(m.name, field.name))
-          expected.insert(std::string(field.name));
+      for (const ParameterField& field : run_parameter_fields()) {
+        const std::string name(field.name);
+        if (is_optional(field) ? (effect == "driven" && driving.count(name)) || (effect == "rough" && rough.count(name))
+                               : !is_model_specific(field) || model_uses(m.name, field.name))
+          expected.insert(name);
+      }
       EXPECT_EQ(attribute_names(g.id()), expected) << model;
-      EXPECT_EQ(h5::read_attr_int(g.id(), "schema_version"), driven ? kDrivingSchemaVersion : m.schema_version)
+      EXPECT_EQ(h5::read_attr_int(g.id(), "schema_version"), effect == "driven" ? kDrivingSchemaVersion
+                                                             : effect == "rough" ? kRoughSchemaVersion
+                                                                                 : m.schema_version)
           << model;
       const RunParameters read = read_parameters(g.id(), path);
       for (const ParameterField& field : run_parameter_fields()) {
@@ -205,7 +214,10 @@ TEST(CollisionModels, ParametersAreModelSpecificFieldsAndVersionsAreInTheProfile
       const auto f = std::find_if(fields.begin(), fields.end(), [&](const ParameterField& x) { return x.name == p; });
       ASSERT_NE(f, fields.end()) << m.name << " lists " << p << ", which is no field";
       EXPECT_TRUE(is_model_specific(*f)) << p;
-      EXPECT_LE(f->since, m.schema_version) << p << " is newer than " << m.name << "'s files";
+      // A parameter whose effect can be off (beta) may be newer: files of
+      // the model without the effect are as before, those with it say its version.
+      if (mp->off) EXPECT_TRUE(is_optional(*f)) << p;
+      else EXPECT_LE(f->since, m.schema_version) << p << " is newer than " << m.name << "'s files";
     }
   }
   EXPECT_FALSE(find_collision_model("sticky"));

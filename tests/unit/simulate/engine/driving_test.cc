@@ -33,7 +33,9 @@ struct Driven {
 Scene scene_in(CollisionModel model, int dimension) {
   Scene s = test::in_dimension(test::inelastic_scene(600, 0.1, 0.7, 0.0, 5), dimension);
   s.model = model;
-  for (const ModelParameter* p : collision_models().at(std::size_t(model)).parameters) s.set_parameter(p->name, p->example);
+  // Each parameter at its typical value, one whose effect can be off (beta) off: smooth particles.
+  for (const ModelParameter* p : collision_models().at(std::size_t(model)).parameters)
+    s.set_parameter(p->name, p->off ? *p->off : p->example);
   s.equilibrate = 0;
   return s;
 }

@@ -3,7 +3,8 @@
 // event budget, with observables and frames read in between) changes
 // nothing; the budget is honoured exactly; frames are wrapped into the box;
 // momentum is kept; an engine restored from its saved state replays the
-// same events. Driven gases (simulate/engine/driving.h) keep it too.
+// same events. Driven gases (simulate/engine/driving.h) and rough particles
+// (collision.beta, whose spins a restored engine has too) keep it too.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -19,19 +20,23 @@
 namespace coolgas {
 namespace {
 
-// A case: a model in a dimension, driven (simulate/engine/driving.h) or cooling.
+// A case: a model in a dimension, driven (simulate/engine/driving.h) or
+// cooling, with a parameter's effect that can be off (beta) on or off.
 struct ModelIn {
   CollisionModel model;
   int dimension;
   bool driven = false;
+  bool effect = false;
 };
 
 Scene scene_of(const ModelIn& m) {
   Scene s = m.dimension == 3 ? test::inelastic_scene(1500, 0.2, 0.5, 1e-3, 9)
                              : test::inelastic_disk_scene(1500, 0.2, 0.5, 1e-3, 9);
   s.model = m.model;
-  // Each of the model's parameters at its row's typical value (common/trajectory/collision_models.h).
-  for (const ModelParameter* p : collision_models().at(std::size_t(m.model)).parameters) s.set_parameter(p->name, p->example);
+  // Each of the model's parameters at its row's typical value
+  // (common/trajectory/collision_models.h), one that can be off at that value unless the case has its effect.
+  for (const ModelParameter* p : collision_models().at(std::size_t(m.model)).parameters)
+    s.set_parameter(p->name, p->off && !m.effect ? *p->off : p->example);
   s.equilibrate = 0;
   if (m.driven) s.driving_power = 0.1;  // a kick every half collision time
   return s;
@@ -78,6 +83,8 @@ TEST_P(EngineContract, SlicingChangesNothingAndFramesAreWrapped) {
   test::expect_same_frame(restored->frame(), whole->frame());
   const Observables a = sliced->observables(), b = whole->observables();
   EXPECT_EQ(a.kinetic_energy, b.kinetic_energy);
+  EXPECT_EQ(a.rotational_energy, b.rotational_energy);
+  EXPECT_EQ(a.rotational_energy.has_value(), s.rough());
   EXPECT_EQ(a.aggregates.has_value(), GetParam().model == CollisionModel::kAggregation);
 }
 
@@ -104,20 +111,30 @@ TEST(EngineContractRebuilds, ScheduledRebuildsDoNotDependOnSlicing) {
   test::expect_same_frame(restored->frame(), whole.frame());
 }
 
+// Whether a model has a parameter whose effect can be off (beta: rough particles).
+bool has_effect(CollisionModel m) {
+  for (const ModelParameter* p : collision_models().at(std::size_t(m)).parameters)
+    if (p->off) return true;
+  return false;
+}
+
 // Every model of the simulator's table (simulate/run/models.h), so a new
-// model is held to the contract from its first row, in 3D and in 2D.
+// model is held to the contract from its first row, in 3D and in 2D, and
+// with its effect (rough particles) on, cooling and driven.
 std::vector<ModelIn> every_model() {
   std::vector<ModelIn> models;
   for (const int dimension : {3, 2})
-    for (const ModelRow& r : model_rows()) {
-      models.push_back({r.model, dimension});
-      if (r.model != CollisionModel::kAggregation) models.push_back({r.model, dimension, true});
-    }
+    for (const ModelRow& r : model_rows())
+      for (const bool effect : {false, true}) {
+        if (effect && !has_effect(r.model)) continue;
+        models.push_back({r.model, dimension, false, effect});
+        if (r.model != CollisionModel::kAggregation) models.push_back({r.model, dimension, true, effect});
+      }
   return models;
 }
 std::string case_name(const ::testing::TestParamInfo<ModelIn>& info) {
   return model_name(info.param.model) + "_" + std::to_string(info.param.dimension) + "D" +
-         (info.param.driven ? "_driven" : "");
+         (info.param.driven ? "_driven" : "") + (info.param.effect ? "_rough" : "");
 }
 INSTANTIATE_TEST_SUITE_P(EveryModel, EngineContract, ::testing::ValuesIn(every_model()), case_name);
 

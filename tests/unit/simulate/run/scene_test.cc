@@ -83,6 +83,41 @@ TEST(Scene, OutOfRangeValuesAreNamed) {
   EXPECT_NE(error_of({}, "[system\n").find("not valid TOML"), std::string::npos);
 }
 
+// Rough particles: beta and the inertia where they mean something, each
+// refusal one line with the value and what is allowed; a smooth scene's text
+// has neither key (its files are as before they existed), a rough one's both.
+TEST(Scene, RoughParticlesOnlyWhereTheyCanSpin) {
+  EXPECT_EQ(error_of({"collision.beta=0.5"}), "");
+  EXPECT_EQ(error_of({"collision.beta=0.5", "system.inertia=0.6666"}), "");
+  const std::string viscoelastic = "[system]\nN = 1000\nphi = 0.2\n[collision]\nmodel = \"viscoelastic\"\n"
+                                   "viscoelastic_b = 0.1\n[run]\nt_end = 1\n";
+  EXPECT_EQ(error_of({"collision.beta=-1"}, viscoelastic), "");
+  EXPECT_EQ(error_of({"collision.beta=1.5"}), "collision.beta = 1.5 is out of range: must be a finite number in [-1, 1]");
+  EXPECT_EQ(error_of({"collision.beta=0.5", "system.inertia=0.7"}),
+            "system.inertia = 0.7 is out of range: the moment of inertia of spheres per m a^2 is at most "
+            "0.6666666666666666 (all the mass on the rim); need (0, 0.6666666666666666]");
+  EXPECT_EQ(error_of({"collision.beta=0.5", "system.inertia=1", "system.dimension=2"}), "");
+  EXPECT_NE(error_of({"collision.beta=0.5", "system.dimension=1"}).find("collision.beta = 0.5 is out of range: rods"),
+            std::string::npos);
+  EXPECT_NE(error_of({"system.inertia=0.4"}).find("system.inertia is set but the particles are smooth"),
+            std::string::npos);
+  EXPECT_NE(error_of({"collision.beta=0.5"}, viscoelastic)
+                .find("collision.beta is set but collision.model = \"viscoelastic\" does not use it"),
+            std::string::npos);
+  const Scene smooth = parse_scene(kScene, "s.toml", {"collision.beta=-1"});
+  EXPECT_FALSE(smooth.rough());
+  EXPECT_EQ(smooth.to_toml(), parse_scene(kScene, "s.toml", {}).to_toml());
+  EXPECT_EQ(smooth.to_toml().find("beta"), std::string::npos);
+  EXPECT_EQ(smooth.to_toml().find("inertia"), std::string::npos);
+  const Scene rough = parse_scene(kScene, "s.toml", {"collision.beta=0.25", "system.dimension=2"});
+  EXPECT_TRUE(rough.rough());
+  EXPECT_EQ(rough.particle_inertia(), 0.5);  // a uniform disk's
+  const Scene back = parse_scene(rough.to_toml(), "back", {});
+  EXPECT_EQ(back.parameter("beta"), 0.25);
+  EXPECT_EQ(back.inertia, 0.5);
+  EXPECT_NE(physics_toml(rough).find("inertia = 0.5"), std::string::npos);
+}
+
 TEST(Scene, AllowsFccUpToItsClosePacking) {
   EXPECT_EQ(error_of({"system.phi=0.45", "system.init=fcc"}), "");
   EXPECT_NE(error_of({"system.phi=0.75", "system.init=fcc"}).find("0.7404"), std::string::npos);
