@@ -19,3 +19,17 @@ DRIVEN_T_RELAX := 20
 DRIVEN_T_END := 220
 DRIVEN_DUMP_EVERY := 1
 DRIVEN_PERIOD := 0.5
+
+# Rough spheres: the homogeneous cooling state at r0 = 0.9 (nearly elastic,
+# so the gas stays homogeneous over the run), phi = 0.05, N = 8134 (L = 44),
+# uniform balls (inertia 2/5), tangential restitution beta = 0, 0.5 and 1
+# (spins slow to follow at beta near -1 are not drawn). Spins and velocities
+# start at T0 each; T_rot/T_tr settles within about 20 collision times, so
+# the ratio is averaged from ROUGH_T_FROM to ROUGH_T_END.
+ROUGH_L := 44
+ROUGH_PHI := 0.05
+ROUGH_R0 := 0.9
+ROUGH_INERTIA := 0.4
+ROUGH_BETAS := 0 0.5 1
+ROUGH_T_FROM := 30
+ROUGH_T_END := 150

@@ -1,5 +1,5 @@
 #!/bin/sh
-# table.sh TABLES D T_RELAX
+# table.sh TABLES D T_RELAX T_ROUGH
 # The effects pipeline's table (pipelines/effects/Makefile): each effect's
 # measured quantities against kinetic theory, one row each, judged by the
 # exponent table's rule (pipelines/row-verdict.sh). TSV columns
@@ -9,10 +9,11 @@
 # source says why), so a row agrees when the two meet within it and the
 # measurement is that precise.
 # TABLES holds velocity_driven_P1.tsv and velocity_driven_P8.tsv
-# (coolgas-velocity --series, one row per dump); D is the dimension, and
-# the steady state is sampled from T_RELAX on.
+# (coolgas-velocity --series, one row per dump), sampled from T_RELAX on,
+# and energy_rough_bBETA.tsv (coolgas-energy of rough spheres at each beta),
+# their cooling state's T_rot/T_tr averaged from T_ROUGH on; D is the dimension.
 set -e
-tables=$1 d=$2 relax=$3
+tables=$1 d=$2 relax=$3 rough_from=$4
 here=$(dirname "$0")
 value() { sh "$here/../tsv-value.sh" "$@"; }
 calc() { awk "BEGIN { printf \"%.6g\", $1 }"; }
@@ -55,3 +56,27 @@ row "driving" "T(8P)/T(P)" "$ratio" "$ratio_err" 4 0 0.04 \
 set -- $(steady "$v1" kappa "$relax" "$(calc "$d / ($d + 2)")")
 row "driving" "a2, steady" "$1" "$2" "$a2" 0 "$(calc "0.1 * $a2")" \
   "van Noije & Ernst's first Sonine approximation (the formula derived again in docs/effects.md); tolerance 10 % of it for the Sonine terms it leaves out"
+
+# Rough spheres: the cooling state's T_rot/T_tr against the two-temperature
+# theory (Huthmann & Zippelius, PRE 56, R6275 (1997); Luding et al., PRE 58,
+# 3416 (1998); its d-dimensional form, tests/physics/rough_spheres_test.cc):
+# with eta = q (1 + beta) / (2 (1 + q)), a = (1 - r^2) + 2 (d-1) eta (1 - eta),
+# b = 2 (d-1) eta^2 / q, c = 2 (d-1) (eta/q) (1 - eta/q) and d_r spinning axes
+# (3 for spheres, 1 for disks), R solves (b/d) R^2 + (c/d_r - a/d) R - b/d_r = 0.
+rough_ratio() {  # r beta q d
+  awk -v r="$1" -v beta="$2" -v q="$3" -v d="$4" 'BEGIN {
+    dr = d == 3 ? 3 : 1
+    eta = q * (1 + beta) / (2 * (1 + q))
+    a = (1 - r * r) + 2 * (d - 1) * eta * (1 - eta); b = 2 * (d - 1) * eta * eta / q
+    c = 2 * (d - 1) * (eta / q) * (1 - eta / q)
+    A = b / d; B = c / dr - a / d; C = b / dr
+    printf "%.6g", (-B + sqrt(B * B + 4 * A * C)) / (2 * A) }'
+}
+for b in $(ls "$tables" | sed -n 's/^energy_rough_b\(.*\)\.tsv$/\1/p' | sort -g); do
+  e=$tables/energy_rough_b$b.tsv
+  r=$(value "$e" r0 '#') beta=$(value "$e" beta '#') q=$(value "$e" inertia '#')
+  theory=$(rough_ratio "$r" "$beta" "$q" "$d")
+  set -- $(steady "$e" T_rot/T_tr "$rough_from")
+  row "rough spheres" "T_rot/T_tr, r0 = $r, beta = $beta" "$1" "$2" "$theory" 0 "$(calc "0.05 * $theory")" \
+    "two-temperature theory with Maxwellian velocities and spins; tolerance 5 % for the Sonine corrections (Santos, Kremer & dos Santos, Phys. Fluids 23, 030604 (2011))"
+done

@@ -5,3 +5,7 @@ include parameters.mk
 DRIVEN_L := 10
 DRIVEN_T_RELAX := 5
 DRIVEN_T_END := 25
+ROUGH_L := 12
+ROUGH_BETAS := 0.5
+ROUGH_T_FROM := 5
+ROUGH_T_END := 20

@@ -388,10 +388,10 @@ TEST(DimensionsPipeline, TinyRunsGiveEveryRowBothFiguresAndNothingLeftToDo) {
   EXPECT_EQ(dry.out.find("coolgas-simulate"), std::string::npos) << dry.out;
 }
 
-TEST(EffectsPipeline, TinyRunsGiveEveryRowJudgedAndTheFigure) {
+TEST(EffectsPipeline, TinyRunsGiveEveryRowJudgedAndTheFigures) {
   // pipelines/effects with PARAMETERS=tiny.mk (seconds): each row of the
   // effects table judged by pipelines/row-verdict.sh against its theory's
-  // exact value, and the figure; then make has nothing left to do.
+  // exact value, and the figures; then make has nothing left to do.
   std::string bin_dir = test::bin("coolgas-simulate");
   bin_dir.erase(bin_dir.rfind('/'));
   const std::string out = test::scratch_dir("effects_pipeline") + "/out";
@@ -411,13 +411,17 @@ TEST(EffectsPipeline, TinyRunsGiveEveryRowJudgedAndTheFigure) {
     EXPECT_TRUE(cells[8] == "agrees" || cells[8] == "differs" || cells[8] == "not decided") << cells[8];
     theory[cells[1]] = std::stod(cells[4]);
   }
-  ASSERT_EQ(rows.size(), 3u);
+  ASSERT_EQ(rows.size(), 4u);  // tiny.mk: the driven gas's three, rough spheres at one beta
   // T ~ P^(2/3): 8 times the power, 4 times the temperature, exactly.
   EXPECT_DOUBLE_EQ(theory.at("T(8P)/T(P)"), 4.0);
   // van Noije & Ernst's a2 at r0 = 0.5 in 3D: 16 (1/2)(1/2) / (73 + 168 - 36 - 52.5 + 3.75) = 4/156.25.
   EXPECT_NEAR(theory.at("a2, steady"), 0.0256, 1e-6);
   // Enskog's balance at P = (1 - r0^2)/2: T/T0 = (1 + 3 a2/16)^(-2/3).
   EXPECT_NEAR(theory.at("T/T0, steady"), std::pow(1 + 3 * 0.0256 / 16, -2.0 / 3.0), 1e-5);
+  // The two-temperature theory's T_rot/T_tr at r0 = 0.9, beta = 0.5, q = 2/5
+  // (tests/physics/rough_spheres_test.cc: 0.867).
+  EXPECT_NEAR(theory.at("T_rot/T_tr, r0 = 0.9, beta = 0.5"), 0.867077, 1e-5);
+  EXPECT_TRUE(is_png(out + "/figures/rough.png"));
   EXPECT_EQ(run_command(make + "-q").exit_code, 0);
 }
 
