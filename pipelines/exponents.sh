@@ -24,6 +24,8 @@
 # BA runs (fit_mmax_RUN.tsv, jump_mmax_RUN.tsv). Fig. 1's collapse is read
 # twice: tables/collapse.tsv fits theta and z together (the free fit),
 # tables/collapse_z_theta.tsv holds z theta = d and fits z, the paper's method.
+# Where TABLES/contact/ holds the same cluster tables by contact clusters
+# (pipelines/contact-clusters.mk), tau and the Fig. 4 rows are given by them too.
 set -e
 tables=$1 snap=$2 late=$3 L_max=$4 snap_L=$5 sets=$6 ba_fits=${7:-} structure_runs=${8:-} mmax_runs=${9:-} ba_mmax=${10:-}
 here=$(dirname "$0")
