@@ -67,9 +67,10 @@ void for_each_close_pair(const std::vector<std::size_t>& members, Position posit
 // n^(1/d) + 1 a side), their coordinates copied in that order, and each
 // point is measured against the points after it in its own row of cells
 // within reach, and against every point of the rows of cells ahead of its
-// own (a half shell). A row's cells are contiguous in the copy, so the inner
-// loop reads memory in order; half-width cells measure about 1.9 times the
-// sphere's pairs where cells as wide as reach measured 6.4 times (3D).
+// own (a half shell), rows and cells beyond reach of the point left out. A
+// row's cells are contiguous in the copy, so the inner loop reads memory in
+// order. In 3D, cells reach/2 wide put 5^3 (r/2)^3 = 15.6 r^3 around a point,
+// cells reach wide 27 r^3 (the sphere: 4.19 r^3).
 //
 // The squared distance is summed as every caller of for_each_close_pair
 // sums it, |x_j - x_i| over the minimum image in x, y, z order (|a - b| is
@@ -145,9 +146,9 @@ void PairsWithin::for_each(F f) const {
   // The points of cells x0 ... x1 (unwrapped, periodic) of a row: one or two ranges.
   auto cells = [&](std::size_t r, int x0, int x1, std::size_t a) {
     if (x1 < x0) return;
-    const int first = (x0 % nx + nx) % nx, w_cells = x1 - x0 + 1, run = std::min(w_cells, nx - first);
+    const int first = (x0 % nx + nx) % nx, span = x1 - x0 + 1, run = std::min(span, nx - first);
     measure(a, start_[r + std::size_t(first)], start_[r + std::size_t(first + run)], f);
-    if (run < w_cells) measure(a, start_[r], start_[r + std::size_t(w_cells - run)], f);
+    if (run < span) measure(a, start_[r], start_[r + std::size_t(span - run)], f);
   };
   // How far a coordinate lies outside cell c (unwrapped): a lower bound on
   // the distance to any point of it (other images are farther than reach,
