@@ -268,6 +268,11 @@ $(OUT)/fig2_energy_parameters.png: $(PARAM_TABLES) $(PARAM_FITS) $(PLOTS)/fig2_e
 	  phi0='$(PHI)'; r00='$(R0)'; delta0='$(DELTA)'; L='$(PARAM_L)'; out='$$o'" \
 	  $(PLOTS)/fig2_energy_parameters.gp || exit 1; done
 
+# ---- Figs. 3 and 4 by the contact definition beside the unit cells: its
+# tables in $(TABLES)/contact/ (pipelines/contact-clusters.mk; the scale file
+# may set CONTACT_DEFINITION, CONTACT_NM_FIT_WINDOW).
+include $(PIPE)contact-clusters.mk
+
 # ---- Fig. 3: snapshot of the gas, scaled cluster-mass distribution N(m,t)
 $(TABLES)/snapshot_gas.png: $(SNAP_RUN) $(call knob,snapshot,$(SNAPSHOT_TIME))
 	@mkdir -p $(@D)
@@ -305,8 +310,9 @@ BA_NM_FIT := $(TABLES)/fit_nm_ba.tsv
 endif
 
 $(OUT)/fig3_clusters.png: $(TABLES)/snapshot_gas.png $(TABLES)/nm_gas.tsv $(TABLES)/fit_nm_gas.tsv $(FIG3_BA) \
-    $(PLOTS)/fig3_clusters.gp
+    $(CONTACT)/nm_gas.tsv $(CONTACT)/fit_nm_gas.tsv $(PLOTS)/fig3_clusters.gp
 	for o in $@ $(@:.png=.pdf); do gnuplot -e "snapshot='$(TABLES)/snapshot_gas.png'; nm='$(TABLES)/nm_gas.tsv'; fit='$(TABLES)/fit_nm_gas.tsv'; \
+	  contact_nm='$(CONTACT)/nm_gas.tsv'; contact_fit='$(CONTACT)/fit_nm_gas.tsv'; \
 	  ba_snapshot='$(if $(FIG3_BA),$(TABLES)/snapshot_ba.png)'; ba_nm='$(if $(FIG3_BA),$(TABLES)/nm_ba.tsv)'; \
 	  snapshot_time='$(SNAPSHOT_TIME)'; out='$$o'" $(PLOTS)/fig3_clusters.gp || exit 1; done
 
@@ -339,8 +345,9 @@ $(TABLES)/fit_mavg_ba_%.tsv: $(TABLES)/mmax_ba_%.tsv $(call knob,ba_mmax_fit,$(B
 	$(call ba_mass_fit,M_avg) $< > $@
 
 $(OUT)/fig4_largest_mass.png: $(MMAX_GAS) $(MMAX_BA) $(subst mmax_,jump_mmax_,$(MMAX_GAS)) \
-    $(subst mmax_,fit_mmax_,$(MMAX_BA)) $(PLOTS)/fig4_largest_mass.gp
-	for o in $@ $(@:.png=.pdf); do gnuplot -e "gas='$(MMAX_GAS)'; ba='$(MMAX_BA)'; ba_window='$(BA_MMAX_FIT_WINDOW)'; out='$$o'" \
+    $(subst mmax_,fit_mmax_,$(MMAX_BA)) $(CONTACT_MMAX) $(subst mmax_,jump_mmax_,$(CONTACT_MMAX)) $(PLOTS)/fig4_largest_mass.gp
+	for o in $@ $(@:.png=.pdf); do gnuplot -e "gas='$(MMAX_GAS)'; contact='$(CONTACT_MMAX)'; ba='$(MMAX_BA)'; \
+	  ba_window='$(BA_MMAX_FIT_WINDOW)'; out='$$o'" \
 	  $(PLOTS)/fig4_largest_mass.gp || exit 1; done
 
 # ---- Fig. 5: Phi(y) early and late, kurtosis kappa(t), tails -ln Phi(y)
@@ -429,7 +436,7 @@ EXPONENT_INPUTS := $(TABLES)/collapse.tsv $(TABLES)/collapse_z_theta.tsv $(TABLE
   $(subst mmax_,fit_mmax_,$(MMAX_BA)) $(subst mmax_,fit_mavg_,$(MMAX_BA)) $(FIG5_BA) \
   $(TABLES)/velocity_series.tsv $(TABLES)/tail_early.tsv \
   $(TABLES)/fit_smoluchowski_M_max.tsv $(TABLES)/fit_smoluchowski_M_avg.tsv $(PARAM_FITS) \
-  $(foreach r,$(STRUCTURE_GAS),$(TABLES)/lt_$(r).tsv $(TABLES)/fit_lt_$(r).tsv $(TABLES)/fit_lc_$(r).tsv)
+  $(foreach r,$(STRUCTURE_GAS),$(TABLES)/lt_$(r).tsv $(TABLES)/fit_lt_$(r).tsv $(TABLES)/fit_lc_$(r).tsv) $(CONTACT_TABLES)
 $(OUT)/exponents.tsv: $(EXPONENT_INPUTS) $(BA_FITS) $(BA_NM_FIT) $(PIPE)tsv-value.sh $(PIPE)exponents.sh \
     $(PIPE)row-verdict.sh
 	sh $(PIPE)exponents.sh $(TABLES) $(notdir $(basename $(SNAP_RUN))) "$(lastword $(PHI_LATE_TIMES))" \

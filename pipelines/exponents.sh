@@ -24,6 +24,8 @@
 # BA runs (fit_mmax_RUN.tsv, jump_mmax_RUN.tsv). Fig. 1's collapse is read
 # twice: tables/collapse.tsv fits theta and z together (the free fit),
 # tables/collapse_z_theta.tsv holds z theta = d and fits z, the paper's method.
+# Where TABLES/contact/ holds the same cluster tables by contact clusters
+# (pipelines/contact-clusters.mk), tau and the Fig. 4 rows are given by them too.
 set -e
 tables=$1 snap=$2 late=$3 L_max=$4 snap_L=$5 sets=$6 ba_fits=${7:-} structure_runs=${8:-} mmax_runs=${9:-} ba_mmax=${10:-}
 here=$(dirname "$0")
@@ -64,10 +66,19 @@ scaling_regime() {  # energy_table fit_table L
     echo "no: at the window's start E(t) still falls as t^-$s, faster than t^-3/2 (not yet past the crossover from Haff's law)"
   else before_crossover "$(value "$2" t_max)" "$3" "the window's end"; fi
 }
-# The regime verdict of a run whose largest cluster at t = 0 is the fraction $1 > 0.5.
-percolates() {
-  echo "no: the largest cluster holds $(short "$1") of the particles already at t = 0 (the unit-cell occupancy is above the site-percolation threshold 0.3116)"
+# The regime verdict of a run whose largest cluster at t = 0 is the fraction
+# $1 > 0.5, by the definition of the table $2 (coolgas-clusters: its
+# "# definition:" line, cells where it has none): the cause, with the unit
+# cells' occupancy n = N / L^3 particles per cell.
+percolates() {  # fraction table
+  def=$(value "$2" definition '#')
+  case $def in
+    contact:*) echo "no: the largest cluster holds $(short "$1") of the particles already at t = 0 (bonds of ${def#contact:} sigma span the box from the start)" ;;
+    *) echo "no: the largest cluster holds $(short "$1") of the particles already at t = 0 (the unit cells percolate: their occupancy, n = $(dec3 "$(value "$2" N '#') / ($(value "$2" L '#') ^ 3)") particles per cell, is above the site-percolation threshold 0.3116)" ;;
+  esac
 }
+# The bond length of a contact table's definition, sigma.
+cutoff_of() { d=$(value "$1" definition '#'); echo "${d#contact:}"; }
 is_num() { echo "$1" | grep -Eq '^[-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?$'; }
 
 # How far from the paper's value a row still agrees (pipelines/row-verdict.sh).
@@ -205,10 +216,25 @@ for p in $sets; do
   row "theta at $name" 2 "$th" "$the" 1.2 0 $tol_theta "$reg" "$note"
 done
 
-# Figs. 3-5: the snapshot run at the late time.
+# Figs. 3-5: the snapshot run at the late time. tau by the paper's unit cells
+# and by particles in contact (pipelines/contact-clusters.mk, tables/contact/):
+# N(m) of a definition that spans the box from t = 0 is that of the pieces
+# beside one cluster that holds most of the particles, not the paper's regime.
 late_regime=$(before_crossover "$late" "$snap_L" "the late time")
-row "tau, N(m) ~ m^-tau" 3 "$(value "$tables/fit_nm_gas.tsv" theta)" "$(value "$tables/fit_nm_gas.tsv" theta_err)" \
-  2.7 0 $tol_tau "$late_regime" "below the largest cluster"
+contact=$tables/contact
+# tau_row NAME TABLES_DIR NOTE
+tau_row() {
+  f=$(at_time "$2/mmax_$snap.tsv" largest_fraction 0)
+  if awk "BEGIN { exit !($f > 0.5) }"; then reg=$(percolates "$f" "$2/mmax_$snap.tsv"); else reg=$late_regime; fi
+  row "$1" 3 "$(value "$2/fit_nm_gas.tsv" theta)" "$(value "$2/fit_nm_gas.tsv" theta_err)" 2.7 0 $tol_tau "$reg" \
+    "below the largest cluster, m = $(value "$2/fit_nm_gas.tsv" window '#')$3"
+}
+tau_row "tau, N(m) ~ m^-tau, unit cells" "$tables" ""
+if [ -f "$contact/fit_nm_gas.tsv" ]; then
+  tau_row "tau, N(m) ~ m^-tau, contact clusters" "$contact" "; particles closer than $(cutoff_of "$contact/mmax_$snap.tsv") sigma \
+bonded, the largest cluster holding $(short "$(at_time "$contact/mmax_$snap.tsv" largest_fraction 0)") at t = 0 and \
+$(short "$(at_time "$contact/mmax_$snap.tsv" largest_fraction "$late")") at t = $late"
+fi
 f0=$(at_time "$tables/mmax_$snap.tsv" largest_fraction 0)
 # Where the definition percolates at t = 0, the note says so with the
 # share at t = 0 and late in every box of the same gas and at the other
@@ -232,7 +258,7 @@ share_cause() {
 }
 note="at t = $late"
 if awk "BEGIN { exit !($f0 > 0.5) }"; then
-  reg=$(percolates "$f0")
+  reg=$(percolates "$f0" "$tables/mmax_$snap.tsv")
   cause=$(share_cause)
   [ -z "$cause" ] || note="$note; $cause"
 else reg=$late_regime; fi
@@ -364,35 +390,49 @@ done
 # and its steepest chord by the gas's rule (the paper: t^0.94 ... t^1.03,
 # rising with phi; mean field t^(6/5)).
 rise="d ln M_max/d ln t over 0.4 decades (mean field 6/5)"
-for r in $mmax_runs; do
-  j=$tables/jump_mmax_$r.tsv
+# jump_rows JUMP_TABLE: the rows of one gas run by the definition of its
+# table (tables/jump_mmax_RUN.tsv: unit cells; tables/contact/...: contact).
+# The contact rows have names of their own (their definition in them, within
+# the table's 50 characters): M_max rise, t_jump and lg(t_jump/t_inhom)
+# (lg = log10); t_inhom is the run's own, in the unit cells' rows only.
+jump_rows() {
+  j=$1
   jv() { value "$j" "$1"; }
-  L=$(value "$j" L '#') name="gas phi = $(short "$(value "$j" phi '#')"), L = $(value "$j" L '#')"
+  L=$(value "$j" L '#') phi=$(short "$(value "$j" phi '#')")
   s=$(short "$(jv slope_max)") span=$(short "$(jv span)")
   jump_note="$rise; the paper: a rapid increase, a jump by pipelines/mmax-jump.sh's rule (steeper than t^$jump_slope)"
+  case $(value "$j" definition '#') in
+    contact:*) name="contact, phi = $phi, L = $L" q_rise="M_max rise" q_lg="lg(t_jump/t_inhom)"
+      jump_note="$jump_note; particles closer than $(cutoff_of "$j") sigma bonded" ;;
+    *) name="gas phi = $phi, L = $L" q_rise="M_max's steepest rise" q_lg="log10(t_jump/t_inhom)" ;;
+  esac
   if awk "BEGIN { exit !($(jv fraction_0) > 0.5) }"; then
-    row "M_max's steepest rise, $name" 4 "$s" - "> $jump_slope" - - "$(percolates "$(jv fraction_0)")" "$jump_note"
-    continue
+    row "$q_rise, $name" 4 "$s" - "> $jump_slope" - - "$(percolates "$(jv fraction_0)" "$j")" "$jump_note"
+    return
   fi
   if [ "$(jv jump)" = 1 ]; then jump_reg=$(before_crossover "$(jv t_jump)" "$L" "the jump")
   elif awk "BEGIN { exit !($span > 0.5) }"; then jump_reg="no: dumps $span decades apart cannot resolve a jump (the rule needs 5 dumps a decade)"
   else jump_reg="no: no jump within the run (t <= $(short "$(jv t_end)")): M_max grows at most as t^$s, below the rule's t^2"; fi
-  row "M_max's steepest rise, $name" 4 "$s" - "> $jump_slope" - - "$jump_reg" "$jump_note"
+  row "$q_rise, $name" 4 "$s" - "> $jump_slope" - - "$jump_reg" "$jump_note"
   row "t_jump, $name" 4 "$(short "$(jv t_jump)")" - - - - "$jump_reg" \
     "the centre of the steepest rise: M_max/N $(short "$(jv fraction_from)") to $(short "$(jv fraction_to)") over t = $(short "$(jv t_from)"):$(short "$(jv t_to)")"
   peak=$(short "$(jv theta_peak)")
   if [ "$(jv inhom)" = 1 ]; then inhom_reg=yes
   elif awk "BEGIN { exit !($peak < 1.5) }"; then inhom_reg="no: E(t) never falls faster than t^-3/2 (at most t^-$peak): no Haff regime to leave"
   else inhom_reg="no: E(t) still falls faster than t^-3/2 at the run's end (a lower bound)"; fi
-  row "t_inhom, $name" 4 "$(short "$(jv t_inhom)")" - - - - "$inhom_reg" \
+  [ "$q_rise" = "M_max rise" ] || row "t_inhom, $name" 4 "$(short "$(jv t_inhom)")" - - - - "$inhom_reg" \
     "E(t) leaves Haff's law: -d ln E/d ln t below 3/2 after its peak $peak"
   # Resolution: t_jump sits on the dumps' grid, so half a dump spacing (the
   # chord is two); the paper's "coincide" can mean no more than that, so it
   # is the tolerance too.
   d=$(calc "log($(jv t_jump) / $(jv t_inhom)) / log(10)") de=$(calc "$(jv span) / 4")
   if [ "$jump_reg" = yes ] && [ "$inhom_reg" != yes ]; then reg=$inhom_reg; else reg=$jump_reg; fi
-  row "log10(t_jump/t_inhom), $name" 4 "$d" "$de" 0 0 "$de" "$reg" \
-    "the paper: they coincide; error and tolerance half a dump spacing; t_jump/t_inhom = $(short "10 ^ $d")"
+  row "$q_lg, $name" 4 "$d" "$de" 0 0 "$de" "$reg" \
+    "log10 of t_jump/t_inhom; the paper: they coincide; error and tolerance half a dump spacing; t_jump/t_inhom = $(short "10 ^ $d")"
+}
+for r in $mmax_runs; do
+  jump_rows "$tables/jump_mmax_$r.tsv"
+  [ ! -f "$contact/jump_mmax_$r.tsv" ] || jump_rows "$contact/jump_mmax_$r.tsv"
 done
 for r in $ba_mmax; do
   fit=$tables/fit_mmax_$r.tsv phi=$(short "$(value "$tables/jump_mmax_$r.tsv" phi '#')")

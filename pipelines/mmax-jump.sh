@@ -37,7 +37,7 @@ printf 't_inhom\ttheta_peak\tt_peak\tfraction_inhom\tinhom\tt_end\n'
 printf '# format: coolgas-table 2\n'
 printf '# tool: pipelines/mmax-jump.sh\n'
 printf '# input: %s\n# input: %s\n' "$mmax" "$energy"
-for k in version seed N L phi r0 delta; do printf '# %s: %s\n' "$k" "$(meta "$k")"; done
+for k in version seed N L phi r0 delta definition; do printf '# %s: %s\n' "$k" "$(meta "$k")"; done
 printf '# rule: steepest chord of ln M_max vs ln t over >= 0.4 decades; jump if its slope >= 2, span <= 0.5 decades, largest_fraction(0) <= 0.5\n'
 printf '# rule_energy: t_inhom = first quarter-decade centre at or after the steepest decay with -d ln E/d ln t < 1.5\n'
 awk -F '\t' '

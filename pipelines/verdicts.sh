@@ -7,8 +7,9 @@
 # pipelines/row-verdict.sh gives by its rules; nothing here judges a number
 # again, so a claim cannot say what its rows do not. Each part of a claim
 # names its rows by the start of their quantity (a part may have several,
-# one per gas, say). The rule, the same for every claim, is RULES below, which
-# `verdicts.sh --rules` prints (exponents.md quotes it).
+# one per gas, say, and several starts, one per cluster definition). The
+# rule, the same for every claim, is RULES below, which `verdicts.sh --rules`
+# prints (exponents.md quotes it).
 set -e
 RULES='A claim rests on rows of the table above and on their verdicts; rows outside the paper'"'"'s regime decide nothing and are left out. A claim is not supported when a row of it differs, supported when each of its parts has a row in the regime and every such row agrees, and not decided at this scale otherwise (the first part that decides nothing is named, and why). That theta_BA falls with phi also needs its dilutest row above its densest by more than 3 combined errors.'
 [ "${1:-}" = --rules ] && { echo "$RULES"; exit 0; }
@@ -23,9 +24,15 @@ awk -F '\t' '
   function in_regime(i) { return reg[i] !~ /^no/ }
   # A claim is built part by part: start(text), part(prefix, what), end().
   function start(text) { claim = text; evidence = ""; differs = ""; undecided = "" }
+  # A part'"'"'s prefixes are separated by "|" (one quantity by two cluster definitions, say).
+  function starts(s, prefixes,   k, np, pre) {
+    np = split(prefixes, pre, "|")
+    for (k = 1; k <= np; k++) if (index(s, pre[k]) == 1) return 1
+    return 0
+  }
   function part(prefix, what,   i, rows, kept, agree, why) {
     for (i = 1; i <= n; i++) {
-      if (index(q[i], prefix) != 1) continue
+      if (!starts(q[i], prefix)) continue
       rows++
       evidence = evidence (evidence == "" ? "" : "; ") q[i] " " shown(i) " (" (in_regime(i) ? w[i] : "outside the regime") ")"
       if (!in_regime(i)) { if (why == "") why = q[i] " is outside the paper'"'"'s regime (" substr(reg[i], 5) ")"; continue }
@@ -62,7 +69,10 @@ awk -F '\t' '
     start("BA'"'"'s cluster sizes follow N(m) ~ m^-0.2, then an exponential tail")
     part("tau_BA", "tau_BA"); end()
     start("the gas'"'"'s M_max jumps when clustering sets in, BA'"'"'s grows as a power law")
-    part("M_max'"'"'s steepest rise, gas", "M_max'"'"'s steepest rise of a gas"); part("log10(t_jump/t_inhom)", "log10(t_jump/t_inhom)")
+    # by the unit cells and by contact clusters (pipelines/contact-clusters.mk): where
+    # the unit cells percolate from t = 0, their rows are outside the regime
+    part("M_max'"'"'s steepest rise, gas|M_max rise, contact", "M_max'"'"'s steepest rise of a gas")
+    part("log10(t_jump/t_inhom)|lg(t_jump/t_inhom), contact", "log10(t_jump/t_inhom)")
     part("M_max'"'"'s steepest rise, BA", "M_max'"'"'s steepest rise of BA"); end()
     start("-ln Phi(y) ~ y^beta with beta = 5/3 (= 2/theta) for the gas and 0.70 for BA")
     part("beta, -ln Phi", "beta"); part("beta_BA", "beta_BA"); end()

@@ -1,5 +1,7 @@
 #include "analyze/labelling/contact_labeller.h"
 
+#include <algorithm>
+#include <limits>
 #include <numeric>
 
 #include "common/close_pairs.h"
@@ -22,29 +24,27 @@ void ContactLabeller::unite(std::int32_t a, std::int32_t b) {
 
 void ContactLabeller::label(double L, std::span<const double> positions, double cutoff, Geometry g) {
   const std::size_t n = positions.size() / 3;
+  // The union-find runs over the points in cell order (PairsWithin's), where
+  // bonded points lie near each other in memory too; in the caller's order
+  // (random in space) each find missed the cache.
+  const PairsWithin pairs(positions, cutoff, L, g);
   parent_.resize(n);
   std::iota(parent_.begin(), parent_.end(), 0);
-  std::vector<std::size_t> members(n);
-  std::iota(members.begin(), members.end(), std::size_t(0));
-  const double* p = positions.data();
-  const double reach2 = cutoff * cutoff, half = 0.5 * L;
-  for_each_close_pair(members, [p](std::size_t i) { return p + 3 * i; }, cutoff, L, g,
-                      [&](std::size_t i, std::size_t j) {
-                        double r2 = 0;
-                        for (int k = 0; k < 3; ++k) {
-                          double dx = std::abs(p[3 * j + k] - p[3 * i + k]);
-                          dx = dx > half ? L - dx : dx;  // the minimum image (cutoff <= L/2)
-                          r2 += dx * dx;
-                        }
-                        if (r2 < reach2) unite(std::int32_t(i), std::int32_t(j));
-                      });
-  // Roots are the smallest index of their trees, so one pass in increasing
-  // order makes every parent a root and counts the masses into them.
+  pairs.for_each([&](std::size_t a, std::size_t b, double) { unite(std::int32_t(a), std::int32_t(b)); });
+  // Each tree's smallest caller index (at its root), then every particle's
+  // in the caller's numbering: the root the labeller's contract names.
+  std::vector<std::int32_t> smallest(n, std::numeric_limits<std::int32_t>::max()), root(n);
+  for (std::size_t a = 0; a < n; ++a) {
+    std::int32_t& s = smallest[std::size_t(find(std::int32_t(a)))];
+    s = std::min(s, std::int32_t(pairs.index(a)));
+  }
+  for (std::size_t a = 0; a < n; ++a) root[pairs.index(a)] = smallest[std::size_t(find(std::int32_t(a)))];
+  parent_.swap(root);
+  // Every parent is now a root: count the masses into them, in increasing order.
   mass_.assign(n, 0);
   roots_.clear();
   for (std::size_t i = 0; i < n; ++i) {
-    const std::int32_t r = parent_[std::size_t(parent_[i])];
-    parent_[i] = r;
+    const std::int32_t r = parent_[i];
     if (r == std::int32_t(i)) roots_.push_back(r);
     ++mass_[std::size_t(r)];
   }

@@ -17,10 +17,22 @@ ClusterTable table_of(const std::string& name) {
                               "table", "a cluster table");
 }
 
-// Labels and the size table: (rank per particle, mass per cluster, smallest cell per cluster), largest first.
-py::tuple label(const py::object& positions, double L) {
+// Labels and the size table: (rank per particle, mass per cluster, its
+// smallest cell, or by contact its smallest particle), largest first.
+py::tuple label(const py::object& positions, double L, const std::string& definition) {
+  const ClusterDefinition def = parse_cluster_definition(definition);
   const PointRows rows(positions, "positions", L);
-  const ClusterGrid grid(L, Geometry(rows.dimension()));
+  const Geometry g(rows.dimension());
+  if (def.contact()) {
+    check_cutoff(def, L, "positions");
+    ContactLabeller labeller;
+    labeller.label(L, rows.xyz(), def.cutoff, g);
+    RankedContacts r = contact_ranks(labeller, rows.xyz().size() / 3);
+    const auto n = py::ssize_t(r.rank.size()), k = py::ssize_t(r.mass.size());
+    return py::make_tuple(to_numpy(std::move(r.rank), {n}), to_numpy(std::move(r.mass), {k}),
+                          to_numpy(std::move(r.first_particle), {k}), 0);
+  }
+  const ClusterGrid grid(L, g);
   ClusterLabeller labeller;
   labeller.label(grid, rows.xyz());
   const std::vector<Cluster> ranked = labeller.ranked();
@@ -66,7 +78,7 @@ py::dict table(const py::object& positions, double L, double t, const std::strin
 }  // namespace
 
 void bind_clusters(py::module_& m) {
-  m.def("label_clusters", &label, py::arg("positions"), py::arg("L"));
+  m.def("label_clusters", &label, py::arg("positions"), py::arg("L"), py::arg("definition") = "cells");
   m.def("cluster_table", &table, py::arg("positions"), py::arg("L"), py::arg("t"), py::arg("table"),
         py::arg("bins_per_decade"), py::arg("masses") = py::none(), py::arg("slots") = py::none(),
         py::arg("definition") = "cells");

@@ -14,21 +14,7 @@ PairDistances::PairDistances(Geometry g, double r_max, int bins_per_sigma)
 
 void PairDistances::add(double L, std::span<const double> positions) {
   const std::size_t n = positions.size() / 3;
-  std::vector<std::size_t> members(n);
-  std::iota(members.begin(), members.end(), std::size_t(0));
-  const double* p = positions.data();
-  const double reach2 = r_max_ * r_max_, half = 0.5 * L;
-  auto position = [p](std::size_t i) { return p + 3 * i; };
-  for_each_close_pair(members, position, r_max_, L, g_, [&](std::size_t i, std::size_t j) {
-    double r2 = 0;
-    for (int k = 0; k < 3; ++k) {
-      // The minimum image (r_max <= L/2); |dx| < L inside the box, so one
-      // shift is enough, and a comparison is cheaper than rounding.
-      double dx = std::abs(p[3 * j + k] - p[3 * i + k]);
-      dx = dx > half ? L - dx : dx;
-      r2 += dx * dx;
-    }
-    if (r2 >= reach2) return;
+  PairsWithin(positions, r_max_, L, g_).for_each([&](std::size_t, std::size_t, double r2) {
     const auto bin = std::size_t(std::sqrt(r2) * per_sigma_);
     if (bin < pairs_.size()) ++pairs_[bin];  // r just below r_max may round up to its edge
   });

@@ -2,8 +2,8 @@
 // a periodic box of side L, in d = 1, 2, 3 (common/geometry.h), and its
 // value at contact g(sigma+).
 //
-// Pairs are found by the shared cell list (common/close_pairs.h, cells at
-// least r_max wide) and measured by the minimum image, so r_max <= L/2.
+// Pairs are found and measured by the shared cell list (common/close_pairs.h,
+// PairsWithin) by the minimum image, so r_max <= L/2.
 // Bin i holds the pairs with i/b <= r < (i + 1)/b (b = bins per sigma, so
 // sigma is a bin edge). Normalisation: the pairs an ideal gas of the same
 // N in the same box puts in the bin on average,

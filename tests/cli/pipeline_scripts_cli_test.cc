@@ -293,6 +293,32 @@ TEST(Verdicts, AClaimSaysOnlyWhatItsRowsSay) {
   EXPECT_EQ(mmax("differs").rfind("not supported: log10(t_jump/t_inhom), gas phi = 0.104", 0), 0u);
   EXPECT_EQ(mmax("agrees"), "supported: every row agrees");
 
+  // Both cluster definitions (issue 55): the unit cells percolate at the
+  // paper's phi from t = 0, so their rows are outside the regime and left
+  // out; the contact clusters' rows at that phi then decide, and a contact
+  // row that differs makes the claim not supported.
+  const auto by_contact = [&](const std::string& rise, const std::string& timing) {
+    return verdict_of(exponent_table(dir, {{{"M_max's steepest rise, gas phi = 0.208, L = 68", "0.13", "-", "> 2", "no: percolates", "not decided"},
+                                            {"M_max rise, contact, phi = 0.208, L = 68", "3.1", "-", "> 2", "yes", rise},
+                                            {"lg(t_jump/t_inhom), contact, phi = 0.208, L = 68", "0.075", "0.1", "0", "yes", timing},
+                                            {"M_max's steepest rise, gas phi = 0.052, L = 136", "3.72", "-", "> 2", "yes", "agrees"},
+                                            {"log10(t_jump/t_inhom), gas phi = 0.052, L = 136", "0.075", "0.1", "0", "yes", "agrees"},
+                                            {"M_max's steepest rise, BA phi = 0.208", "1.06", "-", "< 2", "yes", "agrees"}}}),
+                      "the gas's M_max jumps");
+  };
+  EXPECT_EQ(by_contact("agrees", "agrees"), "supported: every row agrees");
+  EXPECT_EQ(by_contact("agrees", "differs").rfind("not supported: lg(t_jump/t_inhom), contact, phi = 0.208", 0), 0u);
+  EXPECT_EQ(by_contact("differs", "agrees").rfind("not supported: M_max rise, contact, phi = 0.208", 0), 0u);
+  const auto tau = [&](const std::string& contact_regime, const std::string& contact_verdict) {
+    return verdict_of(exponent_table(dir, {{{"tau, N(m) ~ m^-tau, unit cells", "2.88", "0.11", "2.7", "no: percolates", "not decided"},
+                                            {"tau, N(m) ~ m^-tau, contact clusters", "2.75", "0.05", "2.7", contact_regime, contact_verdict},
+                                            {"largest cluster's share", "0.80", "-", "0.75", "yes", "agrees"}}}),
+                      "the gas's cluster sizes");
+  };
+  EXPECT_EQ(tau("yes", "agrees"), "supported: every row agrees");
+  EXPECT_EQ(tau("no: too late", "not decided"),
+            "not decided at this scale: tau, N(m) ~ m^-tau, unit cells is outside the paper's regime (percolates)");
+
   // A claim whose rows the table lacks is not decided, and says which rows.
   EXPECT_EQ(verdict_of(exponent_table(dir, {}), "the kurtosis"), "not decided at this scale: no row kappa in the table");
 }

@@ -1,7 +1,8 @@
 """Clusters: coolgas.clusters on a frame's arrays equals coolgas-clusters on
 the same file to the last bit (every table, gas and aggregation; both
 definitions, unit cells and contacts), and
-label_clusters' labels and size table agree with the tool's masses."""
+label_clusters' labels and size table agree with the tool's masses (by
+either definition; by contact also with an all-pairs labelling)."""
 import numpy as np
 import pytest
 
@@ -77,3 +78,68 @@ def test_face_neighbours_across_the_boundary_join():
     labels, sizes = coolgas.label_clusters([[0.5, 0.5, 0.5], [9.5, 0.5, 0.5], [5.5, 5.5, 5.5], [5.5, 6.5, 6.5]], 10.0)
     np.testing.assert_array_equal(labels, [0, 0, 1, 2])
     np.testing.assert_array_equal(sizes["mass"], [2, 1, 1])
+
+
+def all_pairs_contact_labels(pos, L, cutoff):
+    """Contact clusters by every pair (minimum image) and a plain union-find,
+    ranked as label_clusters ranks them: by mass, ties by smallest particle."""
+    n = len(pos)
+    parent = list(range(n))
+
+    def find(x):
+        while parent[x] != x:
+            x = parent[x]
+        return x
+
+    d = np.abs(pos[:, None, :] - pos[None, :, :])
+    d = np.minimum(d, L - d)
+    close = (d ** 2).sum(axis=2) < cutoff ** 2
+    for i, j in zip(*np.nonzero(np.triu(close, 1))):
+        a, b = find(i), find(j)
+        parent[max(a, b)] = min(a, b)
+    roots = np.array([find(i) for i in range(n)])
+    firsts = np.unique(roots)  # the smallest particle of each cluster, increasing
+    mass = np.array([(roots == r).sum() for r in firsts])
+    order = sorted(range(len(firsts)), key=lambda k: -mass[k])  # stable: ties by smallest particle
+    rank = {firsts[k]: r for r, k in enumerate(order)}
+    return np.array([rank[r] for r in roots]), mass[order], firsts[order]
+
+
+@pytest.mark.parametrize("run", ["gas", "disks", "rods"])
+@pytest.mark.parametrize("definition, cutoff", [("contact", 1.1), ("contact:1.3", 1.3)])
+def test_contact_labels_are_the_tools_clusters(run, definition, cutoff, request, tmp_path):
+    path = request.getfixturevalue(run)
+    fr = coolgas.open(path).frames[-1]
+    labels, sizes = coolgas.label_clusters(fr, definition=definition)
+    assert list(sizes.columns) == ["cluster", "mass", "first_particle"]
+    np.testing.assert_array_equal(np.bincount(labels), sizes["mass"].to_numpy())
+    assert (np.diff(sizes["mass"].to_numpy()) <= 0).all() and sizes["mass"].sum() == len(fr.positions)
+    # the tool's series at that dump, to the last bit: M_max, the clusters
+    # per volume and the largest share, from the sizes
+    series = cli_table(tmp_path, path, "--series", "--time", repr(fr.t), "--exact-time", "--definition", definition)
+    d = fr.positions.shape[1]
+    assert sizes["mass"].iloc[0] == series["M_max"].iloc[0]
+    assert len(sizes) / fr.L ** d == series["M0"].iloc[0]
+    assert sizes["mass"].iloc[0] / len(labels) == series["largest_fraction"].iloc[0]
+    # the labels themselves against every pair, on the first 600 particles
+    # (their own clusters: a smaller frame in the same box)
+    pos = fr.positions[:600]
+    labels, sizes = coolgas.label_clusters(pos, fr.L, definition=definition)
+    want, mass, first = all_pairs_contact_labels(pos, fr.L, cutoff)
+    np.testing.assert_array_equal(labels, want)
+    np.testing.assert_array_equal(sizes["mass"], mass)
+    np.testing.assert_array_equal(sizes["first_particle"], first)
+
+
+def test_contact_labels_join_across_the_boundary():
+    # 0 and 1 touch through the periodic boundary (distance 1.0 < 1.1); 2 and 3 are
+    # 1.2 apart, bonded at cutoff 1.3 only; equal masses rank by smallest particle
+    pos = [[0.2, 5.0, 5.0], [9.2, 5.0, 5.0], [5.0, 5.0, 5.0], [5.0, 6.2, 5.0]]
+    labels, sizes = coolgas.label_clusters(pos, 10.0, definition="contact")
+    np.testing.assert_array_equal(labels, [0, 0, 1, 2])
+    np.testing.assert_array_equal(sizes["first_particle"], [0, 2, 3])
+    labels, sizes = coolgas.label_clusters(pos, 10.0, definition="contact:1.3")
+    np.testing.assert_array_equal(labels, [0, 0, 1, 1])
+    np.testing.assert_array_equal(sizes["mass"], [2, 2])
+    with pytest.raises(coolgas.InputError, match="exceeds half the box side"):
+        coolgas.label_clusters(pos, 10.0, definition="contact:6")

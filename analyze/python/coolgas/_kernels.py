@@ -19,21 +19,26 @@ def _frame_args(frame_or_positions, L, t):
     return frame_or_positions, L, 0.0 if t is None else t, None
 
 
-def label_clusters(positions, L=None):
-    """The paper's clusters (floor(L)^3 cells of side L/floor(L); occupied
-    cells sharing a face, periodic, form a cluster): (labels, sizes).
+def label_clusters(positions, L=None, definition="cells"):
+    """The clusters of coolgas-clusters --definition: (labels, sizes).
 
+    definition "cells", the paper's clusters (floor(L)^3 cells of side
+    L/floor(L); occupied cells sharing a face, periodic, form a cluster), or
+    "contact[:CUTOFF]" (particles closer than CUTOFF sigma, default 1.1,
+    periodic minimum image, are bonded; bonded particles form a cluster).
     labels[i] is the cluster of particle i, numbered by size: 0 is the
-    largest (ties by the smallest cell). sizes is a DataFrame with one row
-    per cluster in that order: cluster, mass (particles), first_cell (the
-    smallest flat cell index i + n(j + n k), n = floor(L)). Accepts a Frame.
-    An (N, 2) array is disks: floor(L)^2 unit squares sharing an edge; so
-    in every kernel here, an (N, 2) positions or velocities array is 2D. An
-    (N, 1) array is rods on a ring: floor(L) unit segments, neighbours left
-    and right; so in every kernel, an (N, 1) array is 1D."""
+    largest (ties by the smallest cell, or particle). sizes is a DataFrame
+    with one row per cluster in that order: cluster, mass (particles), and
+    first_cell (the smallest flat cell index i + n(j + n k), n = floor(L))
+    or, by contact, first_particle (its smallest particle index). Accepts a
+    Frame. An (N, 2) array is disks: floor(L)^2 unit squares sharing an
+    edge; so in every kernel here, an (N, 2) positions or velocities array
+    is 2D. An (N, 1) array is rods on a ring: floor(L) unit segments,
+    neighbours left and right; so in every kernel, an (N, 1) array is 1D."""
     positions, L, _, _ = _frame_args(positions, L, None)
-    labels, mass, first_cell, _ = _core.label_clusters(positions, float(L))
-    sizes = pd.DataFrame({"cluster": np.arange(len(mass)), "mass": mass, "first_cell": first_cell})
+    labels, mass, first, _ = _core.label_clusters(positions, float(L), definition)
+    first_name = "first_particle" if definition.startswith("contact") else "first_cell"
+    sizes = pd.DataFrame({"cluster": np.arange(len(mass)), "mass": mass, first_name: first})
     return labels, sizes
 
 
