@@ -27,9 +27,6 @@ SCALE ?= demo
 PIPE := $(dir $(lastword $(MAKEFILE_LIST)))
 include $(PIPE)scales/$(SCALE).mk
 
-# The programs: a source tree's build; in an installed tree
-# (PREFIX/share/coolgas/pipelines/NAME) the installed ones, PREFIX/bin.
-BIN ?= $(if $(wildcard ../../../../bin/coolgas-simulate),$(if $(wildcard ../../build/bin),../../build/bin,../../../../bin),../../build/bin)
 OUT ?= ../../out/$(SCALE)
 LAUNCH ?=
 BA ?= 1

@@ -1,5 +1,9 @@
-# Make helpers shared by the pipelines (common.mk and accuracy/Makefile).
-# Needs PIPE (this folder, with a trailing '/'), BIN and LAUNCH.
+# Make helpers shared by the pipelines (common.mk, accuracy/, dimensions/,
+# effects/). Needs PIPE (this folder, with a trailing '/') and LAUNCH.
+# BIN, the programs, unless the pipeline names them: a source tree's build;
+# in an installed tree (PREFIX/share/coolgas/pipelines/NAME) the installed
+# ones, PREFIX/bin.
+BIN ?= $(if $(wildcard ../../../../bin/coolgas-simulate),$(if $(wildcard ../../build/bin),../../build/bin,../../../../bin),../../build/bin)
 define newline
 
 
