@@ -24,10 +24,11 @@ trap 'rm -f "$table"' EXIT
 awk -F ' [|] ' '
   # The rows shown: the start of their quantity in the exponent table, and their labels.
   BEGIN {
-    n = split("θ, collapse|z, collapse with zθ = 3|z, free collapse|θ, power-law fit at L = |η, f(x)|τ, N(m)|θ_BA at φ = 0.208", key, "|")
-    split("θ, finite-size collapse of E(t), θ and z fitted|z, the paper'"'"'s method: the same collapse with zθ = 3 held|z, the free fit: θ and z fitted together|θ, power-law fit at the largest L|η, f(x) ~ x^-η for x ≫ 1, the paper'"'"'s method|τ, N(m) ~ m^-τ|θ_BA at φ = 0.208", label, "|")
-    # The names of tables made before the short names (ASCII, the free z "same collapse").
-    split("theta, collapse|-|z, same collapse|theta, power-law fit at L = |-|tau, N(m)|theta_BA at phi = 0.208", old, "|")
+    n = split("θ, collapse|z, collapse with zθ = 3|z, free collapse|θ, power-law fit at L = |η, f(x)|τ, N(m) ~ m^-τ, unit cells|τ, N(m) ~ m^-τ, contact|θ_BA at φ = 0.208", key, "|")
+    split("θ, finite-size collapse of E(t), θ and z fitted|z, the paper'"'"'s method: the same collapse with zθ = 3 held|z, the free fit: θ and z fitted together|θ, power-law fit at the largest L|η, f(x) ~ x^-η for x ≫ 1, the paper'"'"'s method|τ, N(m) ~ m^-τ, the paper'"'"'s unit-cell clusters|τ, contact clusters (spheres closer than 1.1 σ)|θ_BA at φ = 0.208", label, "|")
+    # The names of tables made before the short names (ASCII, the free z
+    # "same collapse") and before the contact clusters (one τ, by unit cells).
+    split("theta, collapse|-|z, same collapse|theta, power-law fit at L = |-|tau, N(m)|-|theta_BA at phi = 0.208", old, "|")
   }
   $0 == "<!-- exponents:begin -->" { scale = "demo"; head = 0 }
   $0 == "<!-- exponents-workstation:begin -->" { scale = "workstation"; head = 0 }
