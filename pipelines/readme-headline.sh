@@ -27,8 +27,15 @@ awk -F ' [|] ' '
     n = split("θ, collapse|z, collapse with zθ = 3|z, free collapse|θ, power-law fit at L = |η, f(x)|τ, N(m) ~ m^-τ, unit cells|τ, N(m) ~ m^-τ, contact|θ_BA at φ = 0.208", key, "|")
     split("θ, finite-size collapse of E(t), θ and z fitted|z, the paper'"'"'s method: the same collapse with zθ = 3 held|z, the free fit: θ and z fitted together|θ, power-law fit at the largest L|η, f(x) ~ x^-η for x ≫ 1, the paper'"'"'s method|τ, N(m) ~ m^-τ, the paper'"'"'s unit-cell clusters|τ, contact clusters (spheres closer than 1.1 σ)|θ_BA at φ = 0.208", label, "|")
     # The names of tables made before the short names (ASCII, the free z
-    # "same collapse") and before the contact clusters (one τ, by unit cells).
-    split("theta, collapse|-|z, same collapse|theta, power-law fit at L = |-|tau, N(m)|-|theta_BA at phi = 0.208", old, "|")
+    # "same collapse") and before the contact clusters (one τ, by unit cells);
+    # ";" separates a row'"'"'s several older names.
+    split("theta, collapse|-|z, same collapse|theta, power-law fit at L = |-|tau, N(m);τ, N(m) ~ m^-τ|-|theta_BA at phi = 0.208", old, "|")
+  }
+  # Whether quantity q starts with one of the older names (";"-separated, "-" none).
+  function older(q, names,    k, m, each) {
+    m = split(names, each, ";")
+    for (k = 1; k <= m; k++) if (each[k] != "-" && index(q, each[k]) == 1) return 1
+    return 0
   }
   $0 == "<!-- exponents:begin -->" { scale = "demo"; head = 0 }
   $0 == "<!-- exponents-workstation:begin -->" { scale = "workstation"; head = 0 }
@@ -39,7 +46,7 @@ awk -F ' [|] ' '
   scale != "" && head && /^\| / && !/^\|---/ {
     line = substr($0, 3); split(line, c, / [|] ?/)
     q = c[1]
-    for (i = 1; i <= n; i++) if ((index(q, key[i]) == 1 || (old[i] != "-" && index(q, old[i]) == 1)) && !((scale, i) in cell)) {
+    for (i = 1; i <= n; i++) if ((index(q, key[i]) == 1 || older(q, old[i])) && !((scale, i) in cell)) {
       v = c[col["measured"]] == "nan" ? "not measured" : c[col["measured"]]
       if (i == 4) { L = q; sub(/.*at L = /, "", L); sub(/ .*/, "", L); v = v " (L = " L ")" }
       if ("verdict" in col) { v = v ": " c[col["verdict"]]; note[scale, i] = c[col["notes"]] }
