@@ -103,11 +103,11 @@ struct RoughRule : Normal {
 // their masses (pair_prediction.h, apply_restitution_with_masses). An engine
 // of this rule keeps a species per particle, an array beside the records
 // that only its partner search reads; equal spheres never instantiate it,
-// so their hot loop is as before. Species are numbered 0..kMaxSpecies - 1.
+// so their hot loop is as before. Species are numbered from 0 (a byte: the
+// scene allows 16).
 template <class Normal>
 struct MixtureRule : Normal {
   static constexpr bool kMixture = true;
-  static constexpr int kMaxSpecies = 16;
   MixtureRule(const Normal& normal, std::vector<double> diameter, std::vector<double> mass_)
       : Normal(normal), radius(diameter.size()), mass(std::move(mass_)) {
     for (std::size_t s = 0; s < diameter.size(); ++s) radius[s] = 0.5 * diameter[s];

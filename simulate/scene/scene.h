@@ -15,6 +15,7 @@
 #include "common/geometry.h"
 #include "common/limits.h"
 #include "common/trajectory/collision_models.h"
+#include "common/trajectory/run_parameters.h"
 
 namespace coolgas {
 
@@ -41,8 +42,8 @@ struct Species {
   double diameter = 1;
   std::optional<double> mass;
 };
-// The most species a scene may list (the engine keeps a byte per particle).
-inline constexpr int kMaxSpecies = 16;
+// The most species a scene may list: those a file holds.
+inline constexpr int kMaxSpecies = int(kMaxFileSpecies);
 
 struct Scene {
   // system
