@@ -60,11 +60,14 @@ Trajectory::Trajectory(const std::string& path, unsigned fields) : path_(path), 
                      "D trajectory (box/dimension = " + std::to_string(dimension_) +
                      "); this tool reads 3D trajectories only for now");
   const bool mixture = !aggregates_ && h5::exists(file_.id(), std::string(layout::kSpecies));
-  if (mixture && (fields_ & (Field::kMass | Field::kDiameter))) {
+  if (mixture) {
     const RunParameters run = read_file_parameters(file_.id(), path);
-    species_mass_ = run.species_mass;
-    species_diameter_ = run.species_diameter;
-    fields_ |= Field::kSpecies;
+    species_count_ = run.species_fraction.size();
+    if (fields_ & (Field::kMass | Field::kDiameter)) {
+      species_mass_ = run.species_mass;
+      species_diameter_ = run.species_diameter;
+      fields_ |= Field::kSpecies;
+    }
   }
   if (!mixture) fields_ &= ~unsigned(Field::kSpecies);  // equal particles' files have no species
   if (aggregates_) fields_ |= Field::kId | Field::kMass;

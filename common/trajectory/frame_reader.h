@@ -84,6 +84,7 @@ class Trajectory {
   const std::string& path() const { return path_; }
   std::int64_t particles() const { return n_; }  // N (slots, for aggregation files)
   bool aggregates() const { return aggregates_; }  // an aggregation file: frames hold the aggregates present
+  std::size_t species_count() const { return species_count_; }  // a mixture's species (0: particles all alike)
   int dimension() const { return dimension_; }     // 3, or 2 or 1 (opened with kAnyDimension)
   Geometry geometry() const { return Geometry(dimension_); }
   const std::vector<double>& dump_times() const { return times_; }
@@ -129,6 +130,7 @@ class Trajectory {
   int dimension_ = 3;
   std::vector<double> species_mass_, species_diameter_;  // a mixture's table (else empty)
   unsigned filled_ = 0;  // fields filled from the species (a mixture's kMass, kDiameter), not read
+  std::size_t species_count_ = 0;
   h5::Handle file_;
   std::int64_t n_ = 0;
   std::vector<double> times_;

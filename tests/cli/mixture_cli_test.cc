@@ -3,13 +3,17 @@
 // each particle's species in the dumps, each species' energy among the
 // observables, the species table in /parameters) and resumes bit for bit
 // after a kill, from its checkpoint, and from its last dump without one;
-// a run of equal particles has none of the mixture's elements.
+// coolgas-energy gives each species' temperature and coolgas-velocity
+// --species one species' statistics; a run of equal particles has none of
+// the mixture's elements.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <sstream>
 #include <string>
 
 #include "common/hdf5_file.h"
+#include "common/tsv.h"
 #include "tests/support/fault_points.h"
 #include "tests/support/run_command.h"
 #include "tests/support/same_trajectory.h"
@@ -130,6 +134,43 @@ TEST_F(MixtureRun, ResumesFromItsLastDumpWithoutACheckpoint) {
   EXPECT_EQ(v.exit_code, 0) << v.out << v.err;
 }
 
+// coolgas-energy adds each species' temperature per axis; at t = 0 each is
+// T0 within a few of its 1/sqrt(N_k) noise, and the columns are the
+// observables' 2 E_k/3 exactly.
+TEST_F(MixtureRun, TheEnergyTableHasEachSpeciesTemperature) {
+  const auto r = run_command(test::bin("coolgas-energy") + " " + whole());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::istringstream in(r.out);
+  const Table t = read_table(in, "energy");
+  h5::Handle f = h5::open_file(whole(), h5::Mode::kReadOnly);
+  const double T0 = h5::read_attr_double(h5::open_group(f.id(), "parameters").id(), "T0");
+  const auto E = h5::read_row<double>(h5::open_dataset(f.id(), "observables/species_kinetic_energy/value").id(), 0);
+  ASSERT_EQ(t.column_values("t").at(0), 0.0);
+  EXPECT_EQ(t.column_values("T_species_0").at(0), E[0] / 1.5);
+  EXPECT_EQ(t.column_values("T_species_1").at(0), E[1] / 1.5);
+  EXPECT_NEAR(t.column_values("T_species_0").at(0) / T0, 1.0, 4 * std::sqrt(2.0 / (3 * 600)));
+}
+
+// coolgas-velocity --species K: one species' velocities alone; at t = 0 each
+// is a Maxwellian of its own mass, so v_rms^2 m_k is about T0 for both (the
+// mixture of the two is no Gaussian, its kappa far from 0).
+TEST_F(MixtureRun, TheVelocityToolTakesOneSpecies) {
+  const auto series = [&](const std::string& option) {
+    const auto r = run_command(test::bin("coolgas-velocity") + " --series --time 0 --tail-from 1 --min-count 3 " + option +
+                               " " + whole());  // a tail fit (its beta) even for 400 particles
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    std::istringstream in(r.out);
+    return read_table(in, "velocity");
+  };
+  const Table a = series("--species 0"), b = series("--species 1"), both = series("");
+  const double va = a.column_values("v_rms").at(0), vb = b.column_values("v_rms").at(0);
+  EXPECT_NEAR(vb * vb * 3.375 / (va * va), 1.0, 0.15);
+  EXPECT_LT(std::fabs(a.column_values("kappa").at(0)), 4 * a.column_values("kappa_err").at(0));
+  EXPECT_GT(both.column_values("kappa").at(0), 4 * both.column_values("kappa_err").at(0));
+  test::expect_refused_with_one_line(run_command(test::bin("coolgas-velocity") + " --species 2 " + whole()),
+                                     "--species 2: ", "coolgas-velocity --species 2");
+}
+
 TEST_F(MixtureRun, EqualParticlesHaveNoSpecies) {
   const std::string out = *dir_ + "/equal.h5";
   const std::string scene = test::write_file(*dir_, "equal.toml",
@@ -139,6 +180,8 @@ TEST_F(MixtureRun, EqualParticlesHaveNoSpecies) {
   EXPECT_FALSE(h5::exists(f.id(), "particles/all/species"));
   EXPECT_FALSE(h5::exists(f.id(), "observables/species_kinetic_energy"));
   EXPECT_FALSE(h5::has_attr(h5::open_group(f.id(), "parameters").id(), "species_fraction"));
+  test::expect_refused_with_one_line(run_command(test::bin("coolgas-velocity") + " --species 0 " + out),
+                                     "no species", "coolgas-velocity --species 0 EQUAL");
 }
 
 }  // namespace
