@@ -84,13 +84,10 @@ class TrajectoryView {
     d["velocities"] = rows_of(std::move(f.velocity), std::size_t(n), dim);
     d["images"] = rows_of(std::move(f.image), std::size_t(n), dim);
     if (!f.angular_velocity.empty()) d["angular_velocities"] = rows_of(std::move(f.angular_velocity), std::size_t(n), 3);
-    if (traj_.aggregates()) {
-      d["ids"] = to_numpy(std::move(f.id), {n});
-      d["masses"] = to_numpy(std::move(f.mass), {n});
-      d["diameters"] = to_numpy(std::move(f.diameter), {n});
-    }
-    if (!f.species.empty()) {  // a mixture: each particle's species, and its mass and diameter from it
-      d["species"] = to_numpy(std::move(f.species), {n});
+    if (traj_.aggregates()) d["ids"] = to_numpy(std::move(f.id), {n});
+    // A mixture: each particle's species, and its mass and diameter from it.
+    if (!f.species.empty()) d["species"] = to_numpy(std::move(f.species), {n});
+    if (traj_.aggregates() || d.contains("species")) {
       d["masses"] = to_numpy(std::move(f.mass), {n});
       d["diameters"] = to_numpy(std::move(f.diameter), {n});
     }

@@ -190,7 +190,11 @@ std::string shape_rule(RowCount rows, const std::vector<Extent>& row, std::optio
   s.append(row_count_symbol(rows));
   for (const Extent& e : row) {
     s.append(", ");
-    s.append(e.particles ? "N" : e.species ? "S" : !e.dimension ? std::to_string(e.size) : d ? std::to_string(*d) : "d");
+    s.append(e.particles  ? "N"
+             : e.species  ? "S"
+             : !e.dimension ? std::to_string(e.size)
+             : d          ? std::to_string(*d)
+                          : "d");
   }
   s.append(row.empty() ? ",)" : ")");
   return s;

@@ -191,7 +191,8 @@ H5mdWriter H5mdWriter::reopen(const std::string& path, const std::string* new_sc
     // A writer killed while it wrote a frame leaves chunks past the recorded
     // end of allocation; dropping them (below) would fail, or the file's close
     // would. One chunk more than the file's size covers any half-written one.
-    h5::extend_allocation_past_file_end(w.file_, largest_frame_chunk(f, w.layout_, w.rough_, w.species_ > 0) + (hsize_t{1} << 16));
+    h5::extend_allocation_past_file_end(
+        w.file_, largest_frame_chunk(f, w.layout_, w.rough_, w.species_ > 0) + (hsize_t{1} << 16));
     w.drop_interrupted_burst();
   });
   fault_point(FaultPoint::kResumeReopened);

@@ -263,19 +263,19 @@ Observables Engine<Rule, D>::observables() const {
 // compensation (0 for a species without particles).
 template <class Rule, int D>
 std::vector<double> Engine<Rule, D>::species_energy() const {
-  if constexpr (!Rule::kMixture) return {};
-  std::size_t species = 0;
-  if constexpr (Rule::kMixture) species = std::size_t(rule_.species());
-  std::vector<CompensatedSum> energy(species);
-  std::vector<std::int64_t> count(energy.size(), 0);
-  for (const std::int32_t i : slot_of_id()) {
-    const std::size_t k = species_[std::size_t(i)];
-    energy[k].add(0.5 * mass_of(i) * dot(m_[std::size_t(i)].v, m_[std::size_t(i)].v));
-    ++count[k];
+  std::vector<double> out;
+  if constexpr (Rule::kMixture) {
+    std::vector<CompensatedSum> energy(std::size_t(rule_.species()));
+    std::vector<std::int64_t> count(energy.size(), 0);
+    for (const std::int32_t i : slot_of_id()) {
+      const std::size_t k = species_[std::size_t(i)];
+      energy[k].add(0.5 * mass_of(i) * dot(m_[std::size_t(i)].v, m_[std::size_t(i)].v));
+      ++count[k];
+    }
+    out.assign(energy.size(), 0.0);
+    for (std::size_t k = 0; k < out.size(); ++k)
+      if (count[k] > 0) out[k] = energy[k].value() / double(count[k]);
   }
-  std::vector<double> out(energy.size(), 0.0);
-  for (std::size_t k = 0; k < out.size(); ++k)
-    if (count[k] > 0) out[k] = energy[k].value() / double(count[k]);
   return out;
 }
 

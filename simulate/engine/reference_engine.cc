@@ -39,10 +39,10 @@ std::vector<CollisionRecord> reference_collisions(Particles p, const Rule& rule,
                                                   std::int64_t max_collisions) {
   const int n = int(p.size());
   if constexpr (Rule::kRough) p.omega.resize(p.size());  // spins not given: at rest
-  // A mixture's pair touches at the mean of the two diameters; unit spheres at 1.
+  // A mixture's pair touches at the sum of its radii (the mean of its diameters); unit spheres at 1.
   const auto contact2 = [&](int i, int j) {
     if constexpr (Rule::kMixture) {
-      const double sigma = 0.5 * (2.0 * rule.radius[p.species[i]] + 2.0 * rule.radius[p.species[j]]);
+      const double sigma = rule.radius[p.species[i]] + rule.radius[p.species[j]];
       return sigma * sigma;
     }
     return 1.0;

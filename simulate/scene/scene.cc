@@ -810,8 +810,7 @@ void check_mixture(const Scene& s, const KeyValues& kv) {
                      "table); start a mixture from \"random\"");
 }
 
-// Every species gets a particle, and placement by plain trials stays below
-// saturation (the largest-first trials of simulate/start/rsa_mixture.h).
+// Every species gets a particle.
 void check_species_counts(const Scene& s) {
   const auto counts = s.species_counts();
   for (std::size_t k = 0; k < counts.size(); ++k)

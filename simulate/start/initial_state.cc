@@ -137,7 +137,8 @@ std::vector<Vec3> equilibrated_in(Geometry g, Particles p, const Rule& rule, dou
 std::vector<std::uint8_t> species_of_particles(const Scene& s) {
   std::vector<std::uint8_t> species;
   const auto counts = s.species_counts();
-  for (std::size_t k = 0; k < counts.size(); ++k) species.insert(species.end(), std::size_t(counts[k]), std::uint8_t(k));
+  for (std::size_t k = 0; k < counts.size(); ++k)
+    species.insert(species.end(), std::size_t(counts[k]), std::uint8_t(k));
   return species;
 }
 

@@ -156,8 +156,9 @@ TEST_F(MixtureRun, TheEnergyTableHasEachSpeciesTemperature) {
 // mixture of the two is no Gaussian, its kappa far from 0).
 TEST_F(MixtureRun, TheVelocityToolTakesOneSpecies) {
   const auto series = [&](const std::string& option) {
-    const auto r = run_command(test::bin("coolgas-velocity") + " --series --time 0 --tail-from 1 --min-count 3 " + option +
-                               " " + whole());  // a tail fit (its beta) even for 400 particles
+    // --tail-from 1 --min-count 3: a tail fit (its beta) even for 400 particles
+    const auto r = run_command(test::bin("coolgas-velocity") + " --series --time 0 --tail-from 1 --min-count 3 " +
+                               option + " " + whole());
     EXPECT_EQ(r.exit_code, 0) << r.err;
     std::istringstream in(r.out);
     return read_table(in, "velocity");
