@@ -276,6 +276,11 @@ std::string scene_keys_help() {
     if (!k.inits.empty()) facts += "; init " + init_names(k);
     out += std::string("  ") + k.key + " (" + facts + "): " + k.help + "\n";
   }
+  // Not a key row: an array of tables (parse_species).
+  out += "  [[species]] (array of tables, optional; model elastic, inelastic): a mixture of sizes and masses, one "
+         "table per species (at most " + std::to_string(kMaxSpecies) + "): fraction (its share of N; the fractions "
+         "add up to 1), diameter, mass (default diameter^d), in the units of the equal particles (diameter 1, mass "
+         "1); absent: equal unit particles\n";
   return out;
 }
 

@@ -140,6 +140,8 @@ TEST(Scene, MixturesFromSpeciesTables) {
   EXPECT_EQ(back.species.size(), 2u);
   EXPECT_NE(physics_toml(m).find("[[species]]"), std::string::npos);
   EXPECT_EQ(parse_scene(base, "s.toml", {}).to_toml().find("species"), std::string::npos);
+  EXPECT_NE(scene_keys_help().find("[[species]] (array of tables, optional; model elastic, inelastic)"),
+            std::string::npos);
   // Counts by largest remainders: 1/3 each of 1000 is 334, 333, 333.
   const std::string thirds = "[[species]]\nfraction = 0.3333333333333333\ndiameter = 1\n[[species]]\n"
                              "fraction = 0.3333333333333333\ndiameter = 1.2\n[[species]]\n"
