@@ -129,6 +129,38 @@ class Geometry {
     const double g = contact_value(phi);
     return d_ == 1 ? 2.0 * n * g * std::sqrt(T / M_PI) : (d_ == 3 ? 4.0 : 2.0) * n * g * std::sqrt(M_PI * T);
   }
+  // ---- Mixtures (the scene's [[species]]).
+  // The pair correlation at contact of particles of diameters a and b in a
+  // mixture at covered fraction phi, xi = Σ_k phi_k / σ_k (phi_k the
+  // fraction species k covers): for spheres Boublík's and Mansoori,
+  // Carnahan, Starling & Leland's (J. Chem. Phys. 53, 471 (1970); 54, 1523
+  // (1971)) 1/(1 − φ) + 3 ξ h/(1 − φ)² + 2 ξ² h²/(1 − φ)³, h = ab/(a + b),
+  // whose equal-sphere limit (ξ = φ/σ) is Carnahan–Starling; for disks
+  // Jenkins & Mancini's (J. Appl. Mech. 54, 27 (1987)) 1/(1 − φ) +
+  // (9/8) ξ h/(1 − φ)², whose limit is Henderson's; for rods the Tonks
+  // gas's exact 1/(1 − φ) (the gap beside a rod does not depend on the
+  // species of either).
+  double mixture_contact_value(double phi, double xi, double a, double b) const {
+    const double h = a * b / (a + b), e = 1.0 - phi;
+    if (d_ == 3) return 1.0 / e + 3.0 * xi * h / (e * e) + 2.0 * xi * xi * h * h / (e * e * e);
+    if (d_ == 2) return 1.0 / e + 9.0 / 8.0 * xi * h / (e * e);
+    return 1.0 / e;
+  }
+  // Whose mixture contact value it is, for messages.
+  const char* mixture_contact_value_name() const { return pick("Tonks (exact)", "Jenkins-Mancini", "BMCSL"); }
+  // Enskog's rate of collisions of one particle of species i with those of
+  // species j (number density n_j, contact value g_ij, contact distance
+  // σ_ij) whose Maxwellians are at temperatures T_i, T_j, given
+  // w = T_i/m_i + T_j/m_j, the variance of their relative velocity per
+  // component: the equal-particle formula of enskog_rate with
+  // σ^(d−1) → σ_ij^(d−1) and T/m → w/2, that is 4 n g σ² √(π w/2) for
+  // spheres, 2 n g σ √(π w/2) for disks, 2 n g √(w/(2π)) for rods (at
+  // equal temperatures w/2 = T/(2 μ_ij), μ_ij the reduced mass).
+  double enskog_pair_rate(double n_j, double g_ij, double sigma_ij, double w) const {
+    const double t = 0.5 * w;
+    if (d_ == 1) return 2.0 * n_j * g_ij * std::sqrt(t / M_PI);
+    return (d_ == 3 ? 4.0 * sigma_ij * sigma_ij : 2.0 * sigma_ij) * n_j * g_ij * std::sqrt(M_PI * t);
+  }
   // The temperature at which ω = 1, i.e. the mean collision time is the
   // time unit: 1/(π (4 n g)²) in 3D, 1/(π (2 n g)²) in 2D, π/(2 n g)² in 1D.
   double unit_time_temperature(double n, double phi) const {

@@ -555,6 +555,13 @@ void write_attr(hid_t obj, const std::string& name, const std::vector<std::int32
   check_status(H5Awrite(a.id(), H5T_NATIVE_INT32, values.data()), "write attribute '" + name + "'");
 }
 
+void write_attr(hid_t obj, const std::string& name, const std::vector<double>& values) {
+  const hsize_t n = values.size();
+  Handle space(check(H5Screate_simple(1, &n, nullptr), "float array space"));
+  Handle a = replace_attr(obj, name, H5T_IEEE_F64LE, space.id());
+  check_status(H5Awrite(a.id(), H5T_NATIVE_DOUBLE, values.data()), "write attribute '" + name + "'");
+}
+
 bool has_attr(hid_t obj, const std::string& name) {
   const htri_t found = H5Aexists(obj, name.c_str());
   if (found < 0) fail_reading(obj, "look up " + attr_text(obj, name));  // a damaged attribute table is not "missing"
@@ -683,6 +690,19 @@ std::vector<std::string> read_attr_strings(hid_t obj, const std::string& name) {
     out.push_back(s.erase(s.find_last_not_of('\0') + 1));
   }
   return out;
+}
+
+std::vector<double> read_attr_doubles(hid_t obj, const std::string& name, std::size_t most) {
+  const OpenAttr a = open_attr_typed(obj, name);
+  Handle space(check_reading(H5Aget_space(a.attr.id()), obj, "read the shape of " + attr_text(obj, name)));
+  const bool number = a.cls == H5T_INTEGER || a.cls == H5T_FLOAT;
+  if (!number || H5Sget_simple_extent_ndims(space.id()) != 1 || a.count < 1 || std::size_t(a.count) > most)
+    throw InputError("'" + file_of(obj) + "': " + attr_text(obj, name) + " is " +
+                     (number ? numbers_text(a, obj, name) : other_text(a, obj, name)) + "; expected an array of 1 to " +
+                     std::to_string(most) + " numbers");
+  std::vector<double> v(static_cast<std::size_t>(a.count));
+  if (H5Aread(a.attr.id(), H5T_NATIVE_DOUBLE, v.data()) < 0) fail_reading(obj, "read " + attr_text(obj, name));
+  return v;
 }
 
 bool is_group(hid_t loc, const std::string& path) {

@@ -136,6 +136,7 @@ void write_attr(hid_t obj, const std::string& name, const std::vector<std::strin
 void write_attr(hid_t obj, const std::string& name, double value);
 void write_attr(hid_t obj, const std::string& name, std::int64_t value);
 void write_attr(hid_t obj, const std::string& name, const std::vector<std::int32_t>& values);
+void write_attr(hid_t obj, const std::string& name, const std::vector<double>& values);
 bool has_attr(hid_t obj, const std::string& name);  // Damaged if the attribute table cannot be read
 H5T_class_t attr_class(hid_t obj, const std::string& name);  // H5T_INTEGER, H5T_FLOAT, H5T_STRING, ...
 // One value: a scalar or a one-element array. An array of more, or a value
@@ -144,6 +145,10 @@ H5T_class_t attr_class(hid_t obj, const std::string& name);  // H5T_INTEGER, H5T
 std::string read_attr_string(hid_t obj, const std::string& name);
 double read_attr_double(hid_t obj, const std::string& name);  // an integer or a float
 std::int64_t read_attr_int(hid_t obj, const std::string& name);
+// A one-dimensional array of 1 to `most` numbers (integers or floats); any
+// other shape or kind, or more values, is an InputError naming the file,
+// the object, the attribute and what it holds.
+std::vector<double> read_attr_doubles(hid_t obj, const std::string& name, std::size_t most);
 // A string or an array of strings, variable or fixed length (as other programs write them).
 std::vector<std::string> read_attr_strings(hid_t obj, const std::string& name);
 // The object at `path` is a group (an H5MD element that varies in time), not a dataset.

@@ -58,9 +58,11 @@ class Checker {
     } catch (const InputError&) {
       d_ = 3;  // the attribute check reports any other value
     }
+    read_species();
     for (const AttributeSpec& a : profile_.attributes) check_attribute(a);
     check_driving();
     check_rough();
+    check_mixture();
     read_box_parameters();
     for (const ElementSpec& e : profile_.elements) guarded(e.path, [&] { check_element(e); });
     check_shared_rows(RowCount::kFrames, profile_.frames_from);
@@ -142,6 +144,56 @@ class Checker {
       problem(group, "attribute 'inertia' is " + inertia.text + "; a moment of inertia per m a^2 is in (0, 1]");
   }
 
+  // A mixture's species table (run_parameters.h): S, the length of
+  // species_fraction, read before the attribute rows of that length are
+  // checked (0: no table, or one unreadable, which check_mixture reports).
+  void read_species() {
+    species_ = species_array("species_fraction").size();
+  }
+  std::vector<double> species_array(const std::string& name) {
+    const std::string group(layout::kParameters);
+    if (kind_of(file_, group) != ObjectKind::kGroup) return {};
+    try {
+      h5::Handle g = h5::open_group(file_, group);
+      if (!h5::has_attr(g.id(), name)) return {};
+      return h5::read_attr_doubles(g.id(), name, kMaxFileSpecies);
+    } catch (const std::exception&) {
+      return {};
+    }
+  }
+
+  // A mixture writes its three species arrays together, of one length, in a
+  // file of the version that added them: fractions in (0, 1] adding up to 1,
+  // diameters and masses finite and above 0; and each particle's species
+  // and each species' energy (check_element). Equal particles none of these.
+  void check_mixture() {
+    const std::string group(layout::kParameters);
+    const char* const names[] = {"species_fraction", "species_diameter", "species_mass"};
+    std::vector<double> table[3];
+    int present = 0;
+    for (int k = 0; k < 3; ++k) present += !(table[k] = species_array(names[k])).empty();
+    if (present == 0) return;
+    if (present < 3 || table[1].size() != species_ || table[2].size() != species_) {
+      problem(group, "a mixture's species_fraction, species_diameter and species_mass are written together, one "
+                     "value per species each");
+      return;
+    }
+    if (file_version_ < kMixtureSchemaVersion)
+      problem(group, "a mixture's attributes in a file of schema version " + std::to_string(file_version_) +
+                         "; they came with version " + std::to_string(kMixtureSchemaVersion));
+    double sum = 0;
+    for (std::size_t k = 0; k < species_; ++k) {
+      sum += table[0][k];
+      if (!(table[0][k] > 0 && table[0][k] <= 1 && table[1][k] > 0 && std::isfinite(table[1][k]) &&
+            table[2][k] > 0 && std::isfinite(table[2][k])))
+        problem(group, "species " + std::to_string(k) + " has fraction " + number_text(table[0][k]) + ", diameter " +
+                           number_text(table[1][k]) + ", mass " + number_text(table[2][k]) +
+                           "; a fraction is in (0, 1], a diameter and a mass finite and above 0");
+    }
+    if (!(std::fabs(sum - 1.0) <= 1e-9))
+      problem(group, "the species fractions add up to " + number_text(sum) + ", not 1");
+  }
+
   // The model decides which per-model rows are required; an unknown one is a problem of its own.
   void read_model() {
     AttributeFound m;
@@ -221,6 +273,7 @@ class Checker {
       return;
     }
     const std::vector<hsize_t> want_dims = a.per_dimension ? std::vector<hsize_t>{hsize_t(d_)}
+                                           : a.per_species ? std::vector<hsize_t>{hsize_t(species_)}
                                            : a.length      ? std::vector<hsize_t>{*a.length}
                                                            : std::vector<hsize_t>{};
     std::string equals(a.equals);
@@ -299,7 +352,7 @@ class Checker {
     if (dims.size() != row.size() + 1) return false;
     for (std::size_t k = 0; k < row.size(); ++k) {
       const Extent& e = row[k];
-      const hsize_t want = e.dimension ? hsize_t(d_) : e.size;
+      const hsize_t want = e.dimension ? hsize_t(d_) : e.species ? hsize_t(species_) : e.size;
       if (e.particles ? (N_ && dims[k + 1] != static_cast<hsize_t>(*N_)) : dims[k + 1] != want) return false;
     }
     return true;
@@ -308,11 +361,13 @@ class Checker {
   void check_element(const ElementSpec& e) {
     const ObjectKind kind = kind_of(file_, e.path);
     if (kind == ObjectKind::kMissing) {
-      if (required(e.presence, e.since, model_has(e)) || (e.rough_only && rough_))
+      if (required(e.presence, e.since, model_has(e)) || (e.rough_only && rough_) || (e.mixture_only && species_ > 0))
         problem(e.path, "missing element (" + std::string(e.meaning) + ")");
       return;
     }
     if (e.rough_only && !rough_) return problem(e.path, "in a file of smooth particles (no /parameters/beta)");
+    if (e.mixture_only && species_ == 0)
+      return problem(e.path, "in a file of equal particles (no /parameters/species_fraction)");
     if (kind == ObjectKind::kDamaged) return problem(e.path, kDamagedText);
     if (kind != ObjectKind::kGroup) return problem(e.path, "is not a group (an H5MD element holds step, time, value)");
     auto step = check_series(path_of(e.path, "step"), DataType::kInt64, e.rows, {});
@@ -352,6 +407,9 @@ class Checker {
         break;
       case ValueRule::kBoxMatrix:
         if (L_) check_found(path, check_box_matrix(value, *L_, L_from, block));
+        break;
+      case ValueRule::kSpeciesIndex:
+        check_found(path, check_indices_below(value, species_, "the species of /parameters/species_fraction", block));
         break;
     }
   }
@@ -436,6 +494,7 @@ class Checker {
   std::map<RowCount, GoodElement> reference_;  // the element defining F or K
   std::optional<std::string> model_;           // /parameters/model, when readable
   bool rough_ = false;                         // /parameters/beta present: rough particles
+  std::size_t species_ = 0;                    // a mixture's species (the length of /parameters/species_fraction)
   std::map<RowCount, hsize_t> complete_;       // rows of complete dumps, when /restart/time is usable
   bool interrupted_ = false;                   // rows of an interrupted burst follow them
 };

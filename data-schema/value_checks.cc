@@ -126,6 +126,18 @@ Finding check_inside_box(hid_t dataset, double L, std::string_view L_source, con
   return bad.result();
 }
 
+Finding check_indices_below(hid_t dataset, std::size_t count, std::string_view table, const Scan& scan) {
+  const auto dims = h5::shape(dataset);
+  Offences bad;
+  for_each_block(dataset, scan, [&](hsize_t first, std::span<const double> v) {
+    for (std::size_t i = 0; i < v.size(); ++i)
+      if (!(v[i] >= 0 && v[i] < double(count)))
+        bad.add([&] { return at(dims, first + i, v[i]) + " is not one of the " + std::to_string(count) + " " +
+                             std::string(table); });
+  });
+  return bad.result();
+}
+
 namespace {
 
 // "(L)", "diag(L, L)" or "diag(L, L, L)": the box matrix of a d-dimensional box.

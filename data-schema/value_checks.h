@@ -42,6 +42,8 @@ Finding check_finite(hid_t dataset, const Scan& scan);
 Finding check_inside_box(hid_t dataset, double L, std::string_view L_source, const Scan& scan);
 // Every row of a (R, 3, 3) dataset equals diag(L, L, L).
 Finding check_box_matrix(hid_t dataset, double L, std::string_view L_source, const Scan& scan);
+// Integers 0 <= x < count (indices into a table of `count` rows, named by `table`).
+Finding check_indices_below(hid_t dataset, std::size_t count, std::string_view table, const Scan& scan);
 // Values never decrease along a (R,) dataset.
 Finding check_nondecreasing(hid_t dataset, const Scan& scan);
 // Two (R,) datasets of equal length hold the same numbers.

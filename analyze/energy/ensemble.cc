@@ -69,10 +69,37 @@ TwoTemperatures temperatures_of(const std::vector<double>& E_tr, const std::vect
   return {a.mean, a.err, b.mean, b.err};
 }
 
+// A mixture's species temperatures from each run's energies at one time.
+std::vector<std::pair<double, double>> species_temperatures_of(const std::vector<std::vector<double>>& E, Geometry g) {
+  std::vector<std::pair<double, double>> out;
+  for (const std::vector<double>& runs : E) {
+    std::vector<double> T(runs.size());
+    for (std::size_t k = 0; k < T.size(); ++k) T[k] = runs[k] / g.energy_per_temperature();
+    const MeanErr m = mean_and_standard_error(T);
+    out.emplace_back(m.mean, m.err);
+  }
+  return out;
+}
+
+// A mixture's species energies, one series per species, at the kinetic energy's times.
+std::vector<ObservableSeries> species_series(const std::string& path, const EnergyRun& run) {
+  const ObservableRows rows = read_observable_rows(path, layout::kSpeciesKineticEnergy);
+  if (rows.time != run.energy.time || rows.per_row != run.info.params.species_fraction.size())
+    throw InputError(path + ": /observables/species_kinetic_energy is not one value per species at the kinetic "
+                            "energy's times");
+  std::vector<ObservableSeries> out(rows.per_row);
+  for (std::size_t s = 0; s < rows.per_row; ++s) {
+    out[s].time = rows.time;
+    for (std::size_t r = 0; r < rows.time.size(); ++r) out[s].value.push_back(rows.value[r * rows.per_row + s]);
+    require_positive(path, out[s], ("species " + std::to_string(s) + " kinetic energy").c_str());
+  }
+  return out;
+}
+
 }  // namespace
 
 EnergyRun load_energy_run(const std::string& path) {
-  EnergyRun run{read_run_info(path), read_observable(path, layout::kKineticEnergy), std::nullopt};
+  EnergyRun run{read_run_info(path), read_observable(path, layout::kKineticEnergy), std::nullopt, {}};
   require_positive(path, run.energy, "kinetic energy");
   if (is_rough(run.info.params.collision)) {
     run.rotational = read_observable(path, layout::kRotationalEnergy);
@@ -80,6 +107,7 @@ EnergyRun load_energy_run(const std::string& path) {
     if (run.rotational->time != run.energy.time)
       throw InputError(path + ": /observables/rotational_energy is not recorded at the kinetic energy's times");
   }
+  if (is_mixture(run.info.params)) run.species = species_series(path, run);
   return run;
 }
 
@@ -110,28 +138,38 @@ std::vector<EnergyRow> ensemble_energy(const std::vector<EnergyRun>& runs, int p
   const bool all_have_zero = std::all_of(runs.begin(), runs.end(), [](const EnergyRun& r) { return r.energy.time[0] == 0; });
   std::vector<double> E(runs.size()), ratio(runs.size()), rot(runs.size());
   const bool rough = runs[0].rotational.has_value();  // the runs share their physics
+  const std::size_t species = runs[0].species.size();
+  std::vector<std::vector<double>> E_s(species, std::vector<double>(runs.size()));  // [species][run]
   const Geometry g(runs[0].info.dimension);
   if (all_have_zero) {
     for (std::size_t k = 0; k < runs.size(); ++k) {
       E[k] = runs[k].energy.value[0], ratio[k] = 1;
       if (rough) rot[k] = runs[k].rotational->value[0];
+      for (std::size_t s = 0; s < species; ++s) E_s[s][k] = runs[k].species[s].value[0];
     }
     rows.push_back(average_row(0, E, ratio));
     if (rough) rows.back().temperatures = temperatures_of(E, rot, g);
+    rows.back().species_temperatures = species_temperatures_of(E_s, g);
   }
   std::vector<ObservableSeries> positive, positive_rot;
+  std::vector<std::vector<ObservableSeries>> positive_species;  // [run][species]
   for (const auto& r : runs) {
     positive.push_back(positive_part(r.energy));
     if (rough) positive_rot.push_back(positive_part(*r.rotational));
+    positive_species.emplace_back();
+    for (const ObservableSeries& s : r.species) positive_species.back().push_back(positive_part(s));
   }
   for (double t : log_time_grid(t_lo, t_hi, per_decade)) {
     for (std::size_t k = 0; k < runs.size(); ++k) {
       E[k] = interpolate_loglog(positive[k].time, positive[k].value, t);
       ratio[k] = E[k] / runs[k].energy.value[0];
       if (rough) rot[k] = interpolate_loglog(positive_rot[k].time, positive_rot[k].value, t);
+      for (std::size_t s = 0; s < species; ++s)
+        E_s[s][k] = interpolate_loglog(positive_species[k][s].time, positive_species[k][s].value, t);
     }
     rows.push_back(average_row(t, E, ratio));
     if (rough) rows.back().temperatures = temperatures_of(E, rot, g);
+    rows.back().species_temperatures = species_temperatures_of(E_s, g);
   }
   return rows;
 }

@@ -3,6 +3,7 @@
 #pragma once
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/trajectory/run_info.h"
@@ -14,6 +15,7 @@ struct EnergyRun {
   RunInfo info;
   ObservableSeries energy;  // /observables/kinetic_energy
   std::optional<ObservableSeries> rotational;  // /observables/rotational_energy: rough particles only
+  std::vector<ObservableSeries> species;       // /observables/species_kinetic_energy by species: mixtures only
 };
 
 // A rough run's two temperatures per axis, T_tr = 2 E_tr/d and T_rot = 2 E_rot/d_r:
@@ -29,6 +31,8 @@ struct EnergyRow {
   double E_over_E0 = 0, E_over_E0_err = 0;  // mean of each run's E(t)/E(first row)
   int runs = 0;
   std::optional<TwoTemperatures> temperatures;  // rough runs only
+  // A mixture's temperature per axis of each species, T_s = 2 E_s/d: mean over runs and its standard error.
+  std::vector<std::pair<double, double>> species_temperatures;
 };
 
 // Reads a trajectory; rejects non-positive energies (log-log interpolation needs E > 0).

@@ -51,10 +51,14 @@ void write_energy_table(const EnergyOptions& options, std::ostream& out) {
   // Rough particles add both temperatures per axis (a smooth run's table is as before).
   std::vector<std::string> columns = {"t", "E", "E_err", "E_over_E0", "E_over_E0_err", "runs"};
   if (runs[0].rotational) columns.insert(columns.end(), {"T_tr", "T_tr_err", "T_rot", "T_rot_err"});
+  // A mixture adds each species' temperature per axis, by its index in the file (0: the first [[species]]).
+  for (std::size_t s = 0; s < runs[0].species.size(); ++s)
+    columns.insert(columns.end(), {"T_species_" + std::to_string(s), "T_species_" + std::to_string(s) + "_err"});
   TsvWriter w(out, "coolgas-energy", energy_provenance(runs, options.per_decade), columns);
   for (const auto& r : rows) {
     std::vector<double> row = {r.t, r.E, r.E_err, r.E_over_E0, r.E_over_E0_err, double(r.runs)};
     if (const auto& T = r.temperatures) row.insert(row.end(), {T->T_tr, T->T_tr_err, T->T_rot, T->T_rot_err});
+    for (const auto& [T, err] : r.species_temperatures) row.insert(row.end(), {T, err});
     w.row(row);
   }
 }

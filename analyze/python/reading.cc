@@ -37,6 +37,8 @@ py::dict parameters(const std::string& path) {
             if (it != p.collision.end()) d[name] = it->second;
           } else if constexpr (std::is_same_v<decltype(member), std::optional<double> RunParameters::*>) {
             if (p.*member) d[name] = *(p.*member);  // present only in the runs that have it (driving)
+          } else if constexpr (std::is_same_v<decltype(member), std::vector<double> RunParameters::*>) {
+            if (!(p.*member).empty()) d[name] = p.*member;  // a mixture's species table: a list per species
           } else {
             d[name] = p.*member;
           }
@@ -63,7 +65,7 @@ bool is_coolgas_file(const std::string& path) {
 class TrajectoryView {
  public:
   explicit TrajectoryView(const std::string& path)
-      : traj_(path, kPosition | kVelocity | kImage | kDiameter | kAngularVelocity | kAnyDimension) {}
+      : traj_(path, kPosition | kVelocity | kImage | kMass | kDiameter | kAngularVelocity | kSpecies | kAnyDimension) {}
 
   py::dict read(std::size_t dump) const {
     if (dump >= traj_.dump_times().size())
@@ -82,8 +84,10 @@ class TrajectoryView {
     d["velocities"] = rows_of(std::move(f.velocity), std::size_t(n), dim);
     d["images"] = rows_of(std::move(f.image), std::size_t(n), dim);
     if (!f.angular_velocity.empty()) d["angular_velocities"] = rows_of(std::move(f.angular_velocity), std::size_t(n), 3);
-    if (traj_.aggregates()) {
-      d["ids"] = to_numpy(std::move(f.id), {n});
+    if (traj_.aggregates()) d["ids"] = to_numpy(std::move(f.id), {n});
+    // A mixture: each particle's species, and its mass and diameter from it.
+    if (!f.species.empty()) d["species"] = to_numpy(std::move(f.species), {n});
+    if (traj_.aggregates() || d.contains("species")) {
       d["masses"] = to_numpy(std::move(f.mass), {n});
       d["diameters"] = to_numpy(std::move(f.diameter), {n});
     }

@@ -25,7 +25,9 @@ int main(int argc, char** argv) {
         "A 1D file (rods): the one component, v_rms = sqrt(<vx^2>), Phi = count/(N dy), and\n"
         "kappa = <vx^4>/<vx^2>^2 - 3 (the 1D Maxwellian's: the Gaussian's excess kurtosis).\n"
         "--spins: the same of a rough run's angular velocities (omega in place of v): the 3 axes of a sphere,\n"
-        "the one (z) of a disk, kappa against the Maxwellian of that many components.\n\n"
+        "the one (z) of a disk, kappa against the Maxwellian of that many components.\n"
+        "--species K: the same of a mixture's species K alone (its index in the file: 0 for the first\n"
+        "[[species]] table); v_rms is then that species' own.\n\n"
         "Tables (TSV on stdout):\n"
         "  default   one block per dump: t [1/omega0], y, Phi, Phi_err (Poisson), minus_ln_Phi = -ln Phi;\n"
         "            empty bins omitted; each block starts '# t = ...; v_rms = ...; kappa = ...; beta = ...'\n"
@@ -36,6 +38,7 @@ int main(int argc, char** argv) {
     auto* tail_flag = app.add_flag("--tail", tail, "write the tail points and the fit instead of Phi");
     app.add_flag("--series", series, "one row per dump: v_rms, kappa, beta")->excludes(tail_flag);
     app.add_flag("--spins", o.spins, "the statistics of the angular velocities (rough runs) instead of the velocities");
+    app.add_option("--species", o.species, "only the particles of this species of a mixture (0 for the first)");
     app.add_option("--bins", o.bins, "histogram bins over [-ymax, ymax] (even)")->capture_default_str();
     app.add_option("--ymax", o.ymax, "histogram range in y = v_alpha/v_rms [dimensionless]")->capture_default_str();
     app.add_option("--tail-from", o.tail_from, "fit beta over y >= this [dimensionless]")->capture_default_str();

@@ -3,6 +3,7 @@
 // fitted exponent β, and the kurtosis κ.
 #pragma once
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,9 @@ struct VelocityOptions {
   // --spins: the same statistics of a rough run's angular velocities, over
   // their d_r spinning axes (3 for spheres, z alone for disks) instead of the d velocity components.
   bool spins = false;
+  // --species K: only the particles of a mixture's species K (its index in
+  // the file: 0 for the first [[species]] table); absent: every particle.
+  std::optional<int> species;
 };
 
 void run_velocity(const VelocityOptions& opt, std::ostream& out);

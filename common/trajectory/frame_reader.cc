@@ -34,6 +34,7 @@ constexpr ElementSpec kElements[] = {
     {layout::kMass, 1, Field::kMass},
     {layout::kDiameter, 1, Field::kDiameter},
     {layout::kAngularVelocity, 3, Field::kAngularVelocity, false},
+    {layout::kSpecies, 1, Field::kSpecies},
 };
 
 std::string value_of(const ElementSpec& e) { return layout::value_of(e.path); }
@@ -58,8 +59,21 @@ Trajectory::Trajectory(const std::string& path, unsigned fields) : path_(path), 
     throw InputError(path + ": a " + std::to_string(dimension_) +
                      "D trajectory (box/dimension = " + std::to_string(dimension_) +
                      "); this tool reads 3D trajectories only for now");
+  const bool mixture = !aggregates_ && h5::exists(file_.id(), std::string(layout::kSpecies));
+  if (mixture) {
+    const RunParameters run = read_file_parameters(file_.id(), path);
+    species_count_ = run.species_fraction.size();
+    if (fields_ & (Field::kMass | Field::kDiameter)) {
+      species_mass_ = run.species_mass;
+      species_diameter_ = run.species_diameter;
+      fields_ |= Field::kSpecies;
+    }
+  }
+  if (!mixture) fields_ &= ~unsigned(Field::kSpecies);  // equal particles' files have no species
   if (aggregates_) fields_ |= Field::kId | Field::kMass;
-  else fields_ &= ~unsigned(Field::kDiameter);  // gas files have unit spheres and no diameter element
+  // A gas file's masses and diameters: none stored (unit spheres), or a mixture's from its species.
+  const unsigned from_species = fields_ & (Field::kMass | Field::kDiameter);
+  if (!aggregates_) fields_ &= ~unsigned(Field::kDiameter | Field::kMass);
   if (!h5::exists(file_.id(), std::string(layout::kAngularVelocity)))
     fields_ &= ~unsigned(Field::kAngularVelocity);  // smooth particles' files have no spins
   std::size_t frames = SIZE_MAX;
@@ -82,6 +96,7 @@ Trajectory::Trajectory(const std::string& path, unsigned fields) : path_(path), 
   if (h5::exists(file_.id(), std::string(layout::kRestartTime)))
     frames = std::min<std::size_t>(frames, layout::complete_dumps(file_.id()));
   if (frames == 0) throw InputError(path_ + ": the trajectory holds no dumps");
+  if (!aggregates_ && mixture) filled_ = from_species;  // filled in read(), not read as elements
   times_.resize(frames);
   steps_.resize(frames);
   // Every tool writes the dump's time in its rows: a NaN there is a row of nan
@@ -230,11 +245,31 @@ void Trajectory::read(std::size_t dump, Frame& frame) const {
         h5::read_rows(value.id(), h5::Type::kFloat64, dump, 1, frame.angular_velocity.data());
         check_finite(frame.angular_velocity, where + std::string(e.path));
         break;
+      case Field::kSpecies:
+        frame.species.resize(n);
+        h5::read_rows(value.id(), h5::Type::kInt32, dump, 1, frame.species.data());
+        break;
       case Field::kAnyDimension:  // not an element (it is never in kElements)
         break;
     }
   }
   if (aggregates_) keep_present(frame);
+  if (filled_) fill_from_species(frame, where);
+}
+
+// A mixture's masses and diameters, by each particle's species.
+void Trajectory::fill_from_species(Frame& frame, const std::string& where) const {
+  const std::size_t n = frame.species.size();
+  if (filled_ & Field::kMass) frame.mass.resize(n);
+  if (filled_ & Field::kDiameter) frame.diameter.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::int32_t k = frame.species[i];
+    if (k < 0 || std::size_t(k) >= species_mass_.size() || species_diameter_.size() != species_mass_.size())
+      throw InputError(where + std::string(layout::kSpecies) + " gives particle " + std::to_string(i) + " species " +
+                       std::to_string(k) + "; the table of /parameters has " + std::to_string(species_mass_.size()));
+    if (filled_ & Field::kMass) frame.mass[i] = species_mass_[std::size_t(k)];
+    if (filled_ & Field::kDiameter) frame.diameter[i] = species_diameter_[std::size_t(k)];
+  }
 }
 
 // Keeps the slots whose id is not the fill value -1: one entry per aggregate.

@@ -9,6 +9,10 @@
 // To read another per-particle element, add a Field bit, a buffer in Frame
 // and a row in the element table of frame_reader.cc.
 //
+// A mixture's files (schema version 6) hold each particle's species; a
+// Trajectory of such a file opened for kMass or kDiameter reads them and
+// fills each particle's mass and diameter from the species table.
+//
 // Ballistic aggregation files (model "aggregation", schema version 2 or 3) keep N
 // slots per dump and mark empty ones with id -1 (H5MD's convention for a
 // varying number of particles). A Trajectory of such a file always reads id
@@ -40,7 +44,8 @@ enum Field : unsigned {
   kMass = 16u,
   kDiameter = 32u,
   kAnyDimension = 64u,
-  kAngularVelocity = 128u  // rough runs' spins; read where the file has them (else left empty)
+  kAngularVelocity = 128u,  // rough runs' spins; read where the file has them (else left empty)
+  kSpecies = 256u           // a mixture's species; read where the file has them (else left empty)
 };
 
 // One dump. Arrays hold 3 numbers per particle, in particle-id order (for a
@@ -61,6 +66,9 @@ struct Frame {
   std::vector<double> diameter;
   // rough runs only (empty otherwise), when opened for kAngularVelocity: 3 per particle in every dimension
   std::vector<double> angular_velocity;
+  // mixtures only (empty otherwise), when opened for kSpecies, kMass or kDiameter: each particle's species
+  // (an index into /parameters/species_*), from which its mass and diameter are filled when asked for
+  std::vector<std::int32_t> species;
 
   std::size_t particles() const { return id.empty() ? std::max({position.size(), velocity.size(), image.size()}) / 3 : id.size(); }
 };
@@ -71,11 +79,12 @@ class Trajectory {
   // file and the missing dataset if it is not a coolgas trajectory).
   Trajectory(const std::string& path, unsigned fields);
   // Whether frames hold `f` (an element asked for that the file has: a smooth run has no spins).
-  bool has(Field f) const { return (fields_ & f) != 0; }
+  bool has(Field f) const { return ((fields_ | filled_) & f) != 0; }
 
   const std::string& path() const { return path_; }
   std::int64_t particles() const { return n_; }  // N (slots, for aggregation files)
   bool aggregates() const { return aggregates_; }  // an aggregation file: frames hold the aggregates present
+  std::size_t species_count() const { return species_count_; }  // a mixture's species (0: particles all alike)
   int dimension() const { return dimension_; }     // 3, or 2 or 1 (opened with kAnyDimension)
   Geometry geometry() const { return Geometry(dimension_); }
   const std::vector<double>& dump_times() const { return times_; }
@@ -113,11 +122,15 @@ class Trajectory {
   [[noreturn]] void missing(const std::string& what) const;
   void check_element(const std::string& element, bool vector, hsize_t per_particle);
   void keep_present(Frame& frame) const;
+  void fill_from_species(Frame& frame, const std::string& where) const;
 
   std::string path_;
   unsigned fields_;
   bool aggregates_ = false;
   int dimension_ = 3;
+  std::vector<double> species_mass_, species_diameter_;  // a mixture's table (else empty)
+  unsigned filled_ = 0;  // fields filled from the species (a mixture's kMass, kDiameter), not read
+  std::size_t species_count_ = 0;
   h5::Handle file_;
   std::int64_t n_ = 0;
   std::vector<double> times_;

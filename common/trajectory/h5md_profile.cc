@@ -55,6 +55,21 @@ void append_rough_particles(Profile& p) {
                         .since = int(kRoughSchemaVersion), .rough_only = true});
 }
 
+// Version 6 adds mixtures ([[species]]): each particle's species in the
+// dumps (an index into the species table: int32, written with every dump, so
+// each dump reads alone) and each species' kinetic energy per particle of
+// that species among the observables; the species table is three
+// /parameters arrays of the parameter table.
+void append_mixtures(Profile& p) {
+  p.elements.push_back({.path = kSpecies, .type = kInt32, .row = {kParticles}, .rule = kSpeciesIndex,
+                        .meaning = "species of each particle (mixtures)", .presence = Presence::kOptional,
+                        .since = int(kMixtureSchemaVersion), .mixture_only = true});
+  p.elements.push_back({.path = kSpeciesKineticEnergy, .row = {kSpeciesExtent}, .rows = kObservableRows,
+                        .rule = kFinite, .meaning = "kinetic energy per particle of each species (mixtures)",
+                        .presence = Presence::kOptional, .since = int(kMixtureSchemaVersion),
+                        .mixture_only = true});
+}
+
 DataType type_of(const ParameterField::Member& m) {
   if (std::holds_alternative<std::int64_t RunParameters::*>(m)) return kInt64;
   if (std::holds_alternative<std::string RunParameters::*>(m)) return kVlenString;
@@ -69,6 +84,7 @@ void append_parameters(Profile& p) {
                             .type = type_of(f.member),
                             .at_least = f.at_least,
                             .above = f.above,
+                            .per_species = std::holds_alternative<std::vector<double> RunParameters::*>(f.member),
                             .meaning = f.meaning,
                             .presence = is_optional(f)         ? Presence::kOptional
                                         : is_model_specific(f) ? Presence::kPerModel
@@ -132,8 +148,10 @@ Profile make_profile() {
   append_parameters(p);
   append_aggregation_layout(p);
   append_rough_particles(p);
-  // Version 4 added the driven gas's optional /parameters (above), 5 rough particles.
-  p.version = int(kRoughSchemaVersion);
+  append_mixtures(p);
+  // Version 4 added the driven gas's optional /parameters (above), 5 rough
+  // particles, 6 mixtures.
+  p.version = int(kMixtureSchemaVersion);
   p.schema_version = {kParameters, "schema_version"};
   p.particle_count = {kParameters, "N"};
   p.box_side = {kParameters, "L"};
@@ -172,7 +190,11 @@ std::string shape_rule(RowCount rows, const std::vector<Extent>& row, std::optio
   s.append(row_count_symbol(rows));
   for (const Extent& e : row) {
     s.append(", ");
-    s.append(e.particles ? "N" : !e.dimension ? std::to_string(e.size) : d ? std::to_string(*d) : "d");
+    s.append(e.particles  ? "N"
+             : e.species  ? "S"
+             : !e.dimension ? std::to_string(e.size)
+             : d          ? std::to_string(*d)
+                          : "d");
   }
   s.append(row.empty() ? ",)" : ")");
   return s;

@@ -28,15 +28,18 @@ std::string_view type_name(DataType t);
 // element of the layout the model writes.
 enum class Presence { kRequired, kOptional, kPerModel };
 
-// One dimension of a dataset's shape: a fixed size, N (/parameters/N) or d
-// (the box's `dimension`: 3, or 2 for disks).
+// One dimension of a dataset's shape: a fixed size, N (/parameters/N), d
+// (the box's `dimension`: 3, or 2 for disks) or S (a mixture's species: the
+// length of /parameters/species_fraction).
 struct Extent {
   hsize_t size = 0;
   bool particles = false;  // true: the extent is N
   bool dimension = false;  // true: the extent is d
+  bool species = false;    // true: the extent is S
 };
 inline constexpr Extent kParticles{.particles = true};
 inline constexpr Extent kDimension{.dimension = true};
+inline constexpr Extent kSpeciesExtent{.species = true};
 
 // Which row count a series' first dimension shares: F (dumps) or K (observable rows).
 enum class RowCount { kFrames, kObservableRows };
@@ -48,6 +51,7 @@ enum class ValueRule {
   kFinite,     // no NaN or infinity
   kInsideBox,  // finite and within [0, L), L from /parameters/L
   kBoxMatrix,  // each row is diag(L, L, L) (2D: diag(L, L))
+  kSpeciesIndex,  // an index into the species table: 0 to S - 1
 };
 
 struct GroupSpec {
@@ -68,6 +72,7 @@ struct AttributeSpec {
   std::optional<std::int64_t> at_most;   // upper bound for integers
   std::optional<double> above;           // floats: finite and above this
   bool per_dimension = false;            // an array of d elements, each `equals` (shown as "[x, x]")
+  bool per_species = false;              // an array of S elements (a mixture's species), each above `above`
   std::string_view meaning;
   Presence presence = Presence::kRequired;
   int since = 1;
@@ -86,6 +91,7 @@ struct ElementSpec {
   int since = 1;
   std::optional<layout::Layout> only_in;  // written only in files of this layout
   bool rough_only = false;                // written exactly in files of rough runs (/parameters/beta)
+  bool mixture_only = false;              // written exactly in files of mixtures (/parameters/species_fraction)
   std::optional<std::int64_t> fill;       // the dataset's fill value (H5MD: marks absent particles)
 };
 

@@ -34,9 +34,9 @@ h5::Type h5_type(schema::DataType t) {
   }
 }
 
-// Whether files of layout l (rough or not) hold element e.
-bool in_file(const schema::ElementSpec& e, Layout l, bool rough) {
-  return (!e.only_in || *e.only_in == l) && (!e.rough_only || rough);
+// Whether files of layout l (rough or not; a mixture or not) hold element e.
+bool in_file(const schema::ElementSpec& e, Layout l, bool rough, bool mixture) {
+  return (!e.only_in || *e.only_in == l) && (!e.rough_only || rough) && (!e.mixture_only || mixture);
 }
 
 // Per-particle series of the dumps are cut and compressed (DumpStorage); the
@@ -46,9 +46,11 @@ h5::Storage storage_of(const schema::ElementSpec& e, const DumpStorage& s) {
   return {.chunk_inner = static_cast<hsize_t>(s.particles_per_chunk), .deflate_level = s.deflate_level};
 }
 
-void create_element(hid_t file, const schema::ElementSpec& e, hsize_t n, int dimension, const DumpStorage& storage) {
+void create_element(hid_t file, const schema::ElementSpec& e, hsize_t n, int dimension, hsize_t species,
+                    const DumpStorage& storage) {
   std::vector<hsize_t> inner;
-  for (const schema::Extent& x : e.row) inner.push_back(x.particles ? n : x.dimension ? hsize_t(dimension) : x.size);
+  for (const schema::Extent& x : e.row)
+    inner.push_back(x.particles ? n : x.dimension ? hsize_t(dimension) : x.species ? species : x.size);
   const hsize_t chunk = e.rows == schema::RowCount::kFrames ? kFrameChunk : kObservableChunk;
   h5::Handle g = h5::create_group(file, std::string(e.path));
   h5::create_series(g.id(), "step", h5::Type::kInt64, {}, chunk);
@@ -72,10 +74,10 @@ void write_metadata(hid_t file, int dimension) {
 
 // The largest chunk of the per-particle series, in bytes, uncompressed (a
 // deflated chunk is no larger, give or take its header).
-hsize_t largest_frame_chunk(hid_t file, Layout layout, bool rough) {
+hsize_t largest_frame_chunk(hid_t file, Layout layout, bool rough, bool mixture) {
   hsize_t most = 0;
   for (const schema::ElementSpec& e : schema::h5md_profile().elements)
-    if (in_file(e, layout, rough) && e.rows == schema::RowCount::kFrames)
+    if (in_file(e, layout, rough, mixture) && e.rows == schema::RowCount::kFrames)
       most = std::max(most, h5::chunk_bytes(h5::open_dataset(file, value_of(e.path)).id()));
   return most;
 }
@@ -128,6 +130,7 @@ H5mdWriter H5mdWriter::create(const std::string& path, const RunParameters& para
   w.dimension_ = g.d();
   w.layout_ = model->layout;
   w.rough_ = is_rough(params.collision);
+  w.species_ = params.species_fraction.size();
   RunParameters p = params;
   p.schema_version = schema_version_of(p, model->schema_version);
   p.program_version = program_version();
@@ -145,7 +148,8 @@ void H5mdWriter::create_objects(const RunParameters& params, const DumpStorage& 
   h5::Handle par = h5::open_group(f, std::string(kParameters));
   write_parameters(par.id(), params);
   for (const schema::ElementSpec& e : profile.elements)
-    if (in_file(e, layout_, rough_)) create_element(f, e, static_cast<hsize_t>(n_), dimension_, storage);
+    if (in_file(e, layout_, rough_, species_ > 0))
+      create_element(f, e, static_cast<hsize_t>(n_), dimension_, species_, storage);
   for (const schema::DatasetSpec& d : profile.datasets)
     h5::create_series(f, std::string(d.path), h5_type(d.type), {}, kObservableChunk);
   flush_file();
@@ -182,11 +186,13 @@ H5mdWriter H5mdWriter::reopen(const std::string& path, const std::string* new_sc
                      "; allowed are 1, 2 and 3");
   w.layout_ = layout_of(f);
   w.rough_ = is_rough(p.collision);
+  w.species_ = p.species_fraction.size();
   w.writing([&] {
     // A writer killed while it wrote a frame leaves chunks past the recorded
     // end of allocation; dropping them (below) would fail, or the file's close
     // would. One chunk more than the file's size covers any half-written one.
-    h5::extend_allocation_past_file_end(w.file_, largest_frame_chunk(f, w.layout_, w.rough_) + (hsize_t{1} << 16));
+    h5::extend_allocation_past_file_end(
+        w.file_, largest_frame_chunk(f, w.layout_, w.rough_, w.species_ > 0) + (hsize_t{1} << 16));
     w.drop_interrupted_burst();
   });
   fault_point(FaultPoint::kResumeReopened);
@@ -249,7 +255,7 @@ void H5mdWriter::drop_interrupted_burst() {
   if (times.empty()) throw InputError("'" + path_ + "' holds no complete dump to resume from");
   const hsize_t frames = times.size();
   for (const schema::ElementSpec& e : schema::h5md_profile().elements) {
-    if (!in_file(e, layout_, rough_)) continue;
+    if (!in_file(e, layout_, rough_, species_ > 0)) continue;
     if (e.rows == schema::RowCount::kFrames) {
       truncate_element(f, e.path, frames);
       continue;
@@ -294,6 +300,7 @@ void H5mdWriter::write_pending() {
     append(kCollisionsBelowDelta, r.collisions, r.time, h5::Type::kInt64, &r.below_delta);
     append(kTotalMomentum, r.collisions, r.time, h5::Type::kFloat64, r.momentum.data());
     if (rough_) append(kRotationalEnergy, r.collisions, r.time, h5::Type::kFloat64, &r.rotational_energy);
+    if (species_ > 0) append(kSpeciesKineticEnergy, r.collisions, r.time, h5::Type::kFloat64, r.species_energy.data());
     if (layout_ != Layout::kAggregation) continue;
     append(kAggregates, r.collisions, r.time, h5::Type::kInt64, &r.aggregates);
     append(kMeanMass, r.collisions, r.time, h5::Type::kFloat64, &r.mean_mass);
@@ -312,6 +319,10 @@ void H5mdWriter::write_frame(const FrameView& fr) {
   if (rough_) {
     if (!fr.angular_velocity) throw std::logic_error("a rough run's frame without angular velocities");
     append(kAngularVelocity, fr.collisions, fr.time, h5::Type::kFloat64, fr.angular_velocity);
+  }
+  if (species_ > 0) {
+    if (!fr.species) throw std::logic_error("a mixture's frame without species");
+    append(kSpecies, fr.collisions, fr.time, h5::Type::kInt32, fr.species);
   }
   if (layout_ != Layout::kAggregation) return;
   if (!fr.id || !fr.mass || !fr.diameter) throw std::logic_error("aggregation frame without id, mass or diameter");
@@ -342,7 +353,8 @@ hsize_t H5mdWriter::burst_bytes(bool with_frame) const {
   hsize_t frame = n * (3 * 8 + 3 * 4 + 3 * 8) + 9 * 8 + 4 * 16;
   if (layout_ == Layout::kAggregation) frame += n * (4 + 8 + 8) + 3 * 16;
   if (rough_) frame += n * 3 * 8 + 16;
-  const hsize_t rows = pending_.size() * 8 * 48;
+  if (species_ > 0) frame += n * 4 + 16;
+  const hsize_t rows = pending_.size() * (8 * 48 + species_ * 8);
   return (with_frame ? frame + frame / 64 : 0) + rows + (hsize_t{1} << 20);
 }
 

@@ -47,6 +47,9 @@ struct ObservableRow {
   std::int64_t aggregates = 0;
   double mean_mass = 0, largest_mass = 0;
   double rotational_energy = 0;  // rough runs only: per particle
+  // mixtures only: per particle of each species, the first S of kMaxFileSpecies
+  // (a fixed array: rows are plain records, kept as they are in checkpoints)
+  std::array<double, kMaxFileSpecies> species_energy{};
 };
 
 // One dump: N particles in particle-id order. Particle i's position is
@@ -68,6 +71,8 @@ struct FrameView {
   const double* diameter = nullptr;
   // rough runs only: angular velocities, 3 per particle
   const double* angular_velocity = nullptr;
+  // mixtures only: each particle's species
+  const std::int32_t* species = nullptr;
 };
 
 // How the per-particle series of the dumps (positions, velocities, images
@@ -146,6 +151,7 @@ class H5mdWriter {
   int dimension_ = 3;
   layout::Layout layout_ = layout::Layout::kGas;
   bool rough_ = false;  // rough particles: their spins and rotational energy are written too
+  std::size_t species_ = 0;  // a mixture's species (0: none): each particle's species and their energies written too
   bool appending_ = false;  // SWMR writing started (or, for an old-format file, first row written)
   std::vector<ObservableRow> pending_;
 };

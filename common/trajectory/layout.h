@@ -36,6 +36,7 @@ inline constexpr std::string_view kId = "/particles/all/id";  // aggregation lay
 inline constexpr std::string_view kMass = "/particles/all/mass";
 inline constexpr std::string_view kDiameter = "/particles/all/diameter";
 inline constexpr std::string_view kAngularVelocity = "/particles/all/angular_velocity";  // rough runs
+inline constexpr std::string_view kSpecies = "/particles/all/species";                    // mixtures
 
 // Observable elements.
 inline constexpr std::string_view kKineticEnergy = "/observables/kinetic_energy";
@@ -47,6 +48,7 @@ inline constexpr std::string_view kAggregates = "/observables/aggregates";  // a
 inline constexpr std::string_view kMeanMass = "/observables/mean_mass";
 inline constexpr std::string_view kLargestMass = "/observables/largest_mass";
 inline constexpr std::string_view kRotationalEnergy = "/observables/rotational_energy";  // rough runs
+inline constexpr std::string_view kSpeciesKineticEnergy = "/observables/species_kinetic_energy";  // mixtures
 
 // The /restart series: one row per complete dump. The writer appends the
 // time row last, so its length is the number of complete dumps.

@@ -20,6 +20,7 @@ struct ResumeFrame {
   std::vector<double> position, velocity;        // 3 per particle, in id order
   std::vector<std::int32_t> image;
   std::vector<double> angular_velocity;  // rough runs only (else empty): 3 per particle
+  std::vector<std::int32_t> species;     // mixtures only (else empty): each particle's species
   // aggregation layout only (empty otherwise): slot ids (-1 when absent), masses, diameters
   bool aggregates = false;
   std::vector<std::int32_t> id;

@@ -27,6 +27,11 @@ Overloaded(F...) -> Overloaded<F...>;  // clang before 17 deduces no aggregate's
 std::string text_of(std::int64_t v) { return std::to_string(v); }
 std::string text_of(double v) { return format_number(v); }
 std::string text_of(const std::string& v) { return v; }
+std::string text_of(const std::vector<double>& v) {  // "0.5,0.5": one per species
+  std::string t;
+  for (std::size_t k = 0; k < v.size(); ++k) t += (k ? "," : "") + format_number(v[k]);
+  return t;
+}
 
 // Attributes of the class the member needs; anything else would fail deep in
 // HDF5's conversion with a message naming nothing.
@@ -40,6 +45,7 @@ H5T_class_t class_of(const ParameterField::Member& m) {
 // Whether a file of these parameters holds the field (optional ones: when set).
 bool present_for(const RunParameters& p, const ParameterField& f) {
   if (const auto* m = std::get_if<std::optional<double> RunParameters::*>(&f.member)) return (p.**m).has_value();
+  if (const auto* m = std::get_if<std::vector<double> RunParameters::*>(&f.member)) return !(p.**m).empty();
   if (!is_model_specific(f)) return true;
   if (!model_uses(p.model, f.name)) return false;
   return !is_optional(f) || p.collision.count(f.name) != 0;  // beta: present when not at its `off` value
@@ -56,6 +62,9 @@ void read_field_unchecked(hid_t g, const std::string& path, const ParameterField
                         [&](double RunParameters::*m) { p.*m = h5::read_attr_double(g, name); },
                         [&](std::string RunParameters::*m) { p.*m = h5::read_attr_string(g, name); },
                         [&](std::optional<double> RunParameters::*m) { p.*m = h5::read_attr_double(g, name); },
+                        [&](std::vector<double> RunParameters::*m) {
+                          p.*m = h5::read_attr_doubles(g, name, kMaxFileSpecies);
+                        },
                         [&](ModelValue) { p.collision[name] = h5::read_attr_double(g, name); }},
              f.member);
 }
@@ -106,6 +115,12 @@ const std::vector<ParameterField>& run_parameter_fields() {
                  kPhysics, int(kDrivingSchemaVersion), std::nullopt, 0.0});
     f.push_back({"inertia", &RunParameters::inertia, "moment of inertia per m a^2 (rough particles)", kPhysics,
                  int(kRoughSchemaVersion), std::nullopt, 0.0});
+    f.push_back({"species_fraction", &RunParameters::species_fraction, "each species' share of N (mixtures)",
+                 kPhysics, int(kMixtureSchemaVersion), std::nullopt, 0.0});
+    f.push_back({"species_diameter", &RunParameters::species_diameter, "each species' diameter (mixtures)", kPhysics,
+                 int(kMixtureSchemaVersion), std::nullopt, 0.0});
+    f.push_back({"species_mass", &RunParameters::species_mass, "each species' mass (mixtures)", kPhysics,
+                 int(kMixtureSchemaVersion), std::nullopt, 0.0});
     return f;
   }();
   return fields;
@@ -120,13 +135,15 @@ bool is_optional(const ParameterField& f) {
     const ModelParameter* m = find_model_parameter(f.name);
     return m && m->off;
   }
-  return std::holds_alternative<std::optional<double> RunParameters::*>(f.member);
+  return std::holds_alternative<std::optional<double> RunParameters::*>(f.member) ||
+         std::holds_alternative<std::vector<double> RunParameters::*>(f.member);
 }
 
 std::int64_t schema_version_of(const RunParameters& p, std::int64_t model_version) {
   std::int64_t v = model_version;
   if (p.driving_power) v = std::max(v, kDrivingSchemaVersion);
   if (is_rough(p.collision)) v = std::max(v, kRoughSchemaVersion);
+  if (is_mixture(p)) v = std::max(v, kMixtureSchemaVersion);
   return v;
 }
 
@@ -139,6 +156,10 @@ std::optional<std::string> field_text(const RunParameters& p, const ParameterFie
                                [&](std::optional<double> RunParameters::*m) -> std::optional<std::string> {
                                  if (!(p.*m)) return std::nullopt;
                                  return text_of(*(p.*m));
+                               },
+                               [&](std::vector<double> RunParameters::*m) -> std::optional<std::string> {
+                                 if ((p.*m).empty()) return std::nullopt;
+                                 return text_of(p.*m);
                                },
                                [&](auto m) -> std::optional<std::string> { return text_of(p.*m); }},
                     f.member);
@@ -158,6 +179,9 @@ void write_parameters(hid_t g, const RunParameters& p) {
                           },
                           [&](std::optional<double> RunParameters::*m) {
                             if (p.*m) h5::write_attr(g, name, *(p.*m));
+                          },
+                          [&](std::vector<double> RunParameters::*m) {
+                            if (!(p.*m).empty()) h5::write_attr(g, name, p.*m);
                           },
                           [&](auto m) { h5::write_attr(g, name, p.*m); }},
                f.member);

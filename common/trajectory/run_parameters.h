@@ -38,9 +38,20 @@ struct RunParameters {
   // Rough particles' moment of inertia per m a² (a the radius): present
   // exactly when the run is rough (collision beta > -1, is_rough()).
   std::optional<double> inertia;
+  // A mixture's species table (the scene's [[species]], one value per
+  // species, in the table's order): present exactly when the run is a
+  // mixture, whose files are of schema version kMixtureSchemaVersion or later.
+  std::vector<double> species_fraction, species_diameter, species_mass;
 };
 
 inline constexpr std::int64_t kDrivingSchemaVersion = 4;
+// Mixtures: the species table above, each particle's species in the dumps
+// and each species' kinetic energy among the observables.
+inline constexpr std::int64_t kMixtureSchemaVersion = 6;
+// The most species a file may list (the simulator's limit, scene.h).
+inline constexpr std::size_t kMaxFileSpecies = 16;
+// Whether a run's parameters are a mixture's (species_fraction given).
+inline bool is_mixture(const RunParameters& p) { return !p.species_fraction.empty(); }
 
 // kPhysics: defines "the same physics"; runs of one ensemble agree in it.
 // kSeed: what the runs of an ensemble differ in.
@@ -52,10 +63,12 @@ struct ModelValue {};
 
 struct ParameterField {
   using Member = std::variant<std::int64_t RunParameters::*, double RunParameters::*, std::string RunParameters::*,
-                              std::optional<double> RunParameters::*, ModelValue>;
+                              std::optional<double> RunParameters::*, ModelValue,
+                              std::vector<double> RunParameters::*>;
   std::string_view name;  // the /parameters attribute
   Member member;          // ModelValue: model-specific, one field per row of model_parameters();
-                          // std::optional: present in some runs of every model (driving)
+                          // std::optional: present in some runs of every model (driving);
+                          // std::vector: one value per species, present in mixtures only
   std::string_view meaning;
   ParameterRole role = ParameterRole::kPhysics;
   int since = 1;                         // schema version that added it
@@ -68,11 +81,12 @@ const std::vector<ParameterField>& run_parameter_fields();
 // Present for every model, or only for those that list it (collision_models.h).
 bool is_model_specific(const ParameterField& f);
 // Present only in the runs that have it: the driven gas's fields, whatever
-// the model; the rough particles' inertia; a model parameter with an `off`
-// value (beta) in the runs of its models that are not at it.
+// the model; the rough particles' inertia; a mixture's species table; a
+// model parameter with an `off` value (beta) in the runs of its models that
+// are not at it.
 bool is_optional(const ParameterField& f);
 // The schema version a run's file says: its model's, or that of the driven
-// gas or of rough particles if later.
+// gas, of rough particles or of mixtures if later.
 std::int64_t schema_version_of(const RunParameters& p, std::int64_t model_version);
 // The field's value as text ("32", "0.1", "inelastic"); nothing when absent.
 std::optional<std::string> field_text(const RunParameters& p, const ParameterField& f);

@@ -7,12 +7,16 @@
 //   double restitution(double g, bool& below_delta) const;
 //   int collapse_limit() const;              // (dissipative rules) see engine.cc
 //   static constexpr bool kRough;            // do collisions turn the particles' spins? (RoughRule)
+//   static constexpr bool kMixture;          // do particles differ in size and mass? (MixtureRule)
 // where g > 0 is the normal relative speed before the collision; it returns
 // the coefficient of restitution r and sets below_delta when the collision
 // was made elastic by the δ cut-off. Adding a rule: a struct here, one line
 // at the end of engine.cc, and its model's rows (ARCHITECTURE.md).
 #pragma once
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 #include "simulate/engine/viscoelastic_restitution.h"
 
@@ -21,6 +25,7 @@ namespace coolgas {
 struct ElasticRule {
   static constexpr bool kDissipative = false;
   static constexpr bool kRough = false;
+  static constexpr bool kMixture = false;
   double restitution(double /*g*/, bool& below_delta) const {
     below_delta = false;
     return 1.0;
@@ -32,6 +37,7 @@ struct ElasticRule {
 struct ConstantRestitutionRule {
   static constexpr bool kDissipative = true;
   static constexpr bool kRough = false;
+  static constexpr bool kMixture = false;
   double r0 = 1.0;
   double delta = 0.0;
   double restitution(double g, bool& below_delta) const {
@@ -55,6 +61,7 @@ struct ConstantRestitutionRule {
 struct ViscoelasticRule {
   static constexpr bool kDissipative = true;
   static constexpr bool kRough = false;
+  static constexpr bool kMixture = false;
   ViscoelasticRule(double b_, double delta_) : b(b_), delta(delta_), eps(&ViscoelasticTable::get()) {}
   double b;
   double delta;
@@ -88,6 +95,31 @@ struct RoughRule : Normal {
   double beta, inertia;
   double eta_t;      // the tangential impulse per unit tangential speed (unit masses)
   double spin_turn;  // each spin's change per unit of n x g_t
+};
+
+// A mixture of sizes and masses (the scene's [[species]]): the normal rule's
+// restitution between particles of species a and b, touching at the
+// distance (sigma_a + sigma_b) / 2 and exchanging momentum in proportion to
+// their masses (pair_prediction.h, apply_restitution_with_masses). An engine
+// of this rule keeps a species per particle, an array beside the records
+// that only its partner search reads; equal spheres never instantiate it,
+// so their hot loop is as before. Species are numbered from 0 (a byte: the
+// scene allows 16).
+template <class Normal>
+struct MixtureRule : Normal {
+  static constexpr bool kMixture = true;
+  MixtureRule(const Normal& normal, std::vector<double> diameter, std::vector<double> mass_)
+      : Normal(normal), radius(diameter.size()), mass(std::move(mass_)) {
+    for (std::size_t s = 0; s < diameter.size(); ++s) radius[s] = 0.5 * diameter[s];
+  }
+  std::vector<double> radius;  // half the diameter of each species
+  std::vector<double> mass;    // the mass of each species
+  int species() const { return int(radius.size()); }
+  double largest_diameter() const {
+    double d = 0;
+    for (const double a : radius) d = std::max(d, 2.0 * a);
+    return d;
+  }
 };
 
 }  // namespace coolgas

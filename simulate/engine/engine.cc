@@ -54,18 +54,29 @@ constexpr double kDiluteCellsPerParticle = 16;
 // a sphere's is under one), so one-diameter cells would make each flight
 // cross several cells, each crossing an event; with one rod per cell on
 // average a flight crosses about one, and a search still meets ~3 rods.
+//
+// A mixture's cells are as wide as its largest particle (`diameter`), so a
+// contact is always between neighbouring cells; the dilute rule counts the
+// cells of that width per particle.
 template <int D>
-double cell_width(double L, std::size_t n) {
+double cell_width(double L, std::size_t n, double diameter = 1.0) {
   if constexpr (D == 1) {
     const double most = L / 3.0 / (1.0 + 1e-6);  // three cells, with CellGrid's margin
-    return std::max(1.0, std::min(L / double(std::max<std::size_t>(n, 1)), most));
+    return std::max(diameter, std::min(L / double(std::max<std::size_t>(n, 1)), most));
   }
   constexpr Geometry g(D);
   const double volume = g.box_measure(L), particles = double(std::max<std::size_t>(n, 1));
-  if (volume <= kDiluteCellsPerParticle * particles) return 1.0;
+  if (volume <= kDiluteCellsPerParticle * particles * g.power(diameter)) return diameter;
   const double most = L / 3.0 / (1.0 + 1e-6);  // three cells per side, with CellGrid's margin
   const double spacing = g.root(volume / particles);
-  return std::max(1.0, std::min(spacing, most));
+  return std::max(diameter, std::min(spacing, most));
+}
+
+// The width of the rule's largest particle: 1 for equal unit spheres.
+template <class Rule>
+double largest_diameter(const Rule& rule) {
+  if constexpr (Rule::kMixture) return rule.largest_diameter();
+  return 1.0;
 }
 
 std::int64_t collisions_between_rebuilds(std::size_t n) {
@@ -80,7 +91,8 @@ template <class Rule, int D>
 Engine<Rule, D>::Engine(Particles particles, const Rule& rule, double now, const EngineCounters& counters)
     : L_(particles.L),
       rule_(rule),
-      grid_(particles.L, cell_width<D>(particles.L, particles.size()), particles.size(), Geometry(D)),
+      grid_(particles.L, cell_width<D>(particles.L, particles.size(), largest_diameter(rule)), particles.size(),
+            Geometry(D)),
       now_(now),
       c_(counters) {
   const std::size_t n = particles.size();
@@ -92,6 +104,12 @@ Engine<Rule, D>::Engine(Particles particles, const Rule& rule, double now, const
     omega_ = std::move(particles.omega);
     if (omega_.empty()) omega_.resize(n);
     if (omega_.size() != n) throw std::logic_error("a rough engine's particles: one spin per particle");
+  }
+  if constexpr (Rule::kMixture) {
+    species_ = std::move(particles.species);
+    if (species_.size() != n) throw std::logic_error("a mixture engine's particles: one species per particle");
+    for (const std::uint8_t k : species_)
+      if (k >= rule_.species()) throw std::logic_error("a mixture engine's particles: a species beyond the rule's");
   }
   particles = Particles();  // the records hold it all now: free the copy before growing more arrays
   id_.resize(n);
@@ -118,13 +136,16 @@ Engine<Rule, D>::Engine(const Rule& rule, const StateReader& in) : rule_(rule) {
   later_ = in.get<Event>("engine/later");
   stall_ = in.get<std::uint32_t>("engine/stall");
   if constexpr (Rule::kRough) omega_ = in.get<Vec3>("engine/omega");
+  if constexpr (Rule::kMixture) species_ = in.get<std::uint8_t>("engine/species");
   const std::size_t n = m_.size();
   if (n == 0 || image_.size() != n || id_.size() != n || later_.size() != n ||
-      stall_.size() != (Rule::kDissipative ? n : 0) || omega_.size() != (Rule::kRough ? n : 0))
+      stall_.size() != (Rule::kDissipative ? n : 0) || omega_.size() != (Rule::kRough ? n : 0) ||
+      species_.size() != (Rule::kMixture ? n : 0))
     in.fail("the engine's arrays differ in length");
   check_records(in);
-  check_grid_size(in, "engine/grid/heads", CellGrid::cells_for(L_, cell_width<D>(L_, n), Geometry(D)));
-  grid_ = CellGrid(L_, cell_width<D>(L_, n), n, Geometry(D));
+  const double width = cell_width<D>(L_, n, largest_diameter(rule_));
+  check_grid_size(in, "engine/grid/heads", CellGrid::cells_for(L_, width, Geometry(D)));
+  grid_ = CellGrid(L_, width, n, Geometry(D));
   grid_.bind_next_links(&m_[0].next, sizeof(Motion) / sizeof(std::int32_t));
   grid_.load(in, "engine/grid/");
   for (std::size_t i = 0; i < n; ++i) {
@@ -159,6 +180,10 @@ void Engine<Rule, D>::check_records(const StateReader& in) const {
               std::to_string(n - 1) + ", each once");
     seen[std::size_t(id)] = true;
     if (Rule::kRough && !finite(omega_[i])) in.fail("engine/omega[" + std::to_string(i) + "]: not finite");
+    if constexpr (Rule::kMixture)
+      if (species_[i] >= rule_.species())
+        in.fail("engine/species[" + std::to_string(i) + "] = " + std::to_string(species_[i]) + ": the scene has " +
+                std::to_string(rule_.species()) + " species");
     if (!EventCalendar::event_in_range(later_[i], std::int64_t(n)))
       in.fail("engine/later[" + std::to_string(i) + "]: an event with a partner or face out of range");
   }
@@ -173,6 +198,7 @@ void Engine<Rule, D>::save(StateWriter& out) const {
   out.put("engine/later", later_);
   out.put("engine/stall", stall_);
   if constexpr (Rule::kRough) out.put("engine/omega", omega_);
+  if constexpr (Rule::kMixture) out.put("engine/species", species_);
   grid_.save(out, "engine/grid/");
   calendar_.save(out, "engine/calendar/");
   out.put_value("engine/time_watch", watch_);
@@ -199,18 +225,58 @@ std::vector<std::int32_t> Engine<Rule, D>::slot_of_id() const {
 }
 
 template <class Rule, int D>
+double Engine<Rule, D>::radius_of(int i) const {
+  if constexpr (Rule::kMixture) return rule_.radius[species_[std::size_t(i)]];
+  return 0.5;
+}
+
+template <class Rule, int D>
+double Engine<Rule, D>::mass_of(int i) const {
+  if constexpr (Rule::kMixture) return rule_.mass[species_[std::size_t(i)]];
+  return 1.0;
+}
+
+// Unit masses are not multiplied in: the sums are those of the plain formula, bit for bit.
+template <class Rule, int D>
 Observables Engine<Rule, D>::observables() const {
   CompensatedSum energy, p[3];
   for (const std::int32_t i : slot_of_id()) {
     const Vec3& v = m_[std::size_t(i)].v;
-    energy.add(0.5 * dot(v, v));
-    for (int d = 0; d < 3; ++d) p[d].add(v[d]);
+    if constexpr (Rule::kMixture) {
+      const double m = mass_of(i);
+      energy.add(0.5 * m * dot(v, v));
+      for (int d = 0; d < 3; ++d) p[d].add(m * v[d]);
+    } else {
+      energy.add(0.5 * dot(v, v));
+      for (int d = 0; d < 3; ++d) p[d].add(v[d]);
+    }
   }
   Observables o(now_, c_);
   o.kinetic_energy = energy.value() / double(m_.size());
   o.momentum = {p[0].value(), p[1].value(), p[2].value()};
   if constexpr (Rule::kRough) o.rotational_energy = rotational_energy();
+  if constexpr (Rule::kMixture) o.species_energy = species_energy();
   return o;
+}
+
+// Σ ½ m v² / N_s over the particles of each species, in id order with
+// compensation (0 for a species without particles).
+template <class Rule, int D>
+std::vector<double> Engine<Rule, D>::species_energy() const {
+  std::vector<double> out;
+  if constexpr (Rule::kMixture) {
+    std::vector<CompensatedSum> energy(std::size_t(rule_.species()));
+    std::vector<std::int64_t> count(energy.size(), 0);
+    for (const std::int32_t i : slot_of_id()) {
+      const std::size_t k = species_[std::size_t(i)];
+      energy[k].add(0.5 * mass_of(i) * dot(m_[std::size_t(i)].v, m_[std::size_t(i)].v));
+      ++count[k];
+    }
+    out.assign(energy.size(), 0.0);
+    for (std::size_t k = 0; k < out.size(); ++k)
+      if (count[k] > 0) out[k] = energy[k].value() / double(count[k]);
+  }
+  return out;
 }
 
 // Σ ½ I ω² / N in id order with compensation, I = q a² = q/4 (unit
@@ -242,6 +308,10 @@ EngineFrame Engine<Rule, D>::frame() const {
   if constexpr (Rule::kRough) {
     f.angular_velocity.resize(n);
     for (std::size_t i = 0; i < n; ++i) f.angular_velocity[static_cast<std::size_t>(id_[i])] = omega_[i];
+  }
+  if constexpr (Rule::kMixture) {
+    f.species.resize(n);
+    for (std::size_t i = 0; i < n; ++i) f.species[static_cast<std::size_t>(id_[i])] = species_[i];
   }
   return f;
 }
@@ -275,6 +345,7 @@ std::vector<Vec3> Engine<Rule, D>::release_positions() {
   later_ = {};
   stall_ = {};
   omega_ = {};
+  species_ = {};
   std::vector<Vec3> r(m_.size());
   for (std::size_t i = 0; i < m_.size(); ++i) r[i] = m_[i].r;
   m_ = {};
@@ -304,6 +375,7 @@ void Engine<Rule, D>::order_by_space() {
   apply_permutation(image_, order);
   apply_permutation(id_, order);
   if constexpr (Rule::kRough) apply_permutation(omega_, order);
+  if constexpr (Rule::kMixture) apply_permutation(species_, order);
 }
 
 template <class Rule, int D>
@@ -314,6 +386,7 @@ void Engine<Rule, D>::order_by_id() {
   apply_permutation(image_, order);
   apply_permutation(id_, order);
   if constexpr (Rule::kRough) apply_permutation(omega_, order);
+  if constexpr (Rule::kMixture) apply_permutation(species_, order);
 }
 
 // Everything but the particles, rebuilt from the particles (at now_).
@@ -339,17 +412,25 @@ Vec3 Engine<Rule, D>::image_shift(int from, int to) const {
 }
 
 template <class Rule, int D>
-void Engine<Rule, D>::scan_list(const Vec3& ri, const Vec3& vi, int first, const double* s, double& best,
-                             int& code) const {
+void Engine<Rule, D>::scan_list(const Vec3& ri, const Vec3& vi, double ai, int first, const double* s,
+                                double& best, int& code) const {
   double b = best;  // locals, not the references, so they can stay in registers
   int c = code;
+  [[maybe_unused]] const double* radius = nullptr;
+  if constexpr (Rule::kMixture) radius = rule_.radius.data();
   for (int j = first; j >= 0; j = m_[j].next) {
     const Motion& mj = m_[j];
     const double dtj = now_ - mj.t;
     const Vec3 dr{mj.r.x + mj.v.x * dtj + s[0] - ri.x, mj.r.y + mj.v.y * dtj + s[1] - ri.y,
                   mj.r.z + mj.v.z * dtj + s[2] - ri.z};
     const Vec3 dv{mj.v.x - vi.x, mj.v.y - vi.y, mj.v.z - vi.z};
-    const double t = time_to_contact_unbranched(dr, dv);  // kNever for j == i
+    double t;
+    if constexpr (Rule::kMixture) {
+      const double sigma = ai + radius[species_[std::size_t(j)]];
+      t = time_to_contact_unbranched(dr, dv, sigma * sigma);  // kNever for j == i
+    } else {
+      t = time_to_contact_unbranched(dr, dv);  // kNever for j == i
+    }
     c = t < b ? j : c;  // selects, not branches (see time_to_contact_unbranched)
     b = std::min(t, b);
   }
@@ -380,9 +461,11 @@ void Engine<Rule, D>::start_search(int home, const int* lo, const int* hi, Searc
 // particles of the search's cells, if earlier than best (relative to now_);
 // updates best and partner.
 template <class Rule, int D>
-void Engine<Rule, D>::finish_search(const Vec3& ri, const Vec3& vi, const Search& s, double& best, int& partner) const {
+void Engine<Rule, D>::finish_search(const Vec3& ri, const Vec3& vi, double ai, const Search& s, double& best,
+                                    int& partner) const {
   static constexpr double kNoShift[3] = {0, 0, 0};
-  for (int k = 0; k < s.n; ++k) scan_list(ri, vi, s.heads[k], s.wraps ? s.shifts[s.which[k]] : kNoShift, best, partner);
+  for (int k = 0; k < s.n; ++k)
+    scan_list(ri, vi, ai, s.heads[k], s.wraps ? s.shifts[s.which[k]] : kNoShift, best, partner);
 }
 
 // The event of particle i (at now_ at ri with vi) given its earliest
@@ -411,7 +494,7 @@ Event Engine<Rule, D>::finish_event(int i, const Search& s) {
   const Vec3 ri = m_[i].r, vi = m_[i].v;
   double best = kNever;
   int partner = -1;
-  finish_search(ri, vi, s, best, partner);
+  finish_search(ri, vi, radius_of(i), s, best, partner);
   if (partner < 0) return earliest(i, ri, vi, Event{});
   return earliest(i, ri, vi, Event::collision(now_ + best, partner, m_[partner].count));
 }
@@ -439,7 +522,7 @@ Event Engine<Rule, D>::cross(int i, int face) {
   const Vec3 ri = m_[i].r, vi = m_[i].v;
   double best = kept.time - now_;
   int partner = -1;
-  finish_search(ri, vi, s, best, partner);
+  finish_search(ri, vi, radius_of(i), s, best, partner);
   if (partner < 0) return earliest(i, ri, vi, kept);
   return earliest(i, ri, vi, Event::collision(now_ + best, partner, m_[partner].count));
 }
@@ -499,7 +582,10 @@ void Engine<Rule, D>::collide(int i, int j) {
     const double r = rule_.restitution(g, below);
     if constexpr (Rule::kRough)
       apply_tangential_restitution(vi, vj, omega_[i], omega_[j], n, rule_.eta_t, rule_.spin_turn);
-    apply_restitution(vi, vj, n, g, r);
+    if constexpr (Rule::kMixture)
+      apply_restitution_with_masses(vi, vj, n, g, r, mass_of(i), mass_of(j));
+    else
+      apply_restitution(vi, vj, n, g, r);
     c_.below_delta += below;
   }
   ++m_[i].count;
@@ -531,6 +617,10 @@ RunStatus Engine<Rule, D>::run_until(double t_stop, std::int64_t max_events, con
           if constexpr (Rule::kRough) {  // the spins the collision turns
             __builtin_prefetch(&omega_[next]);
             __builtin_prefetch(&omega_[partner]);
+          }
+          if constexpr (Rule::kMixture) {  // the species that give the collision's masses
+            __builtin_prefetch(&species_[next]);
+            __builtin_prefetch(&species_[partner]);
           }
         } else {  // a crossing: the collision it kept, and its image counts
           __builtin_prefetch(&later_[next]);
@@ -587,11 +677,16 @@ RunStatus Engine<Rule, D>::run_until(double t_stop, std::int64_t max_events, con
 COOLGAS_ENGINE_OF(ElasticRule)
 COOLGAS_ENGINE_OF(ConstantRestitutionRule)
 COOLGAS_ENGINE_OF(ViscoelasticRule)
-#undef COOLGAS_ENGINE_OF
 // Rough spheres and disks (rods cannot spin: the scene refuses them).
 template class Engine<RoughRule<ElasticRule>, 2>;
 template class Engine<RoughRule<ElasticRule>, 3>;
 template class Engine<RoughRule<ConstantRestitutionRule>, 2>;
 template class Engine<RoughRule<ConstantRestitutionRule>, 3>;
+// Mixtures of sizes and masses, elastic or of constant restitution (the
+// scene refuses the others), in every dimension.
+COOLGAS_ENGINE_OF(MixtureRule<ElasticRule>)
+COOLGAS_ENGINE_OF(MixtureRule<ConstantRestitutionRule>)
+
+#undef COOLGAS_ENGINE_OF
 
 }  // namespace coolgas

@@ -29,6 +29,10 @@
 //     keep spins, an array apart from the records (the partner search never
 //     reads them; a collision turns them), so a smooth scene's engine is
 //     the one it was;
+//   - so are mixtures of sizes and masses (MixtureRule): only its engines
+//     keep a species per particle, a byte array beside the records that
+//     their partner search reads for each pair's contact distance, with
+//     cells as wide as the largest particle;
 //   - so is the dimension D: 3 (spheres in a periodic cube) or 2 (disks in a
 //     periodic square). A 2D particle keeps the same record, with z and v_z
 //     exactly 0 forever (every z term of a prediction or a collision is then
@@ -133,7 +137,7 @@ class Engine final : public EngineBase {
     bool wraps;
   };
   void start_search(int home, const int* lo, const int* hi, Search& s) const;
-  void finish_search(const Vec3& ri, const Vec3& vi, const Search& s, double& best, int& partner) const;
+  void finish_search(const Vec3& ri, const Vec3& vi, double ai, const Search& s, double& best, int& partner) const;
   Event find_event(int i);
   Event finish_event(int i, const Search& s);
   Event earliest(int i, const Vec3& ri, const Vec3& vi, const Event& collision);
@@ -147,13 +151,20 @@ class Engine final : public EngineBase {
   // of one cell list starting at `first`, whose images are shifted by s;
   // updates best/code. The particle itself may be in the list: at distance 0
   // it never approaches.
-  void scan_list(const Vec3& ri, const Vec3& vi, int first, const double* s, double& best, int& code) const;
+  // ai: the particle's radius (read by mixture engines only; 1/2 otherwise).
+  void scan_list(const Vec3& ri, const Vec3& vi, double ai, int first, const double* s, double& best,
+                 int& code) const;
+  // Particle i's radius and mass: 1/2 and 1 unless the rule is a mixture's.
+  double radius_of(int i) const;
+  double mass_of(int i) const;
+  std::vector<double> species_energy() const;
 
   double L_;
   std::vector<Motion> m_;
   std::vector<Image> image_;
   std::vector<std::int32_t> id_;  // particle id of each internal index
   std::vector<Vec3> omega_;       // angular velocities (rough rules only; else empty)
+  std::vector<std::uint8_t> species_;  // each particle's species (mixture rules only; else empty)
   Rule rule_;
   CellGrid grid_;
   EventCalendar calendar_;  // each particle's event

@@ -79,6 +79,7 @@ struct Observables {
   double kinetic_energy = 0;  // Σ ½ m v² / N over the N initial particles, summed in id order with compensation
   Vec3 momentum;              // Σ m v, likewise
   std::optional<double> rotational_energy;  // Σ ½ I ω² / N likewise: rough particles only
+  std::vector<double> species_energy;       // a mixture's Σ ½ m v² / N_s per species s; else empty
   std::optional<AggregateStats> aggregates;
 };
 
@@ -92,6 +93,7 @@ struct EngineFrame {
   std::int64_t collisions = 0, below_delta = 0;
   std::vector<Vec3> position, velocity;
   std::vector<Vec3> angular_velocity;  // rough particles only
+  std::vector<std::int32_t> species;   // a mixture's only
   std::vector<Image> image;
   std::vector<std::int32_t> id;
   std::vector<double> mass, diameter;

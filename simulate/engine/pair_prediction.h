@@ -1,4 +1,4 @@
-// When do two moving unit-diameter spheres touch? The one formula both
+// When do two moving spheres touch (unit diameters, or a mixture's pair)? The one formula both
 // engines use, so that the fast engine can be checked against the reference.
 #pragma once
 #include <algorithm>
@@ -52,10 +52,12 @@ inline double time_to_contact_before(const Vec3& dr, const Vec3& dv, double limi
 // predictor loses, and mispredictions cost more than computing the square
 // root every time. The final choice is made on the bits, so the compiler
 // cannot turn it back into a branch. A particle paired with itself (dr = 0)
-// gets kNever.
-inline double time_to_contact_unbranched(const Vec3& dr, const Vec3& dv) {
+// gets kNever. sigma2 is the squared contact distance: 1 for unit spheres
+// (a constant the compiler folds, so their search is the code it was), the
+// pair's ((sigma_i + sigma_j) / 2)^2 in a mixture.
+inline double time_to_contact_unbranched(const Vec3& dr, const Vec3& dv, double sigma2 = 1.0) {
   const double b = dot(dr, dv);
-  const double gap2 = dot(dr, dr) - 1.0;
+  const double gap2 = dot(dr, dr) - sigma2;
   const double disc = b * b - dot(dv, dv) * gap2;
   // gap2 <= 0 (overlap by round-off) gives 0: contact at once.
   // |disc| rather than max(disc, 0), which the compiler makes a branch around
@@ -76,6 +78,20 @@ inline void apply_restitution(Vec3& vi, Vec3& vj, const Vec3& n, double g, doubl
   for (int d = 0; d < 3; ++d) {
     vi[d] -= k * n[d];
     vj[d] += k * n[d];
+  }
+}
+
+// apply_restitution for unequal masses mi, mj (a mixture): the impulse
+// (1 + r) g mi mj / (mi + mj) along n, so the momentum is kept and the
+// normal relative velocity reversed and scaled by r, the tangential ones
+// unchanged.
+inline void apply_restitution_with_masses(Vec3& vi, Vec3& vj, const Vec3& n, double g, double r, double mi,
+                                          double mj) {
+  const double k = (1.0 + r) * g / (mi + mj);
+  const double ki = k * mj, kj = k * mi;
+  for (int d = 0; d < 3; ++d) {
+    vi[d] -= ki * n[d];
+    vj[d] += kj * n[d];
   }
 }
 

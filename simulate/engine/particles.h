@@ -29,6 +29,10 @@ struct Particles {
   // Angular velocities of rough particles (collision_rules.h, RoughRule);
   // empty for smooth ones, whose spins never change and are not kept.
   std::vector<Vec3> omega;
+  // The species of each particle of a mixture (collision_rules.h,
+  // MixtureRule; an index into the scene's [[species]]); empty for equal
+  // particles.
+  std::vector<std::uint8_t> species;
 
   std::size_t size() const { return r.size(); }
   void resize(std::size_t n) {

@@ -39,13 +39,21 @@ std::vector<CollisionRecord> reference_collisions(Particles p, const Rule& rule,
                                                   std::int64_t max_collisions) {
   const int n = int(p.size());
   if constexpr (Rule::kRough) p.omega.resize(p.size());  // spins not given: at rest
+  // A mixture's pair touches at the sum of its radii (the mean of its diameters); unit spheres at 1.
+  const auto contact2 = [&](int i, int j) {
+    if constexpr (Rule::kMixture) {
+      const double sigma = rule.radius[p.species[i]] + rule.radius[p.species[j]];
+      return sigma * sigma;
+    }
+    return 1.0;
+  };
   std::vector<std::uint32_t> count(n, 0);
   std::priority_queue<PairEvent, std::vector<PairEvent>, std::greater<>> queue;
   auto predict = [&](int i) {
     for (int j = 0; j < n; ++j) {
       if (j == i) continue;
       const Vec3 dv{p.v[j].x - p.v[i].x, p.v[j].y - p.v[i].y, p.v[j].z - p.v[i].z};
-      const double t = time_to_contact(minimum_image(p, i, j), dv);
+      const double t = time_to_contact(minimum_image(p, i, j), dv, contact2(i, j));
       if (t != kNever) queue.push({now + t, std::min(i, j), std::max(i, j), count[std::min(i, j)], count[std::max(i, j)]});
     }
   };
@@ -70,7 +78,11 @@ std::vector<CollisionRecord> reference_collisions(Particles p, const Rule& rule,
       const double r = rule.restitution(g, below);
       if constexpr (Rule::kRough)
         apply_tangential_restitution(p.v[e.i], p.v[e.j], p.omega[e.i], p.omega[e.j], nrm, rule.eta_t, rule.spin_turn);
-      apply_restitution(p.v[e.i], p.v[e.j], nrm, g, r);
+      if constexpr (Rule::kMixture)
+        apply_restitution_with_masses(p.v[e.i], p.v[e.j], nrm, g, r, rule.mass[p.species[e.i]],
+                                      rule.mass[p.species[e.j]]);
+      else
+        apply_restitution(p.v[e.i], p.v[e.j], nrm, g, r);
     }
     ++count[e.i];
     ++count[e.j];
@@ -90,6 +102,10 @@ template std::vector<CollisionRecord> reference_collisions(Particles, const Visc
 template std::vector<CollisionRecord> reference_collisions(Particles, const RoughRule<ElasticRule>&, double, double,
                                                            std::int64_t);
 template std::vector<CollisionRecord> reference_collisions(Particles, const RoughRule<ConstantRestitutionRule>&,
+                                                           double, double, std::int64_t);
+template std::vector<CollisionRecord> reference_collisions(Particles, const MixtureRule<ElasticRule>&, double,
+                                                           double, std::int64_t);
+template std::vector<CollisionRecord> reference_collisions(Particles, const MixtureRule<ConstantRestitutionRule>&,
                                                            double, double, std::int64_t);
 
 namespace {

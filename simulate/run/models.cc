@@ -6,6 +6,7 @@
 #include "simulate/engine/engine.h"
 #include "simulate/engine/state_archive.h"
 #include "simulate/run/run_eta.h"
+#include "simulate/scene/mixture_rule.h"
 
 namespace coolgas {
 
@@ -19,17 +20,25 @@ ViscoelasticRule viscoelastic_rule(const Scene& s) { return {s.parameter("viscoe
 // instantiates their rough engines in 2D and 3D).
 template <class Rule>
 constexpr bool kMayBeRough = std::is_same_v<Rule, ElasticRule> || std::is_same_v<Rule, ConstantRestitutionRule>;
+// The models that may be mixtures ([[species]]; engine.cc instantiates their
+// mixture engines in every dimension). The scene refuses a rough mixture.
+template <class Rule>
+constexpr bool kMayBeMixture = kMayBeRough<Rule>;
 
 // The engine of a collision rule (simulate/engine/collision_rules.h) in the
 // scene's dimension: the hot loop is compiled for exactly that rule and D,
 // and for rough particles (the scene allows them where they can spin) the
-// rough rule's engine, so a smooth scene's is the one it was.
+// rough rule's engine, and for a mixture the mixture rule's, so a smooth
+// scene of equal particles makes the engine it made before.
 template <class Rule, Rule (*rule_of)(const Scene&), class Make>
 std::unique_ptr<EngineBase> rule_engine(const Scene& s, const Make& make) {
   return s.geometry().dispatch([&]<int D>() -> std::unique_ptr<EngineBase> {
     if constexpr (kMayBeRough<Rule> && Geometry(D).rotational_axes() > 0) {
       if (s.rough())
         return make.template operator()<D>(RoughRule<Rule>(rule_of(s), s.parameter("beta"), s.particle_inertia()));
+    }
+    if constexpr (kMayBeMixture<Rule>) {
+      if (s.mixture()) return make.template operator()<D>(mixture_rule(s, rule_of(s)));
     }
     return make.template operator()<D>(rule_of(s));
   });

@@ -1,5 +1,6 @@
 #include "simulate/run/resume_point.h"
 
+#include "common/error.h"
 #include "common/trajectory/resume_frame.h"
 #include "simulate/start/configuration_check.h"
 
@@ -23,8 +24,19 @@ ResumePoint read_resume_point(const std::string& path) {
   const std::vector<double>& w = f.angular_velocity;  // rough runs only
   for (std::size_t i = 0; 3 * i < w.size(); ++i) rp.particles.omega.push_back({w[3 * i], w[3 * i + 1], w[3 * i + 2]});
   if (f.aggregates) rp.aggregates = AggregateState{std::move(f.mass), std::move(f.diameter), std::move(f.id)};
+  // A mixture's species, each an index into the file's species table, and with them the diameters.
+  std::vector<double> diameters;
+  const std::vector<double>& table = f.params.species_diameter;
+  for (std::size_t i = 0; i < f.species.size(); ++i) {
+    const std::int32_t k = f.species[i];
+    if (k < 0 || std::size_t(k) >= table.size() || table.size() != f.params.species_fraction.size())
+      throw InputError("cannot resume from '" + path + "': particle " + std::to_string(i) + " is of species " +
+                       std::to_string(k) + "; the file's table has " + std::to_string(table.size()));
+    rp.particles.species.push_back(std::uint8_t(k));
+    diameters.push_back(table[std::size_t(k)]);
+  }
   check_configuration(rp.particles, rp.aggregates ? &*rp.aggregates : nullptr, "cannot resume from '" + path + "'",
-                      Geometry(f.dimension));
+                      Geometry(f.dimension), f.species.empty() ? nullptr : &diameters);
   return rp;
 }
 

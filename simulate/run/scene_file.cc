@@ -51,6 +51,11 @@ RunParameters parameters_of(const Scene& s) {
     p.driving_period = s.driving_period;
   }
   if (s.rough()) p.inertia = s.particle_inertia();
+  for (std::size_t k = 0; k < s.species.size(); ++k) {
+    p.species_fraction.push_back(s.species[k].fraction);
+    p.species_diameter.push_back(s.species[k].diameter);
+    p.species_mass.push_back(s.species_mass(k));
+  }
   return p;
 }
 

@@ -70,6 +70,8 @@ ObservableRow row_of(const Observables& o) {
     row.largest_mass = o.aggregates->largest_mass;
   }
   row.rotational_energy = o.rotational_energy.value_or(0.0);
+  if (o.species_energy.size() > row.species_energy.size()) throw std::logic_error("more species than a file holds");
+  std::copy(o.species_energy.begin(), o.species_energy.end(), row.species_energy.begin());
   return row;
 }
 
@@ -82,6 +84,7 @@ FrameView view_of(const EngineFrame& f) {
     v.diameter = f.diameter.data();
   }
   if (!f.angular_velocity.empty()) v.angular_velocity = &f.angular_velocity[0].x;
+  if (!f.species.empty()) v.species = f.species.data();
   return v;
 }
 

@@ -22,6 +22,8 @@ namespace coolgas {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+// The scene's array of [[species]] tables (flattened under this one key).
+constexpr const char* kSpeciesKey = "species";
 using M = CollisionModel;
 using I = InitialPositions;
 
@@ -274,6 +276,11 @@ std::string scene_keys_help() {
     if (!k.inits.empty()) facts += "; init " + init_names(k);
     out += std::string("  ") + k.key + " (" + facts + "): " + k.help + "\n";
   }
+  // Not a key row: an array of tables (parse_species).
+  out += "  [[species]] (array of tables, optional; model elastic, inelastic): a mixture of sizes and masses, one "
+         "table per species (at most " + std::to_string(kMaxSpecies) + "): fraction (its share of N; the fractions "
+         "add up to 1), diameter, mass (default diameter^d), in the units of the equal particles (diameter 1, mass "
+         "1); absent: equal unit particles\n";
   return out;
 }
 
@@ -503,7 +510,7 @@ std::string dumps_blame(const Scene& s, double extra) {
 }  // namespace
 
 void check_scene_size(const Scene& s) {
-  const std::string box = check_box_fits_grid(s.L, 1.0);
+  const std::string box = check_box_fits_grid(s.L, s.largest_diameter());
   if (!box.empty()) throw InputError(box);
   check_scene_cost(s, usable_memory_bytes());
 }
@@ -544,6 +551,15 @@ void check_scene_cost(const Scene& s, double memory_bytes) {
 namespace {
 
 using KeyValues = std::map<std::string, toml::value>;
+
+void check_species_counts(const Scene& s);
+
+// sum x_k diameter_k^d: the unit particles one particle of the mixture covers, on average.
+double measure_per_particle(const Scene& s) {
+  double m = 0;
+  for (const Species& k : s.species) m += k.fraction * s.geometry().power(k.diameter);
+  return m;
+}
 
 // Which two of N, L, phi define the box: the overridden ones first, then the
 // scene's own in the order phi, N, L (the density is the physics, N the size).
@@ -590,15 +606,17 @@ void set_size(Scene& s, const KeyValues& kv, const std::set<std::string>& overri
   auto has = [&](const char* k) { return std::find(keys.begin(), keys.end(), k) != keys.end(); };
   const bool hasN = has("system.N"), hasL = has("system.L"), hasPhi = has("system.phi");
   if (!hasN) {
-    const double n = s.geometry().particles_at(s.phi, s.L);
+    double n = s.geometry().particles_at(s.phi, s.L);
+    if (s.mixture()) n /= measure_per_particle(s);
     if (!(n < kMaxParticles))
       throw InputError("system.phi = " + format_number(s.phi) + " in a box of side L = " + format_number(s.L) +
                        " means N = " + format_number(n) + " particles; the limit is N < 2^31 (32-bit ids)");
     s.N = std::llround(n);
   }
   if (s.N < 2) out_of_range("system.N", double(s.N), "need at least 2 particles");
-  if (!hasL) s.L = s.geometry().box_side_for(double(s.N), s.phi);
-  const double phi_of = s.geometry().covered_fraction(double(s.N), s.L);
+  if (s.mixture()) check_species_counts(s);
+  if (!hasL) s.L = s.geometry().box_side_for(s.unit_particles(), s.phi);
+  const double phi_of = s.geometry().covered_fraction(s.unit_particles(), s.L);
   if (hasN && hasL && hasPhi && std::fabs(phi_of - s.phi) > 1e-9 * s.phi)
     throw InputError("system.N, system.L and system.phi disagree: " +
                      std::string(s.geometry().covered_fraction_formula()) +
@@ -716,6 +734,106 @@ void check_rough(const Scene& s, const KeyValues& kv) {
                      format_number(g.largest_inertia()) + "]");
 }
 
+// ---- [[species]]: a mixture of sizes and masses.
+
+// The keys of a [[species]] table.
+const char* const kSpeciesKeys[] = {"fraction", "diameter", "mass"};
+
+// "[[species]] 2" for messages: tables counted from 1, as a reader counts them.
+std::string species_name(std::size_t k) { return "[[species]] " + std::to_string(k + 1); }
+
+double species_number(const toml::value& v, const std::string& key, double lo, bool lo_open, double hi) {
+  const double x = to_float(key, v);
+  if (!(std::isfinite(x) && (lo_open ? x > lo : x >= lo) && x <= hi))
+    out_of_range(key, x, std::string("must be a finite number ") + (lo_open ? "> " : ">= ") + format_number(lo) +
+                             (std::isfinite(hi) ? " and <= " + format_number(hi) : ""));
+  return x;
+}
+
+Species parse_one_species(const toml::value& table, std::size_t k) {
+  const std::string name = species_name(k);
+  if (!table.is_table())
+    throw InputError(name + " is not a table; write [[species]] with fraction = ..., diameter = ... below it");
+  Species out;
+  for (const auto& [key, value] : table.as_table()) {
+    const std::string full = name + " " + key;
+    if (key == "fraction") out.fraction = species_number(value, full, 0, true, 1);
+    else if (key == "diameter") out.diameter = species_number(value, full, 0, true, kInf);
+    else if (key == "mass") out.mass = species_number(value, full, 0, true, kInf);
+    else
+      throw InputError("unknown key '" + shown(key) + "' in " + name +
+                       coolgas::did_you_mean(key, {std::begin(kSpeciesKeys), std::end(kSpeciesKeys)}) +
+                       " (a species has fraction, diameter and mass)");
+  }
+  for (const char* required : {"fraction", "diameter"})
+    if (!table.as_table().count(required))
+      throw InputError(name + " must give " + required +
+                       (std::string(required) == "fraction" ? " (its share of the number of particles)"
+                                                            : " (its particles' diameter)"));
+  return out;
+}
+
+// The [[species]] tables (an array of tables, or of inline tables from --set):
+// each one well formed, at most kMaxSpecies, fractions adding up to 1.
+std::vector<Species> parse_species(const toml::value& v) {
+  if (!v.is_array() || v.as_array().empty())
+    throw InputError("species must be an array of tables: write one [[species]] table per species, with "
+                     "fraction = ... and diameter = ...");
+  const auto& tables = v.as_array();
+  if (tables.size() > std::size_t(kMaxSpecies))
+    throw InputError("the scene lists " + std::to_string(tables.size()) + " [[species]]; the limit is " +
+                     std::to_string(kMaxSpecies));
+  std::vector<Species> out;
+  double sum = 0;
+  for (std::size_t k = 0; k < tables.size(); ++k) {
+    out.push_back(parse_one_species(tables[k], k));
+    sum += out.back().fraction;
+  }
+  if (std::fabs(sum - 1.0) > 1e-9)
+    throw InputError("the [[species]] fractions add up to " + format_number(sum) +
+                     ", not 1; each is a share of the number of particles");
+  return out;
+}
+
+// What a mixture does not offer, each refused with its own line.
+void check_mixture(const Scene& s, const KeyValues& kv) {
+  if (!s.mixture()) return;
+  if (s.model != CollisionModel::kElastic && s.model != CollisionModel::kInelastic)
+    throw InputError("[[species]] is set but collision.model = \"" + s.model_name() +
+                     "\" does not offer mixtures; use \"elastic\" or \"inelastic\", or remove [[species]]");
+  if (s.rough())
+    throw InputError("[[species]] is set with rough particles (collision.beta > -1): a rough mixture is not "
+                     "offered; remove collision.beta or [[species]]");
+  if (s.driving_power)
+    throw InputError("[[species]] is set with [driving]: a driven mixture is not offered; remove [driving] or "
+                     "[[species]]");
+  if (s.init == InitialPositions::kFcc)
+    throw InputError("system.init = \"fcc\" is a lattice of equal spheres; a mixture ([[species]]) starts from "
+                     "\"random\"");
+  if (s.init == InitialPositions::kFile || kv.count("system.from"))
+    throw InputError("system.init = \"file\" with [[species]] is not offered (a file's particles carry no species "
+                     "table); start a mixture from \"random\"");
+}
+
+// Every species gets a particle.
+void check_species_counts(const Scene& s) {
+  const auto counts = s.species_counts();
+  for (std::size_t k = 0; k < counts.size(); ++k)
+    if (counts[k] == 0)
+      throw InputError(species_name(k) + " has fraction = " + format_number(s.species[k].fraction) +
+                       ", no particle of N = " + std::to_string(s.N) + "; raise N or its fraction");
+}
+
+void check_mixture_density(const Scene& s) {
+  if (!s.mixture() || s.dimension == 1) return;  // rods are placed exactly at any phi < 1
+  double limit = kMaxMixturePhi;
+  if (s.dimension == 2) limit = kMaxMixturePhi2D;
+  if (exceeds(s.phi, limit))
+    out_of_range("system.phi", s.phi,
+                 "a mixture ([[species]]) of " + std::string(s.geometry().particles()) +
+                     " is placed by plain random trials, which reach phi <= " + format_number(limit) + " here");
+}
+
 Scene build_scene(const KeyValues& kv, const std::set<std::string>& overridden) {
   Scene s;
   for (const auto& k : scene_keys()) {
@@ -725,12 +843,15 @@ Scene build_scene(const KeyValues& kv, const std::set<std::string>& overridden) 
     check_value(k, v);
     k.set(s, v);
   }
+  if (const auto it = kv.find(kSpeciesKey); it != kv.end()) s.species = parse_species(it->second);
   check_unused_keys(s, kv);
+  check_mixture(s, kv);
   check_driving(s, kv);
   check_rough(s, kv);
   check_required(s, kv);
   set_size(s, kv, overridden);
   check_relations(s);
+  check_mixture_density(s);
   // A start from a file knows its size here only when the scene states it
   // (a resumed run's effective scene); else once the file is read.
   if (s.init != InitialPositions::kFile || (s.N > 0 && s.L > 0)) check_scene_size(s);
@@ -750,8 +871,8 @@ Scene parse_scene(const std::string& toml_text, const std::string& source, const
   }
   for (const auto& entry : kv) {
     const std::string& key = entry.first;  // a name, not a binding: lambdas capture it (clang before 16 cannot)
-    const bool known = std::any_of(scene_keys().begin(), scene_keys().end(),
-                                   [&](const SceneKey& k) { return key == k.key; });
+    const bool known = key == kSpeciesKey || std::any_of(scene_keys().begin(), scene_keys().end(),
+                                                         [&](const SceneKey& k) { return key == k.key; });
     if (!known) throw InputError("unknown scene key '" + shown(key) + "'" + did_you_mean(key));
   }
   return build_scene(kv, overridden);
@@ -759,6 +880,7 @@ Scene parse_scene(const std::string& toml_text, const std::string& source, const
 
 std::string physics_toml(const Scene& s) {
   Scene p;
+  p.species = s.species;
   for (const SceneKey& k : scene_keys()) {
     const std::string value = k.toml(s);
     if (key_changeable_on_resume(k.key) || value.empty()) continue;
@@ -802,7 +924,43 @@ std::string Scene::to_toml() const {
     if (name != table) out += (table.empty() ? "[" : "\n[") + name + "]\n", table = name;
     out += key.substr(key.find('.') + 1) + " = " + value + "\n";
   }
+  for (std::size_t k = 0; k < species.size(); ++k)  // written only for a mixture: other scenes' text is as before
+    out += "\n[[species]]\nfraction = " + toml_float(species[k].fraction) + "\ndiameter = " +
+           toml_float(species[k].diameter) + "\nmass = " + toml_float(species_mass(k)) + "\n";
   return out;
+}
+
+double Scene::species_mass(std::size_t k) const {
+  return species.at(k).mass.value_or(geometry().mass_of_diameter(species.at(k).diameter));
+}
+
+std::vector<std::int64_t> Scene::species_counts() const {
+  std::vector<std::int64_t> counts(species.size());
+  std::vector<std::pair<double, std::size_t>> remainders;
+  std::int64_t given = 0;
+  for (std::size_t k = 0; k < species.size(); ++k) {
+    const double exact = species[k].fraction * double(N);
+    counts[k] = std::int64_t(std::floor(exact));
+    given += counts[k];
+    remainders.emplace_back(-(exact - std::floor(exact)), k);  // largest first, then the earlier species
+  }
+  std::sort(remainders.begin(), remainders.end());
+  for (std::size_t r = 0; given < N && r < remainders.size(); ++r, ++given) ++counts[remainders[r].second];
+  return counts;
+}
+
+double Scene::largest_diameter() const {
+  double d = species.empty() ? 1.0 : 0.0;
+  for (const Species& k : species) d = std::max(d, k.diameter);
+  return d;
+}
+
+double Scene::unit_particles() const {
+  if (species.empty()) return double(N);
+  const auto counts = species_counts();
+  double sum = 0;
+  for (std::size_t k = 0; k < species.size(); ++k) sum += double(counts[k]) * geometry().power(species[k].diameter);
+  return sum;
 }
 
 }  // namespace coolgas

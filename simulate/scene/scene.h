@@ -15,6 +15,7 @@
 #include "common/geometry.h"
 #include "common/limits.h"
 #include "common/trajectory/collision_models.h"
+#include "common/trajectory/run_parameters.h"
 
 namespace coolgas {
 
@@ -30,6 +31,19 @@ enum class CollisionModel { kElastic, kInelastic, kViscoelastic, kAggregation };
 inline constexpr double kDefaultKickPeriod = 0.5;
 // collision.model and /parameters/model of `m`: "elastic", ...
 std::string model_name(CollisionModel m);
+
+// One species of a mixture, a [[species]] table of the scene: its share of
+// the number of particles, its diameter and its mass (absent: diameter^d,
+// the unit particle's density). Lengths and masses are in the units the
+// scene writes them in, those of the equal-particle gas (its particles have
+// diameter 1 and mass 1); docs/simulate.md, "Mixtures".
+struct Species {
+  double fraction = 0;
+  double diameter = 1;
+  std::optional<double> mass;
+};
+// The most species a scene may list: those a file holds.
+inline constexpr int kMaxSpecies = int(kMaxFileSpecies);
 
 struct Scene {
   // system
@@ -52,6 +66,8 @@ struct Scene {
   // system.inertia: rough particles' moment of inertia per m a² (a the
   // radius); absent: a uniform ball's (Geometry::uniform_inertia).
   std::optional<double> inertia;
+  // [[species]]: a mixture of sizes and masses; empty: equal unit particles.
+  std::vector<Species> species;
   // collision
   CollisionModel model = CollisionModel::kElastic;
   // The model's parameters collision.<name> (common/trajectory/collision_models.h)
@@ -81,6 +97,19 @@ struct Scene {
   Geometry geometry() const { return Geometry(dimension); }
   // collision.beta > -1: the particles spin and collisions turn them.
   bool rough() const { return is_rough(collision); }
+  // [[species]] given: particles of several sizes and masses.
+  bool mixture() const { return !species.empty(); }
+  // Species k's mass: its `mass`, else diameter^d.
+  double species_mass(std::size_t k) const;
+  // The particles of each species: fraction x N rounded so that they add up
+  // to N (largest remainders; ties to the earlier species). Particle ids
+  // follow the table: species 0 first.
+  std::vector<std::int64_t> species_counts() const;
+  // The diameter of the largest particle (1 without [[species]]): cells are that wide.
+  double largest_diameter() const;
+  // The particles' total measure in unit particles: sum over species of
+  // N_k diameter_k^d (N without [[species]]); phi = covered_fraction of it.
+  double unit_particles() const;
   // system.inertia, else a uniform ball's in the scene's dimension.
   double particle_inertia() const { return inertia.value_or(geometry().uniform_inertia()); }
   // collision.<name>: the scene's value, else the parameter's default;
@@ -136,6 +165,11 @@ inline constexpr double kMaxRandomPhi = 0.36;
 // The same for disks (saturation at 0.547; Feder 1980), placed by plain
 // trials (simulate/start/rsa_disks.h), whose cost grows steeply towards it.
 inline constexpr double kMaxRandomPhi2D = 0.45;
+// The same for a mixture, placed by plain trials, largest first
+// (simulate/start/rsa_mixture.h), in 3D and 2D; rods of any lengths are
+// placed exactly at any density below 1.
+inline constexpr double kMaxMixturePhi = 0.30;
+inline constexpr double kMaxMixturePhi2D = 0.40;
 // FCC lattice with nearest neighbours at one diameter: π/(3√2).
 inline constexpr double kMaxFccPhi = 0.7404;
 

@@ -18,8 +18,9 @@ namespace {
 struct Spheres {
   const Particles& p;
   const AggregateState* a;
+  const std::vector<double>* mixture;  // each particle's diameter in a mixture
   bool live(std::size_t i) const { return !a || a->id[i] >= 0; }
-  double diameter(std::size_t i) const { return a ? a->diameter[i] : 1.0; }
+  double diameter(std::size_t i) const { return a ? a->diameter[i] : mixture ? (*mixture)[i] : 1.0; }
 };
 
 [[noreturn]] void refuse(const std::string& source, const std::string& what) {
@@ -34,17 +35,18 @@ void check_sizes(const Spheres& s, const std::string& source) {
   const std::size_t n = s.p.size();
   if (n < 2 || double(n) >= 2147483648.0)
     refuse(source, "N = " + std::to_string(n) + " particles; allowed are 2 <= N < 2^31");
-  if (s.p.v.size() != n || s.p.image.size() != n || (s.a && (s.a->diameter.size() != n || s.a->id.size() != n)))
+  if (s.p.v.size() != n || s.p.image.size() != n || (s.a && (s.a->diameter.size() != n || s.a->id.size() != n)) ||
+      (s.mixture && s.mixture->size() != n))
     refuse(source, "positions, velocities and images hold different numbers of particles");
 }
 
 double largest_diameter(const Spheres& s, const std::string& source) {
-  double d = 1.0;
+  double d = s.mixture ? 0.0 : 1.0;
   for (std::size_t i = 0; i < s.p.size(); ++i) {
     if (!s.live(i)) continue;
-    if (!(std::isfinite(s.diameter(i)) && s.diameter(i) >= 1.0))
+    if (!(std::isfinite(s.diameter(i)) && (s.mixture ? s.diameter(i) > 0 : s.diameter(i) >= 1.0)))
       refuse(source, "particle " + std::to_string(i) + " has diameter " + format_number(s.diameter(i)) +
-                         "; diameters are finite and >= 1");
+                         (s.mixture ? "; diameters are finite and > 0" : "; diameters are finite and >= 1"));
     d = std::max(d, s.diameter(i));
   }
   return d;
@@ -116,8 +118,8 @@ void check_overlaps(const Spheres& s, double width, const std::string& source, G
 }  // namespace
 
 void check_configuration(const Particles& p, const AggregateState* aggregates, const std::string& source,
-                         Geometry g) {
-  const Spheres s{p, aggregates};
+                         Geometry g, const std::vector<double>* diameters) {
+  const Spheres s{p, aggregates, diameters};
   check_sizes(s, source);
   const double width = largest_diameter(s, source);
   check_box(p.L, width, source, g);

@@ -29,7 +29,9 @@ inline constexpr double kOverlapTolerance = 1e-9;
 // slot's diameter; empty slots (id -1) are skipped. In 2D and 1D, disks
 // (z = 0) or rods (y = z = 0), whose grids have one layer or one row of
 // cells (so a ring may be up to 2^31 long).
+// `diameters` (a mixture's; null otherwise) gives each particle's diameter,
+// any finite one above 0.
 void check_configuration(const Particles& p, const AggregateState* aggregates, const std::string& source,
-                         Geometry g);
+                         Geometry g, const std::vector<double>* diameters = nullptr);
 
 }  // namespace coolgas

@@ -12,8 +12,11 @@
 #include "simulate/engine/engine.h"
 #include "common/random.h"
 #include "common/geometry.h"
+#include "simulate/scene/mixture_rule.h"
+#include "simulate/start/mixture_enskog.h"
 #include "simulate/start/rod_placement.h"
 #include "simulate/start/rsa_disks.h"
+#include "simulate/start/rsa_mixture.h"
 #include "simulate/start/rsa_voxels.h"
 
 namespace coolgas {
@@ -104,9 +107,10 @@ namespace {
 // The positions after `duration` collision times of elastic dynamics in
 // dimension D. Only they are kept (velocities are drawn afresh), and only
 // they coexist with the engine: this is the set-up's memory peak.
-template <int D, class Say>
-std::vector<Vec3> equilibrated(Particles p, double duration, InterruptFlag interrupt, const Say& say) {
-  Engine<ElasticRule, D> melt(std::move(p), ElasticRule{}, 0.0);
+template <int D, class Rule, class Say>
+std::vector<Vec3> equilibrated(Particles p, const Rule& rule, double duration, InterruptFlag interrupt,
+                               const Say& say) {
+  Engine<Rule, D> melt(std::move(p), rule, 0.0);
   // In slices, for the progress line (slicing a run changes nothing: the engine contract).
   RunStatus status = RunStatus::kEventBudget;
   while (status == RunStatus::kEventBudget) {
@@ -120,21 +124,77 @@ std::vector<Vec3> equilibrated(Particles p, double duration, InterruptFlag inter
   return melt.release_positions();
 }
 
-template <class Say>
-std::vector<Vec3> equilibrated_in(Geometry g, Particles p, double duration, InterruptFlag interrupt, const Say& say) {
-  return g.dispatch([&]<int D>() { return equilibrated<D>(std::move(p), duration, interrupt, say); });
+// The melt in the scene's dimension: unit spheres' (ElasticRule) or a
+// mixture's (its contact distances and masses).
+template <class Rule, class Say>
+std::vector<Vec3> equilibrated_in(Geometry g, Particles p, const Rule& rule, double duration, InterruptFlag interrupt,
+                                  const Say& say) {
+  return g.dispatch([&]<int D>() { return equilibrated<D>(std::move(p), rule, duration, interrupt, say); });
+}
+
+// Each particle's species (ids follow the [[species]] tables: species 0
+// first) and mass.
+std::vector<std::uint8_t> species_of_particles(const Scene& s) {
+  std::vector<std::uint8_t> species;
+  const auto counts = s.species_counts();
+  for (std::size_t k = 0; k < counts.size(); ++k)
+    species.insert(species.end(), std::size_t(counts[k]), std::uint8_t(k));
+  return species;
+}
+
+std::vector<double> particle_masses(const Scene& s, const std::vector<std::uint8_t>& species) {
+  std::vector<double> mass(species.size());
+  for (std::size_t i = 0; i < species.size(); ++i) mass[i] = s.species_mass(species[i]);
+  return mass;
+}
+
+// The mixture's start: random placement largest first (rods: exact), the
+// elastic melt, Maxwellians at T0 per species (per component m_k <v_x^2> =
+// T0), the total momentum 0 and the whole rescaled to T0.
+Particles mixture_state(const Scene& s, InterruptFlag interrupt, const SetupReport& report) {
+  const auto say = [&](const std::string& line, bool phase) {
+    if (report) report(line, phase);
+  };
+  say("placing a mixture of " + std::to_string(s.N) + " particles at random" + s.geometry().in_d(), true);
+  Particles p;
+  p.L = s.L;
+  p.resize(std::size_t(s.N));
+  p.species = species_of_particles(s);
+  const std::vector<double> mass = particle_masses(s, p.species);
+  const MixtureRule<ElasticRule> rule = mixture_rule(s, ElasticRule{});
+  Random rng(std::uint64_t(s.seed));
+  place_random_mixture(p, species_diameters(s), s.geometry(), rng, interrupt, [&](std::int64_t n) {
+    say("placing at random: " + std::to_string(n) + " of " + std::to_string(s.N) + " (" + percent(n, s.N) + ")",
+        false);
+  });
+  const double T0 = initial_temperature(s);
+  draw_velocities(p, T0, rng, &mass, s.geometry());
+  if (s.equilibrate > 0) {
+    say("equilibrating: " + format_number(s.equilibrate) + " elastic collision times", true);
+    std::vector<std::uint8_t> species = p.species;
+    std::vector<Vec3> relaxed = equilibrated_in(s.geometry(), std::move(p), rule, s.equilibrate, interrupt, say);
+    p = Particles();
+    p.L = s.L;
+    p.resize(relaxed.size());
+    p.r = std::move(relaxed);
+    p.species = std::move(species);
+    draw_velocities(p, T0, rng, &mass, s.geometry());
+  }
+  return p;
 }
 
 }  // namespace
 
 double initial_temperature(const Scene& s) {
   if (s.T0 > 0) return s.T0;  // a start from a file (simulate/start/file_start.h)
+  if (s.mixture()) return mixture_unit_time_temperature(s);
   return s.geometry().unit_time_temperature(double(s.N) / s.geometry().box_measure(s.L), s.phi);
 }
 
 double initial_energy(const Scene& s) { return s.geometry().energy_per_temperature() * initial_temperature(s); }
 
 Particles initial_state(const Scene& s, InterruptFlag interrupt, const SetupReport& report) {
+  if (s.mixture()) return mixture_state(s, interrupt, report);
   const auto say = [&](const std::string& line, bool phase) {
     if (report) report(line, phase);
   };
@@ -161,7 +221,8 @@ Particles initial_state(const Scene& s, InterruptFlag interrupt, const SetupRepo
   draw_velocities(p, T0, rng, nullptr, s.geometry());
   if (s.equilibrate > 0) {
     say("equilibrating: " + format_number(s.equilibrate) + " elastic collision times", true);
-    std::vector<Vec3> relaxed = equilibrated_in(s.geometry(), std::move(p), s.equilibrate, interrupt, say);
+    std::vector<Vec3> relaxed =
+        equilibrated_in(s.geometry(), std::move(p), ElasticRule{}, s.equilibrate, interrupt, say);
     p = Particles();
     p.L = s.L;
     p.resize(relaxed.size());

@@ -4,6 +4,8 @@
 //   W2  r0 = 0.1, delta = 1e-3, N = 108000, phi = 0.208
 //   W1R W1 with perfectly rough spheres (collision.beta = 1, inertia 2/5: the
 //       energy is kept, spins drawn at T0): the rough rule's own cost
+//   W1M W1 as a binary mixture (half diameter 1, mass 1; half diameter 1.5,
+//       mass 3.375; phi = 0.208 in all): the mixture rule's own cost
 // each from the Gaussian start for 50 collisions per particle, and
 //   W5  elastic,               N = 10^6,   phi = 0.208, 20 collisions per particle
 //   W5D2 as W5 with hard disks (system.dimension = 2), area fraction 0.208
@@ -18,7 +20,7 @@
 // Rates are given per second of wall time and per second of this process's
 // CPU time: on an idle machine they agree; on a shared one the CPU figure is
 // the engine's own speed.
-// usage: engine_bench [W1|W2|all|W1R|W5|W5D2|W5D1|W7] [N] [collisions_per_particle] [repeats] [checkpoint_seconds]
+// usage: engine_bench [W1|W2|all|W1R|W1M|W5|W5D2|W5D1|W7] [N] [collisions_per_particle] [repeats] [checkpoint_seconds]
 // (W5 and W7 take their own N and collisions per particle unless given;
 // W7's N must be 64 times a tiled state's)
 // (repeats: runs of each workload, then a line with the best, median and worst;
@@ -41,6 +43,7 @@
 
 #include "simulate/engine/engine.h"
 #include "simulate/run/checkpoint.h"
+#include "simulate/scene/mixture_rule.h"
 #include "simulate/start/initial_state.h"
 #include "tests/bench/process_stats.h"
 
@@ -253,6 +256,12 @@ int main(int argc, char** argv) {
     coolgas::Scene s = workload(false, n);
     s.set_parameter("beta", 1.0);  // initial_state draws the spins
     repeat("W1R", s, coolgas::RoughRule<coolgas::ElasticRule>({}, 1.0, s.particle_inertia()), per, times);
+  }
+  if (which == "W1M") {
+    coolgas::Scene s = workload(false, n);
+    s.species = {{0.5, 1.0, std::nullopt}, {0.5, 1.5, std::nullopt}};
+    s.L = s.geometry().box_side_for(s.unit_particles(), s.phi);
+    repeat("W1M", s, coolgas::mixture_rule(s, coolgas::ElasticRule{}), per, times);
   }
   if (which == "W5") repeat("W5", workload(false, n), coolgas::ElasticRule{}, per, times);
   if (which == "W5D2") {

@@ -69,6 +69,36 @@ def test_a_rough_runs_spins_and_temperatures(gas, tmp_path):
     assert T["T_tr"].iloc[0] == pytest.approx(p["T0"], rel=1e-12)
 
 
+def test_a_mixtures_species_and_temperatures(gas, tmp_path):
+    # Mixtures ([[species]]; data-schema/h5md-profile.md, version 6): the
+    # species table, each frame's species (and masses and diameters from
+    # them), each species' temperature, exactly as the file has them; a run
+    # of equal particles has none of them.
+    from conftest import GAS
+    equal = coolgas.open(gas)
+    assert "species_fraction" not in equal.parameters and equal.frames[0].species is None
+    assert equal.frames[0].masses is None
+    scene = tmp_path / "mixture.toml"
+    scene.write_text(GAS.replace("t_end = 300", "t_end = 5") +
+                     "\n[[species]]\nfraction = 0.25\ndiameter = 1\n[[species]]\nfraction = 0.75\ndiameter = 0.8\n")
+    out = tmp_path / "mixture.h5"
+    tool("simulate", "-q", scene, "-o", out)
+    run = coolgas.open(out)
+    p = run.parameters
+    assert p["species_fraction"] == [0.25, 0.75] and p["species_diameter"] == [1.0, 0.8]
+    assert p["species_mass"] == pytest.approx([1.0, 0.8 ** 3], rel=1e-15) and p["schema_version"] == 6
+    with h5py.File(out, "r") as f:
+        frame = run.frames[-1]
+        species = f["particles/all/species/value"][-1]
+        assert np.array_equal(frame.species, species)
+        assert np.array_equal(frame.diameters, np.asarray(p["species_diameter"])[species])
+        assert np.array_equal(frame.masses, np.asarray(p["species_mass"])[species])
+        E = f["observables/species_kinetic_energy/value"][:]
+    T = run.temperatures
+    assert list(T.columns) == ["T_tr", "T_species_0", "T_species_1"]
+    assert np.array_equal(T["T_species_1"].to_numpy(), 2.0 * E[:, 1] / 3)
+
+
 def test_observables_are_the_files(gas):
     obs = coolgas.open(gas).observables
     assert obs.index.name == "t"

@@ -29,9 +29,11 @@ inline constexpr const char* kTrajectoryDatasets[] = {
     "particles/all/image/value",    "observables/kinetic_energy/value", "observables/kinetic_energy/time",
     "observables/collisions/value", "observables/total_momentum/value", "restart/time"};
 
-// A rough run's too (data-schema/h5md-profile.md, version 5): its spins and rotational energy.
+// A rough run's too (data-schema/h5md-profile.md, version 5): its spins and
+// rotational energy; and a mixture's (version 6): its species and their energies.
 inline constexpr const char* kRoughDatasets[] = {"particles/all/angular_velocity/value",
-                                                 "observables/rotational_energy/value"};
+                                                 "observables/rotational_energy/value", "particles/all/species/value",
+                                                 "observables/species_kinetic_energy/value"};
 
 // Every dump and observable of `b` equals that of `a`, bit for bit.
 inline void expect_same_trajectory(const std::string& a, const std::string& b) {

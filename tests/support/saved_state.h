@@ -50,6 +50,7 @@ inline void expect_same_frame(const EngineFrame& a, const EngineFrame& b) {
   EXPECT_EQ(a.id, b.id);
   EXPECT_EQ(a.mass, b.mass);
   EXPECT_EQ(a.diameter, b.diameter);
+  EXPECT_EQ(a.species, b.species);
 }
 
 }  // namespace coolgas::test

@@ -59,4 +59,13 @@ inline Scene rough(Scene s, double beta, std::optional<double> inertia = std::nu
   return s;
 }
 
+// The scene as a binary mixture ([[species]]): a fraction x of unit
+// particles and 1 - x of diameter `ratio` (masses diameter^d unless `mass2`
+// is given), the box side for the scene's phi. Apply after in_dimension.
+inline Scene binary_mixture(Scene s, double x, double ratio, std::optional<double> mass2 = std::nullopt) {
+  s.species = {{x, 1.0, std::nullopt}, {1.0 - x, ratio, mass2}};
+  s.L = s.geometry().box_side_for(s.unit_particles(), s.phi);
+  return s;
+}
+
 }  // namespace coolgas::test

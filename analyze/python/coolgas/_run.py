@@ -28,7 +28,8 @@ UNITS = {
 class Frame:
     """One dump. Arrays are in id order; for ballistic aggregation only the
     aggregates present (ids, masses, diameters), for the gas every particle
-    (ids 0..N-1, masses and diameters None: unit spheres). A 2D file (disks,
+    (ids 0..N-1, masses and diameters None: unit spheres; a mixture's from
+    each particle's species, in `species`). A 2D file (disks,
     dimension 2) has two columns per vector: (n, 2) arrays, which the
     analysis kernels (coolgas.clusters, velocity, structure, shape) read as
     2D; a 1D file (rods on a ring, dimension 1) one: (n, 1) arrays, read as 1D."""
@@ -45,6 +46,7 @@ class Frame:
     slots: int = None              # N of the file: particles, or aggregation slots
     extra: dict = field(default_factory=dict)
     angular_velocities: np.ndarray = None  # (n, 3) a rough run's spins (disks: about z, x and y 0); else None
+    species: np.ndarray = None     # (n,) a mixture's species (0 for the first [[species]]); else None
 
     @property
     def dimension(self):
@@ -99,7 +101,7 @@ class Frames:
             return Frame(index=j, t=d["t"], L=d["L"], positions=d["positions"], velocities=d["velocities"],
                          ids=d.get("ids", np.arange(n, dtype=np.int32)), step=d["step"], images=d["images"],
                          masses=d.get("masses"), diameters=d.get("diameters"), slots=self._slots,
-                         angular_velocities=d.get("angular_velocities"))
+                         angular_velocities=d.get("angular_velocities"), species=d.get("species"))
         d = _core.h5md_frame(self._path, j)
         n = len(d["positions"])
         ids = d.get("ids")
@@ -174,7 +176,8 @@ class Run:
                 columns.append(pd.Series(v, index=pd.Index(t, name="t"), name=name))
             else:
                 for c in range(v.shape[1]):
-                    suffix = "xyz"[c] if v.shape[1] in (1, 2, 3) else str(c)
+                    # a vector's axes; a mixture's species by index (species_kinetic_energy_0, _1, ...)
+                    suffix = "xyz"[c] if v.shape[1] in (1, 2, 3) and name != "species_kinetic_energy" else str(c)
                     columns.append(pd.Series(v[:, c], index=pd.Index(t, name="t"), name=f"{name}_{suffix}"))
         if not columns:
             return pd.DataFrame(index=pd.Index([], name="t"))
@@ -186,12 +189,17 @@ class Run:
     def temperatures(self):
         """The temperatures per axis by time, from the observables: T_tr =
         2 E/d and, for a run of rough particles, T_rot = 2 E_rot/d_r with
-        d_r = d(d - 1)/2 spinning axes (3 for spheres, 1 for disks)."""
+        d_r = d(d - 1)/2 spinning axes (3 for spheres, 1 for disks); for a
+        mixture each species' T_species_k = 2 E_k/d (coolgas-energy's columns)."""
         o = self.observables
         d = self.dimension
         T = pd.DataFrame({"T_tr": 2.0 * o["kinetic_energy"] / d}, index=o.index)
         if "rotational_energy" in o:
             T["T_rot"] = 2.0 * o["rotational_energy"] / (d * (d - 1) // 2)
+        k = 0
+        while f"species_kinetic_energy_{k}" in o:
+            T[f"T_species_{k}"] = 2.0 * o[f"species_kinetic_energy_{k}"] / d
+            k += 1
         return T
 
     @property

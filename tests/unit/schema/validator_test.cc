@@ -126,6 +126,50 @@ TEST(Validator, RoughFileFromTheWriterIsValid) {
   EXPECT_EQ(read_resume_frame(path).angular_velocity, (std::vector<double>{1, 2, 3, -1, -2, -3}));
 }
 
+// A mixture (schema version 6): the species table, each particle's species
+// in each dump, each species' energy in each observable row; its overlap
+// check takes each particle's diameter from its species (the two spheres of
+// diameter 0.5 here sit 0.6 apart, which unit spheres could not).
+TEST(Validator, MixtureFileFromTheWriterIsValid) {
+  const std::string path = test::scratch_dir("schema_mixture") + "/run.h5";
+  RunParameters p;
+  p.scene_toml = "[system]\nN = 2\n";
+  p.N = 2;
+  p.L = 5;
+  p.phi = 2 * 3.141592653589793 / 6 / 125 / 8;
+  p.T0 = 0.5;
+  p.model = "elastic";
+  p.species_fraction = {0.5, 0.5};
+  p.species_diameter = {0.5, 2.0};
+  p.species_mass = {0.125, 8.0};
+  const double pos[6] = {0.5, 1.5, 2.5, 1.1, 1.5, 2.5}, vel[6] = {0.1, 0.2, -0.3, -0.1, -0.2, 0.3};
+  {
+    H5mdWriter w = H5mdWriter::create(path, p, true, Geometry(3));
+    const std::int32_t img[6] = {}, species[2] = {0, 0};
+    ObservableRow row{0, 0, 0, 0.5, {0, 0, 0}};
+    row.species_energy[0] = 0.5;
+    w.add_observables(row);
+    FrameView frame{0, 0, 0, pos, img, vel};
+    frame.species = species;
+    w.add_frame(frame);
+  }
+  EXPECT_EQ(lines(validate(path)), std::vector<std::string>{});
+  EXPECT_EQ(read_resume_frame(path).species, (std::vector<std::int32_t>{0, 0}));
+  // Of species 1 (diameter 2), the same pair overlaps.
+  const std::string big = test::scratch_dir("schema_mixture") + "/big.h5";
+  {
+    H5mdWriter w = H5mdWriter::create(big, p, true, Geometry(3));
+    const std::int32_t img[6] = {}, species[2] = {1, 2};
+    w.add_observables(ObservableRow{0, 0, 0, 0.5, {0, 0, 0}});
+    FrameView frame{0, 0, 0, pos, img, vel};
+    frame.species = species;
+    w.add_frame(frame);
+  }
+  EXPECT_EQ(lines(validate(big)),
+            std::vector<std::string>{"/particles/all/species/value: [0, 1] = 2 is not one of the 2 the species of "
+                                     "/parameters/species_fraction"});
+}
+
 struct Corruption {
   std::string name;
   std::function<void(hid_t)> apply;
@@ -240,6 +284,32 @@ const Corruption kCorruptions[] = {
       "/parameters: attribute 'beta' is 2; rough particles have beta in (-1, 1]",
       "/particles/all/angular_velocity: missing element (angular velocities (2D: about z))",
       "/observables/rotational_energy: missing element (rotational energy per particle)"}},
+    // A mixture's table (schema version 6) comes whole, with each
+    // particle's species and each species' energy, in a file of that version.
+    {"species_table_without_species",
+     [](hid_t f) {
+       set_attr(f, "parameters", [](hid_t g) {
+         h5::write_attr(g, "schema_version", std::int64_t{6});
+         h5::write_attr(g, "species_fraction", std::vector<double>{0.5, 0.5});
+         h5::write_attr(g, "species_diameter", std::vector<double>{1, 2});
+         h5::write_attr(g, "species_mass", std::vector<double>{1, 8});
+       });
+     },
+     {"/particles/all/species: missing element (species of each particle (mixtures))",
+      "/observables/species_kinetic_energy: missing element (kinetic energy per particle of each species "
+      "(mixtures))"}},
+    {"species_table_torn_in_an_older_version",
+     [](hid_t f) {
+       set_attr(f, "parameters", [](hid_t g) {
+         h5::write_attr(g, "species_fraction", std::vector<double>{0.5, 0.4});
+         h5::write_attr(g, "species_diameter", std::vector<double>{1, 2});
+       });
+     },
+     {"/parameters: a mixture's species_fraction, species_diameter and species_mass are written together, one "
+      "value per species each",
+      "/particles/all/species: missing element (species of each particle (mixtures))",
+      "/observables/species_kinetic_energy: missing element (kinetic energy per particle of each species "
+      "(mixtures))"}},
     {"old_schema_version",
      [](hid_t f) { set_attr(f, "parameters", [](hid_t g) { h5::write_attr(g, "schema_version", std::int64_t{0}); }); },
      {"/parameters: attribute 'schema_version' is 0 but must be at least 1"}},

@@ -51,6 +51,7 @@ void perturb(RunParameters& p, const ParameterField& f) {
       using T = std::decay_t<decltype(p.*m)>;
       if constexpr (std::is_same_v<T, std::string>) p.*m += "x";
       else if constexpr (std::is_same_v<T, std::optional<double>>) p.*m = 2 * (p.*m).value_or(0) + 1;
+      else if constexpr (std::is_same_v<T, std::vector<double>>) (p.*m).push_back(0.5);  // a species more
       else p.*m = 2 * (p.*m) + 1;
     }
   }, f.member);
@@ -109,35 +110,43 @@ std::set<std::string> attribute_names(hid_t group) {
   return names;
 }
 
-// Every model's file, a driven gas's (simulate/engine/driving.h) and one of
-// rough particles: the driving attributes are there exactly when the run is
-// driven, and make its file of schema version 4; beta and inertia exactly
-// when the particles are rough (beta > -1), of version 5.
+// Every model's file, a driven gas's (simulate/engine/driving.h), one of
+// rough particles and a mixture's: the driving attributes are there exactly
+// when the run is driven, and make its file of schema version 4; beta and
+// inertia exactly when the particles are rough (beta > -1), of version 5;
+// the species table exactly for a mixture, of version 6.
 TEST(RunParameters, EachModelsFileHoldsExactlyItsFieldsAndReadsThemBack) {
   const std::set<std::string> driving = {"driving_power", "driving_period"}, rough = {"beta", "inertia"};
+  const std::set<std::string> mixture = {"species_fraction", "species_diameter", "species_mass"};
   for (const CollisionModelSpec& m : collision_models())
-    for (const std::string effect : {"", "driven", "rough"}) {
-      if (effect == "driven" && m.layout != layout::Layout::kGas) continue;
+    for (const std::string effect : {"", "driven", "rough", "mixture"}) {
+      if ((effect == "driven" || effect == "mixture") && m.layout != layout::Layout::kGas) continue;
       if (effect == "rough" && !model_uses(m.name, "beta")) continue;
       const std::string model = std::string(m.name) + (effect.empty() ? "" : "_" + effect);
       const std::string path = test::scratch_dir("run_parameters_" + model) + "/run.h5";
       RunParameters written = params_for(std::string(m.name));
       if (effect == "driven") written.driving_power = 0.3, written.driving_period = 0.5;
       if (effect == "rough") written.collision["beta"] = 0.5, written.inertia = 0.4;
+      if (effect == "mixture")
+        written.species_fraction = {0.25, 0.75}, written.species_diameter = {1, 0.5},
+        written.species_mass = {1, 0.125};
       { H5mdWriter::create(path, written, true, Geometry(3)); }
       h5::Handle f = h5::open_file(path, h5::Mode::kReadOnly);
       h5::Handle g = h5::open_group(f.id(), std::string(layout::kParameters));
       std::set<std::string> expected;
       for (const ParameterField& field : run_parameter_fields()) {
         const std::string name(field.name);
-        if (is_optional(field) ? (effect == "driven" && driving.count(name)) || (effect == "rough" && rough.count(name))
+        if (is_optional(field) ? (effect == "driven" && driving.count(name)) ||
+                                     (effect == "rough" && rough.count(name)) ||
+                                     (effect == "mixture" && mixture.count(name))
                                : !is_model_specific(field) || model_uses(m.name, field.name))
           expected.insert(name);
       }
       EXPECT_EQ(attribute_names(g.id()), expected) << model;
-      EXPECT_EQ(h5::read_attr_int(g.id(), "schema_version"), effect == "driven" ? kDrivingSchemaVersion
-                                                             : effect == "rough" ? kRoughSchemaVersion
-                                                                                 : m.schema_version)
+      EXPECT_EQ(h5::read_attr_int(g.id(), "schema_version"), effect == "driven"    ? kDrivingSchemaVersion
+                                                             : effect == "rough"   ? kRoughSchemaVersion
+                                                             : effect == "mixture" ? kMixtureSchemaVersion
+                                                                                   : m.schema_version)
           << model;
       const RunParameters read = read_parameters(g.id(), path);
       for (const ParameterField& field : run_parameter_fields()) {

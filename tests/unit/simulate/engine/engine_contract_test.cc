@@ -3,8 +3,9 @@
 // event budget, with observables and frames read in between) changes
 // nothing; the budget is honoured exactly; frames are wrapped into the box;
 // momentum is kept; an engine restored from its saved state replays the
-// same events. Driven gases (simulate/engine/driving.h) and rough particles
-// (collision.beta, whose spins a restored engine has too) keep it too.
+// same events. Driven gases (simulate/engine/driving.h), rough particles
+// (collision.beta, whose spins a restored engine has too) and mixtures
+// ([[species]], whose species a restored engine has too) keep it too.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -27,6 +28,7 @@ struct ModelIn {
   int dimension;
   bool driven = false;
   bool effect = false;
+  bool mixture = false;  // [[species]]: diameters 1 and 1.5, masses 1 and 1.5^d
 };
 
 Scene scene_of(const ModelIn& m) {
@@ -39,6 +41,8 @@ Scene scene_of(const ModelIn& m) {
     s.set_parameter(p->name, p->off && !m.effect ? *p->off : p->example);
   s.equilibrate = 0;
   if (m.driven) s.driving_power = 0.1;  // a kick every half collision time
+  if (m.dimension == 1) s = test::in_dimension(s, 1);
+  if (m.mixture) s = test::binary_mixture(s, 0.5, 1.5);
   return s;
 }
 
@@ -86,6 +90,8 @@ TEST_P(EngineContract, SlicingChangesNothingAndFramesAreWrapped) {
   EXPECT_EQ(a.rotational_energy, b.rotational_energy);
   EXPECT_EQ(a.rotational_energy.has_value(), s.rough());
   EXPECT_EQ(a.aggregates.has_value(), GetParam().model == CollisionModel::kAggregation);
+  EXPECT_EQ(a.species_energy, b.species_energy);
+  EXPECT_EQ(a.species_energy.size(), s.species.size());
 }
 
 // Long enough for the engine's own rebuilds (every 200 collisions per
@@ -130,11 +136,16 @@ std::vector<ModelIn> every_model() {
         models.push_back({r.model, dimension, false, effect});
         if (r.model != CollisionModel::kAggregation) models.push_back({r.model, dimension, true, effect});
       }
+  // Mixtures of the models that offer them, in every dimension.
+  for (const int dimension : {3, 2, 1})
+    for (const CollisionModel m : {CollisionModel::kElastic, CollisionModel::kInelastic})
+      models.push_back({m, dimension, false, false, true});
   return models;
 }
 std::string case_name(const ::testing::TestParamInfo<ModelIn>& info) {
   return model_name(info.param.model) + "_" + std::to_string(info.param.dimension) + "D" +
-         (info.param.driven ? "_driven" : "") + (info.param.effect ? "_rough" : "");
+         (info.param.driven ? "_driven" : "") + (info.param.effect ? "_rough" : "") +
+         (info.param.mixture ? "_mixture" : "");
 }
 INSTANTIATE_TEST_SUITE_P(EveryModel, EngineContract, ::testing::ValuesIn(every_model()), case_name);
 

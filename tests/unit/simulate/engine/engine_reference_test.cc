@@ -1,6 +1,6 @@
 // Every engine against a slow, plainly correct reference, in one typed test
 // body: the three rules of Engine<Rule, D> in 3D, 2D and 1D, rough spheres
-// and disks (cells, calendar,
+// and disks, mixtures in 3D, 2D and 1D (cells, calendar,
 // lazy positions) against the all-pairs reference engine, and the aggregation engine (chains,
 // a grid that is rebuilt as aggregates grow) against the all-pairs
 // aggregation reference. Chaos amplifies round-off differences, so only the
@@ -12,6 +12,7 @@
 #include "simulate/engine/aggregation_engine.h"
 #include "simulate/engine/engine.h"
 #include "simulate/engine/reference_engine.h"
+#include "simulate/scene/mixture_rule.h"
 #include "simulate/start/initial_state.h"
 #include "tests/support/scenes.h"
 
@@ -95,6 +96,36 @@ struct PerfectlyRough : RuleCase<RoughRule<ElasticRule>, D> {
   static constexpr int kEvents = 300;
 };
 
+// Mixtures (MixtureRule): each pair touches at the mean of its diameters and
+// exchanges momentum by its masses, so the events follow the reference's only
+// if both engines use the same contact distances and masses (and the fast
+// one keeps each species with its particle through renumbering, and sizes
+// its cells for the largest). Diameters 1 and 1.5 (masses 1 and 1.5^d),
+// elastic; diameters 1 and 0.6 with masses 1 and 3, inelastic. phi = 0.25
+// keeps free flights well below L/2, as the reference's minimum-image
+// predictions need (at N = 150 and phi = 0.15 a small sphere's flight of
+// 2.6 time units crossed half the box, and the reference missed its
+// collision).
+template <int D>
+struct Mixture : RuleCase<MixtureRule<ElasticRule>, D> {
+  static Scene scene() {
+    return test::binary_mixture(test::in_dimension(test::elastic_scene(300, 0.25, 12), D), 0.6, 1.5);
+  }
+  static MixtureRule<ElasticRule> rule() { return mixture_rule(scene(), ElasticRule{}); }
+  static constexpr int kEvents = 600;
+};
+template <int D>
+struct InelasticMixture : RuleCase<MixtureRule<ConstantRestitutionRule>, D> {
+  static Scene scene() {
+    return test::binary_mixture(test::in_dimension(test::inelastic_scene(300, 0.25, 0.7, 1e-3, 13), D), 0.5, 0.6,
+                                3.0);
+  }
+  static MixtureRule<ConstantRestitutionRule> rule() {
+    return mixture_rule(scene(), ConstantRestitutionRule{0.7, 1e-3});
+  }
+  static constexpr int kEvents = 600;
+};
+
 // 400 unit spheres at phi = 0.05 until 360 merges: aggregates outgrow the
 // cells (the large-aggregate index is used), become four times fewer than
 // cells (the grid is rebuilt) and merges chain. In 2D, 400 disks at
@@ -130,7 +161,8 @@ using Cases = ::testing::Types<Elastic<3>, DenseElastic<3>, DiluteElastic<3>, In
                                Aggregation, Elastic<2>, DenseElastic<2>, DiluteElastic<2>, Inelastic<2>,
                                Viscoelastic<2>, Aggregation2D, Elastic<1>, DenseElastic<1>, DiluteElastic<1>,
                                Inelastic<1>, Viscoelastic<1>, Aggregation1D, Rough<3>, Rough<2>,
-                               PerfectlyRough<3>, PerfectlyRough<2>>;
+                               PerfectlyRough<3>, PerfectlyRough<2>, Mixture<3>, Mixture<2>, Mixture<1>,
+                               InelasticMixture<3>, InelasticMixture<2>, InelasticMixture<1>>;
 TYPED_TEST_SUITE(EngineVsReference, Cases);
 
 TYPED_TEST(EngineVsReference, SameEventSequence) {

@@ -118,6 +118,69 @@ TEST(Scene, RoughParticlesOnlyWhereTheyCanSpin) {
   EXPECT_NE(physics_toml(rough).find("inertia = 0.5"), std::string::npos);
 }
 
+// Mixtures: [[species]] tables, each bad one refused in one line naming
+// the table and the value; a good one reads back, its counts add up to N,
+// phi is the total covered fraction, and without tables the text is as before.
+TEST(Scene, MixturesFromSpeciesTables) {
+  const std::string base = "[system]\nN = 1000\nphi = 0.2\n[collision]\nmodel = \"inelastic\"\nr0 = 0.9\n"
+                           "[run]\nt_end = 10\n";
+  const auto with = [&](const std::string& tables) { return base + tables; };
+  const std::string two = "[[species]]\nfraction = 0.3\ndiameter = 1\n[[species]]\nfraction = 0.7\ndiameter = 1.5\n"
+                          "mass = 2\n";
+  ASSERT_EQ(error_of({}, with(two)), "");
+  const Scene m = parse_scene(with(two), "s.toml", {});
+  EXPECT_TRUE(m.mixture());
+  EXPECT_EQ(m.species_counts(), (std::vector<std::int64_t>{300, 700}));
+  EXPECT_EQ(m.species_mass(0), 1.0);  // diameter^3
+  EXPECT_EQ(m.species_mass(1), 2.0);
+  EXPECT_EQ(m.largest_diameter(), 1.5);
+  EXPECT_NEAR(M_PI / 6 * (300 + 700 * 1.5 * 1.5 * 1.5) / std::pow(m.L, 3), 0.2, 1e-12);
+  const Scene back = parse_scene(m.to_toml(), "back", {});
+  EXPECT_EQ(back.to_toml(), m.to_toml());
+  EXPECT_EQ(back.species.size(), 2u);
+  EXPECT_NE(physics_toml(m).find("[[species]]"), std::string::npos);
+  EXPECT_EQ(parse_scene(base, "s.toml", {}).to_toml().find("species"), std::string::npos);
+  EXPECT_NE(scene_keys_help().find("[[species]] (array of tables, optional; model elastic, inelastic)"),
+            std::string::npos);
+  // Counts by largest remainders: 1/3 each of 1000 is 334, 333, 333.
+  const std::string thirds = "[[species]]\nfraction = 0.3333333333333333\ndiameter = 1\n[[species]]\n"
+                             "fraction = 0.3333333333333333\ndiameter = 1.2\n[[species]]\n"
+                             "fraction = 0.3333333333333334\ndiameter = 0.8\n";
+  EXPECT_EQ(parse_scene(with(thirds), "s.toml", {}).species_counts(), (std::vector<std::int64_t>{333, 333, 334}));
+  EXPECT_EQ(error_of({}, with("[[species]]\nfraction = 0.5\ndiameter = 1\n[[species]]\nfraction = 0.4\n"
+                              "diameter = 2\n")),
+            "the [[species]] fractions add up to 0.9, not 1; each is a share of the number of particles");
+  EXPECT_EQ(error_of({}, with("[[species]]\nfraction = 1\ndiameter = -1\n")),
+            "[[species]] 1 diameter = -1 is out of range: must be a finite number > 0");
+  EXPECT_EQ(error_of({}, with("[[species]]\nfraction = 1\ndiameter = 1\nmass = 0\n")),
+            "[[species]] 1 mass = 0 is out of range: must be a finite number > 0");
+  EXPECT_EQ(error_of({}, with("[[species]]\nfraction = 1.5\ndiameter = 1\n")),
+            "[[species]] 1 fraction = 1.5 is out of range: must be a finite number > 0 and <= 1");
+  EXPECT_EQ(error_of({}, with("[[species]]\nfraction = 1\n")),
+            "[[species]] 1 must give diameter (its particles' diameter)");
+  EXPECT_EQ(error_of({}, with("[[species]]\nfraction = 1\ndiameter = 1\ndiamter = 2\n")),
+            "unknown key 'diamter' in [[species]] 1 (did you mean 'diameter'?) (a species has fraction, diameter "
+            "and mass)");
+  EXPECT_EQ(error_of({}, with("[[species]]\nfraction = 0.9999\ndiameter = 1\n[[species]]\nfraction = 0.0001\n"
+                              "diameter = 2\n")),
+            "[[species]] 2 has fraction = 1e-04, no particle of N = 1000; raise N or its fraction");
+  EXPECT_NE(error_of({"system.phi=0.35"}, with(two))
+                .find("is out of range: a mixture ([[species]]) of spheres is placed by plain random trials, which "
+                      "reach phi <= 0.3 here"),
+            std::string::npos);
+  EXPECT_EQ(error_of({"collision.beta=0.5"}, with(two)),
+            "[[species]] is set with rough particles (collision.beta > -1): a rough mixture is not offered; remove "
+            "collision.beta or [[species]]");
+  EXPECT_EQ(error_of({"driving.power=1"}, with(two)),
+            "[[species]] is set with [driving]: a driven mixture is not offered; remove [driving] or [[species]]");
+  EXPECT_EQ(error_of({"collision.model=\"aggregation\"", "collision.r0=1"}, with(two)).substr(0, 60),
+            "[[species]] is set but collision.model = \"aggregation\" does ");
+  EXPECT_EQ(error_of({"system.init=\"fcc\""}, with(two)),
+            "system.init = \"fcc\" is a lattice of equal spheres; a mixture ([[species]]) starts from \"random\"");
+  EXPECT_EQ(error_of({"species=3"}, base), "species must be an array of tables: write one [[species]] table per "
+                                         "species, with fraction = ... and diameter = ...");
+}
+
 TEST(Scene, AllowsFccUpToItsClosePacking) {
   EXPECT_EQ(error_of({"system.phi=0.45", "system.init=fcc"}), "");
   EXPECT_NE(error_of({"system.phi=0.75", "system.init=fcc"}).find("0.7404"), std::string::npos);
