@@ -33,3 +33,16 @@ ROUGH_INERTIA := 0.4
 ROUGH_BETAS := 0 0.5 1
 ROUGH_T_FROM := 30
 ROUGH_T_END := 150
+
+# A binary mixture: half diameter 1, mass 1 and half diameter 1.5, mass
+# 1.5^3, inelastic (r0 = 0.8, delta = 0), dilute (phi = 0.02: the contact
+# values within 3 % of 1, no clustering yet), N = 20000, cooling from equal
+# temperatures. T_1/T_2 settles within about 5 collisions per particle
+# (t ~ 6) and is averaged from MIXTURE_T_FROM to MIXTURE_T_END (about 30
+# collisions per particle).
+MIXTURE_N := 20000
+MIXTURE_PHI := 0.02
+MIXTURE_R0 := 0.8
+MIXTURE_DIAMETER := 1.5
+MIXTURE_T_FROM := 6
+MIXTURE_T_END := 100

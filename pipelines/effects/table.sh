@@ -1,5 +1,5 @@
 #!/bin/sh
-# table.sh TABLES D T_RELAX T_ROUGH
+# table.sh TABLES D T_RELAX T_ROUGH T_MIXTURE
 # The effects pipeline's table (pipelines/effects/Makefile): each effect's
 # measured quantities against kinetic theory, one row each, judged by the
 # exponent table's rule (pipelines/row-verdict.sh). TSV columns
@@ -11,9 +11,12 @@
 # TABLES holds velocity_driven_P1.tsv and velocity_driven_P8.tsv
 # (coolgas-velocity --series, one row per dump), sampled from T_RELAX on,
 # and energy_rough_bBETA.tsv (coolgas-energy of rough spheres at each beta),
-# their cooling state's T_rot/T_tr averaged from T_ROUGH on; D is the dimension.
+# their cooling state's T_rot/T_tr averaged from T_ROUGH on, and
+# energy_mixture.tsv (coolgas-energy of a binary mixture), its T_1/T_2
+# averaged from T_MIXTURE on; D is the dimension (3: the mixture's contact
+# values are BMCSL's).
 set -e
-tables=$1 d=$2 relax=$3 rough_from=$4
+tables=$1 d=$2 relax=$3 rough_from=$4 mixture_from=$5
 here=$(dirname "$0")
 value() { sh "$here/../tsv-value.sh" "$@"; }
 calc() { awk "BEGIN { printf \"%.6g\", $1 }"; }
@@ -80,3 +83,47 @@ for b in $(ls "$tables" | sed -n 's/^energy_rough_b\(.*\)\.tsv$/\1/p' | sort -g)
   row "rough spheres" "T_rot/T_tr, r0 = $r, beta = $beta" "$1" "$2" "$theory" 0 "$(calc "0.05 * $theory")" \
     "two-temperature theory with Maxwellian velocities and spins; tolerance 5 % for the Sonine corrections (Santos, Kremer & dos Santos, Phys. Fluids 23, 030604 (2011))"
 done
+
+# A binary mixture: the cooling state's T_1/T_2 against Garzo & Dufty's
+# Maxwellian approximation (PRE 60, 5706 (1999)), as
+# tests/physics/mixture_test.cc derives it: per particle of species i,
+# dE_i/dt = -sum_j nu_ij (1 + r) mu_ji m_i [2 (T_i - T_j)/M + mu_ji (1 - r) w_ij]
+# (M = m_i + m_j, mu_ji = m_j/M, w_ij = T_i/m_i + T_j/m_j), with Enskog's
+# pair rates nu_ij ~ n_j chi_ij sigma_ij^2 sqrt(w_ij) (the common factor
+# cancels) and BMCSL's contact values chi_ij; T_1/T_2 is where the cooling
+# rates -dE_i/dt / T_i agree (bisection between 0.1 and 10).
+mixture_ratio() {  # r phi "x1,x2" "s1,s2" "m1,m2"
+  awk -v r="$1" -v phi="$2" -v xs="$3" -v ss="$4" -v ms="$5" '
+    function rate_gap(g,    i, j, dE, w, M, mu, zeta) {
+      T[1] = g; T[2] = 1
+      for (i = 1; i <= 2; i++) {
+        dE = 0
+        for (j = 1; j <= 2; j++) {
+          w = T[i] / m[i] + T[j] / m[j]; M = m[i] + m[j]; mu = m[j] / M
+          dE -= x[j] * chi[i, j] * sij[i, j] ^ 2 * sqrt(w) * (1 + r) * mu * m[i] * (2 * (T[i] - T[j]) / M + mu * (1 - r) * w)
+        }
+        zeta[i] = -dE / T[i]
+      }
+      return zeta[1] - zeta[2]
+    }
+    BEGIN {
+      split(xs, x, ","); split(ss, s, ","); split(ms, m, ",")
+      # xi_k = (pi/6) n <sigma^k>, with n from phi = xi_3
+      s3 = x[1] * s[1] ^ 3 + x[2] * s[2] ^ 3; s2 = x[1] * s[1] ^ 2 + x[2] * s[2] ^ 2
+      xi3 = phi; xi2 = phi * s2 / s3
+      for (i = 1; i <= 2; i++) for (j = 1; j <= 2; j++) {
+        sij[i, j] = (s[i] + s[j]) / 2; h = s[i] * s[j] / (s[i] + s[j])
+        chi[i, j] = 1 / (1 - xi3) + 3 * xi2 * h / (1 - xi3) ^ 2 + 2 * xi2 ^ 2 * h ^ 2 / (1 - xi3) ^ 3
+      }
+      lo = 0.1; hi = 10
+      for (k = 0; k < 100; k++) { mid = (lo + hi) / 2; if ((rate_gap(mid) > 0) == (rate_gap(lo) > 0)) lo = mid; else hi = mid }
+      printf "%.6g", (lo + hi) / 2
+    }'
+}
+e=$tables/energy_mixture.tsv
+r=$(value "$e" r0 '#') phi=$(value "$e" phi '#')
+theory=$(mixture_ratio "$r" "$phi" "$(value "$e" species_fraction '#')" "$(value "$e" species_diameter '#')" \
+  "$(value "$e" species_mass '#')")
+set -- $(steady "$e" T_species_0/T_species_1 "$mixture_from")
+row "mixture" "T_1/T_2, r0 = $r, diameters $(value "$e" species_diameter '#')" "$1" "$2" "$theory" 0 "$(calc "0.03 * $theory")" \
+  "Garzo & Dufty's Maxwellian approximation with BMCSL contact values; tolerance 3 % for the Sonine corrections it leaves out (small for T_1/T_2: Montanero & Garzo, Granular Matter 4, 17 (2002))"

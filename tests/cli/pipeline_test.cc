@@ -426,7 +426,7 @@ TEST(EffectsPipeline, TinyRunsGiveEveryRowJudgedAndTheFigures) {
     EXPECT_TRUE(cells[8] == "agrees" || cells[8] == "differs" || cells[8] == "not decided") << cells[8];
     theory[cells[1]] = std::stod(cells[4]);
   }
-  ASSERT_EQ(rows.size(), 4u);  // tiny.mk: the driven gas's three, rough spheres at one beta
+  ASSERT_EQ(rows.size(), 5u);  // tiny.mk: the driven gas's three, rough spheres at one beta, the mixture
   // T ~ P^(2/3): 8 times the power, 4 times the temperature, exactly.
   EXPECT_DOUBLE_EQ(theory.at("T(8P)/T(P)"), 4.0);
   // van Noije & Ernst's a2 at r0 = 0.5 in 3D: 16 (1/2)(1/2) / (73 + 168 - 36 - 52.5 + 3.75) = 4/156.25.
@@ -437,6 +437,10 @@ TEST(EffectsPipeline, TinyRunsGiveEveryRowJudgedAndTheFigures) {
   // (tests/physics/rough_spheres_test.cc: 0.867).
   EXPECT_NEAR(theory.at("T_rot/T_tr, r0 = 0.9, beta = 0.5"), 0.867077, 1e-5);
   EXPECT_TRUE(is_png(out + "/figures/rough.png"));
+  // Garzo & Dufty's T_1/T_2 of the 1 : 1.5 mixture at r0 = 0.8, phi = 0.02
+  // (tests/physics/mixture_test.cc: 0.8771).
+  EXPECT_NEAR(theory.at("T_1/T_2, r0 = 0.8, diameters 1,1.5"), 0.877136, 1e-5);
+  EXPECT_TRUE(is_png(out + "/figures/mixture.png"));
   EXPECT_EQ(run_command(make + "-q").exit_code, 0);
 }
 
