@@ -1,5 +1,5 @@
 # The effects pipeline's parameters (pipelines/effects/Makefile): sizes that
-# run in about a minute on two cores. tiny.mk overrides them for the test.
+# run in under a minute on two cores. tiny.mk overrides them for the test.
 #
 # The driven gas: the white-noise thermostat's steady state at r0 = 0.5,
 # delta = 0, phi = 0.05 (dilute enough for Enskog's energy balance within a

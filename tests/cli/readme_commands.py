@@ -39,7 +39,7 @@ SKIPPED = {
     "sh pipelines/readme-headline.sh": "rewrites README.md of the source tree; ctest Readme.HeadlineTableIsTheValidationTables runs it on a copy",
     "sh pipelines/readme-table.sh": "needs a pipeline's exponents.md and rewrites a document of the source tree; tests/cli/pipeline_scripts_cli_test.cc runs it on stand-ins",
     "make -C pipelines/dimensions -j2": "the dimension study: about an hour on 2 cores (tests/cli/pipeline_test.cc runs its recipes with PARAMETERS=tiny.mk)",
-    "make -C pipelines/effects": "the effects pipeline: about a minute on 2 cores, twice that in CPU (tests/cli/pipeline_test.cc runs its recipes with PARAMETERS=tiny.mk)",
+    "make -C pipelines/effects": "the effects pipeline: under a minute on 2 cores, as much again in CPU (tests/cli/pipeline_test.cc runs its recipes with PARAMETERS=tiny.mk)",
     "make -C pipelines/accuracy": "about 10 minutes of simulation (QUICK=1: under a minute); its recipes are plain coolgas commands tested elsewhere",
 }
 
