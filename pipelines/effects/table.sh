@@ -31,7 +31,7 @@ printf 'effect\tquantity\tmeasured\terror\ttheory\ttheory_error\ttolerance\tdevi
 printf '# format: coolgas-table 2\n'
 printf '# tool: pipelines/effects/table.sh\n'
 printf '# version: %s\n' "$(value "$tables/velocity_driven_P1.tsv" version '#')"
-printf '# simulator_version: %s\n' "$(sed -n 's/^# simulator_version: //p' "$tables"/velocity_*.tsv | sort -u | paste -sd ';' -)"
+printf '# simulator_version: %s\n' "$(sed -n 's/^# simulator_version: //p' "$tables"/velocity_*.tsv "$tables"/energy_*.tsv | sort -u | paste -sd ';' -)"
 printf '# date: %s\n' "$(date -u +%Y-%m-%d)"
 
 # The driven gas: the white-noise thermostat's steady state. The knobs come
