@@ -125,10 +125,8 @@ class Geometry {
   // number density n, covered fraction phi and temperature T:
   // ω = (2 π^((d−1)/2) / Γ(d/2)) n g(σ) √(T/m) σ^(d−1), that is
   // 4 n g √(π T) for spheres, 2 n g √(π T) for disks, 2 n g √(T/π) for rods.
-  double enskog_rate(double n, double phi, double T) const {
-    const double g = contact_value(phi);
-    return d_ == 1 ? 2.0 * n * g * std::sqrt(T / M_PI) : (d_ == 3 ? 4.0 : 2.0) * n * g * std::sqrt(M_PI * T);
-  }
+  // (The pair rate below at σ_ij = 1 and w = 2T: the same products, bit for bit.)
+  double enskog_rate(double n, double phi, double T) const { return enskog_pair_rate(n, contact_value(phi), 1.0, 2.0 * T); }
   // ---- Mixtures (the scene's [[species]]).
   // The pair correlation at contact of particles of diameters a and b in a
   // mixture at covered fraction phi, xi = Σ_k phi_k / σ_k (phi_k the
