@@ -147,6 +147,8 @@ class Checker {
   // A mixture's species table (run_parameters.h): S, the length of
   // species_fraction, read before the attribute rows of that length are
   // checked (0: no table, or one unreadable, which check_mixture reports).
+  // Whether the particles carry their species (has_particle_species).
+  bool particle_species() const { return species_ > 0 && model_ && model_keeps_species(*model_); }
   void read_species() {
     species_ = species_array("species_fraction").size();
   }
@@ -361,13 +363,16 @@ class Checker {
   void check_element(const ElementSpec& e) {
     const ObjectKind kind = kind_of(file_, e.path);
     if (kind == ObjectKind::kMissing) {
-      if (required(e.presence, e.since, model_has(e)) || (e.rough_only && rough_) || (e.mixture_only && species_ > 0))
+      if (required(e.presence, e.since, model_has(e)) || (e.rough_only && rough_) ||
+          (e.mixture_only && particle_species()))
         problem(e.path, "missing element (" + std::string(e.meaning) + ")");
       return;
     }
     if (e.rough_only && !rough_) return problem(e.path, "in a file of smooth particles (no /parameters/beta)");
     if (e.mixture_only && species_ == 0)
       return problem(e.path, "in a file of equal particles (no /parameters/species_fraction)");
+    if (e.mixture_only && !particle_species())
+      return problem(e.path, "in a file of model " + model_.value_or("?") + ", whose particles keep no species");
     if (kind == ObjectKind::kDamaged) return problem(e.path, kDamagedText);
     if (kind != ObjectKind::kGroup) return problem(e.path, "is not a group (an H5MD element holds step, time, value)");
     auto step = check_series(path_of(e.path, "step"), DataType::kInt64, e.rows, {});

@@ -107,7 +107,7 @@ EnergyRun load_energy_run(const std::string& path) {
     if (run.rotational->time != run.energy.time)
       throw InputError(path + ": /observables/rotational_energy is not recorded at the kinetic energy's times");
   }
-  if (is_mixture(run.info.params)) run.species = species_series(path, run);
+  if (has_particle_species(run.info.params)) run.species = species_series(path, run);
   return run;
 }
 

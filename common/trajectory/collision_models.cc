@@ -115,6 +115,11 @@ bool model_uses(std::string_view model, std::string_view parameter) {
   return false;
 }
 
+bool model_keeps_species(std::string_view model) {
+  const CollisionModelSpec* m = find_collision_model(model);
+  return m && m->layout != layout::Layout::kAggregation;
+}
+
 std::string collision_model_names() {
   std::string s;
   for (const auto& m : collision_models()) {

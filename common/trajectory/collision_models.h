@@ -73,6 +73,12 @@ const CollisionModelSpec* find_collision_model(std::string_view name);
 // (false for an unknown model).
 bool model_uses(std::string_view model, std::string_view parameter);
 
+// Whether a mixture's particles keep their species through a run of
+// `model`: not in ballistic aggregation, whose aggregates merge particles of
+// several species (their mass and diameter say what they are). False for an
+// unknown model.
+bool model_keeps_species(std::string_view model);
+
 // "elastic, inelastic, viscoelastic, aggregation"
 std::string collision_model_names();
 

@@ -130,7 +130,7 @@ H5mdWriter H5mdWriter::create(const std::string& path, const RunParameters& para
   w.dimension_ = g.d();
   w.layout_ = model->layout;
   w.rough_ = is_rough(params.collision);
-  w.species_ = params.species_fraction.size();
+  w.species_ = has_particle_species(params) ? params.species_fraction.size() : 0;
   RunParameters p = params;
   p.schema_version = schema_version_of(p, model->schema_version);
   p.program_version = program_version();
@@ -186,7 +186,7 @@ H5mdWriter H5mdWriter::reopen(const std::string& path, const std::string* new_sc
                      "; allowed are 1, 2 and 3");
   w.layout_ = layout_of(f);
   w.rough_ = is_rough(p.collision);
-  w.species_ = p.species_fraction.size();
+  w.species_ = has_particle_species(p) ? p.species_fraction.size() : 0;
   w.writing([&] {
     // A writer killed while it wrote a frame leaves chunks past the recorded
     // end of allocation; dropping them (below) would fail, or the file's close

@@ -151,7 +151,9 @@ class H5mdWriter {
   int dimension_ = 3;
   layout::Layout layout_ = layout::Layout::kGas;
   bool rough_ = false;  // rough particles: their spins and rotational energy are written too
-  std::size_t species_ = 0;  // a mixture's species (0: none): each particle's species and their energies written too
+  // A mixture's species, where particles keep them (0: none, or aggregation's;
+  // has_particle_species): each particle's species and their energies written too.
+  std::size_t species_ = 0;
   bool appending_ = false;  // SWMR writing started (or, for an old-format file, first row written)
   std::vector<ObservableRow> pending_;
 };

@@ -80,7 +80,7 @@ ResumeFrame read_resume_frame(const std::string& path) {
   r.aggregates = layout_of(f.id()) == Layout::kAggregation;
   const bool rough = is_rough(r.params.collision);
   in.check_memory(r.params.N, 3 * 8 + 3 * 8 + 3 * 4 + (r.aggregates ? 4 + 8 + 8 : 0) + (rough ? 3 * 8 : 0) +
-                                 (is_mixture(r.params) ? 4 : 0));
+                                 (has_particle_species(r.params) ? 4 : 0));
   const auto last_time = last_dump_time(f.id());
   if (!last_time) in.fail("it holds no complete dump");
   const hsize_t last = complete_dumps(f.id()) - 1;  // rows after it belong to an interrupted burst
@@ -99,7 +99,7 @@ ResumeFrame read_resume_frame(const std::string& path) {
   widen_to_three(r.velocity, r.particles, d);
   widen_to_three(r.image, r.particles, d);
   if (rough) r.angular_velocity = in.row<double>(kAngularVelocity, last, {n, 3});
-  if (is_mixture(r.params)) r.species = in.row<std::int32_t>(kSpecies, last, {n});
+  if (has_particle_species(r.params)) r.species = in.row<std::int32_t>(kSpecies, last, {n});
   if (r.aggregates) {
     r.id = in.row<std::int32_t>(kId, last, {n});
     r.mass = in.row<double>(kMass, last, {n});

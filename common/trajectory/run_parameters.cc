@@ -13,6 +13,9 @@
 #pragma GCC diagnostic ignored "-Wmissing-field-initializers"
 
 namespace coolgas {
+
+bool has_particle_species(const RunParameters& p) { return is_mixture(p) && model_keeps_species(p.model); }
+
 namespace {
 
 using enum ParameterRole;

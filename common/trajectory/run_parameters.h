@@ -52,6 +52,9 @@ inline constexpr std::int64_t kMixtureSchemaVersion = 6;
 inline constexpr std::size_t kMaxFileSpecies = 16;
 // Whether a run's parameters are a mixture's (species_fraction given).
 inline bool is_mixture(const RunParameters& p) { return !p.species_fraction.empty(); }
+// Whether the run's files hold each particle's species and each species'
+// kinetic energy: a mixture's, but for aggregation's (model_keeps_species).
+bool has_particle_species(const RunParameters& p);
 
 // kPhysics: defines "the same physics"; runs of one ensemble agree in it.
 // kSeed: what the runs of an ensemble differ in.

@@ -36,6 +36,16 @@ AggregateState AggregateState::unit_spheres(std::size_t n) {
   return a;
 }
 
+AggregateState AggregateState::of_species(const std::vector<std::uint8_t>& species, const std::vector<double>& mass,
+                                          const std::vector<double>& diameter) {
+  AggregateState a = unit_spheres(species.size());
+  for (std::size_t i = 0; i < species.size(); ++i) {
+    a.mass[i] = mass.at(species[i]);
+    a.diameter[i] = diameter.at(species[i]);
+  }
+  return a;
+}
+
 AggregationEngine::AggregationEngine(Particles particles, AggregateState a, double now, const EngineCounters& counters,
                                      Geometry g)
     : L_(particles.L), geo_(g), now_(now), c_(counters) {

@@ -63,6 +63,9 @@ struct AggregateState {
   std::vector<std::int32_t> id;  // i, or -1 for an empty slot
 
   static AggregateState unit_spheres(std::size_t n);  // n particles of mass 1, diameter 1
+  // A mixture's particles, each of its species' mass and diameter (index: species).
+  static AggregateState of_species(const std::vector<std::uint8_t>& species, const std::vector<double>& mass,
+                                   const std::vector<double>& diameter);
 };
 
 // The scalars of the aggregation engine's exact state, as one checkpoint record.

@@ -7,7 +7,8 @@
 //   double restitution(double g, bool& below_delta) const;
 //   int collapse_limit() const;              // (dissipative rules) see engine.cc
 //   static constexpr bool kRough;            // do collisions turn the particles' spins? (RoughRule)
-//   static constexpr bool kMixture;          // do particles differ in size and mass? (MixtureRule)
+//   static constexpr bool kMixture;          // do particles differ in size and mass? (MixtureRule,
+//                                            // whose restitution(g, a, b, below_delta) is a pair's)
 // where g > 0 is the normal relative speed before the collision; it returns
 // the coefficient of restitution r and sets below_delta when the collision
 // was made elastic by the δ cut-off. Adding a rule: a struct here, one line
@@ -16,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "simulate/engine/viscoelastic_restitution.h"
@@ -100,7 +102,9 @@ struct RoughRule : Normal {
 // A mixture of sizes and masses (the scene's [[species]]): the normal rule's
 // restitution between particles of species a and b, touching at the
 // distance (sigma_a + sigma_b) / 2 and exchanging momentum in proportion to
-// their masses (pair_prediction.h, apply_restitution_with_masses). An engine
+// their masses (pair_prediction.h, apply_restitution_with_masses). A
+// constant r0 is every pair's; viscoelastic spheres' b is the pair's own
+// (viscoelastic_pair_b), one rule per pair of species. An engine
 // of this rule keeps a species per particle, an array beside the records
 // that only its partner search reads; equal spheres never instantiate it,
 // so their hot loop is as before. Species are numbered from 0 (a byte: the
@@ -108,13 +112,26 @@ struct RoughRule : Normal {
 template <class Normal>
 struct MixtureRule : Normal {
   static constexpr bool kMixture = true;
+  static constexpr bool kPairRestitution = std::is_same_v<Normal, ViscoelasticRule>;
   MixtureRule(const Normal& normal, std::vector<double> diameter, std::vector<double> mass_)
       : Normal(normal), radius(diameter.size()), mass(std::move(mass_)) {
     for (std::size_t s = 0; s < diameter.size(); ++s) radius[s] = 0.5 * diameter[s];
+    if constexpr (kPairRestitution)
+      for (std::size_t a = 0; a < radius.size(); ++a)
+        for (std::size_t b = 0; b < radius.size(); ++b) {
+          pair.push_back(normal);
+          pair.back().b = viscoelastic_pair_b(normal.b, radius[a], radius[b], mass[a], mass[b]);
+        }
   }
   std::vector<double> radius;  // half the diameter of each species
   std::vector<double> mass;    // the mass of each species
+  std::vector<Normal> pair;    // the rule of species a with b at a * species() + b (viscoelastic only)
   int species() const { return int(radius.size()); }
+  // The restitution of a pair of species a and b at normal speed g.
+  double restitution(double g, int a, int b, bool& below_delta) const {
+    if constexpr (kPairRestitution) return pair[std::size_t(a * species() + b)].restitution(g, below_delta);
+    else return Normal::restitution(g, below_delta);
+  }
   double largest_diameter() const {
     double d = 0;
     for (const double a : radius) d = std::max(d, 2.0 * a);

@@ -579,7 +579,9 @@ void Engine<Rule, D>::collide(int i, int j) {
   const double g = (vi.x - vj.x) * n.x + (vi.y - vj.y) * n.y + (vi.z - vj.z) * n.z;
   if (g > 0) {  // approaching (always, but for round-off at grazing contact)
     bool below = false;
-    const double r = rule_.restitution(g, below);
+    double r;
+    if constexpr (Rule::kMixture) r = rule_.restitution(g, species_[std::size_t(i)], species_[std::size_t(j)], below);
+    else r = rule_.restitution(g, below);
     if constexpr (Rule::kRough)
       apply_tangential_restitution(vi, vj, omega_[i], omega_[j], n, rule_.eta_t, rule_.spin_turn);
     if constexpr (Rule::kMixture)
@@ -682,10 +684,11 @@ template class Engine<RoughRule<ElasticRule>, 2>;
 template class Engine<RoughRule<ElasticRule>, 3>;
 template class Engine<RoughRule<ConstantRestitutionRule>, 2>;
 template class Engine<RoughRule<ConstantRestitutionRule>, 3>;
-// Mixtures of sizes and masses, elastic or of constant restitution (the
-// scene refuses the others), in every dimension.
+// Mixtures of sizes and masses, of every rule (the scene refuses rough
+// mixtures), in every dimension.
 COOLGAS_ENGINE_OF(MixtureRule<ElasticRule>)
 COOLGAS_ENGINE_OF(MixtureRule<ConstantRestitutionRule>)
+COOLGAS_ENGINE_OF(MixtureRule<ViscoelasticRule>)
 
 #undef COOLGAS_ENGINE_OF
 

@@ -75,7 +75,9 @@ std::vector<CollisionRecord> reference_collisions(Particles p, const Rule& rule,
     const double g = dot(dv, nrm);
     bool below = false;
     if (g > 0) {
-      const double r = rule.restitution(g, below);
+      double r;
+      if constexpr (Rule::kMixture) r = rule.restitution(g, p.species[e.i], p.species[e.j], below);
+      else r = rule.restitution(g, below);
       if constexpr (Rule::kRough)
         apply_tangential_restitution(p.v[e.i], p.v[e.j], p.omega[e.i], p.omega[e.j], nrm, rule.eta_t, rule.spin_turn);
       if constexpr (Rule::kMixture)
@@ -107,6 +109,8 @@ template std::vector<CollisionRecord> reference_collisions(Particles, const Mixt
                                                            double, std::int64_t);
 template std::vector<CollisionRecord> reference_collisions(Particles, const MixtureRule<ConstantRestitutionRule>&,
                                                            double, double, std::int64_t);
+template std::vector<CollisionRecord> reference_collisions(Particles, const MixtureRule<ViscoelasticRule>&, double,
+                                                           double, std::int64_t);
 
 namespace {
 

@@ -36,6 +36,11 @@ State step(const State& s, double x, double h) {
 
 }  // namespace
 
+double viscoelastic_pair_b(double b, double a1, double a2, double m1, double m2) {
+  const double reduced_radius = a1 * a2 / (a1 + a2), reduced_mass = m1 * m2 / (m1 + m2);
+  return b * std::pow(reduced_radius / 0.25, 0.2) * std::pow(reduced_mass / 0.5, -0.4);
+}
+
 double viscoelastic_restitution_exact(double x) {
   const double h = 1.0 / kStepsPerUnit;
   State s{0.0, 1.0};

@@ -25,6 +25,14 @@ namespace coolgas {
 inline constexpr double kViscoelasticC1 = 1.1534489;
 inline constexpr double kViscoelasticC2 = 0.7982666;
 
+// b of a pair of spheres of one material, radii a1, a2 and masses m1, m2, from
+// b of two spheres of diameter 1 and mass 1 (a mixture's [[species]]): b =
+// A α^{2/5} with α ∝ √R_eff / m_eff (R_eff = a1 a2 / (a1 + a2), m_eff =
+// m1 m2 / (m1 + m2); Brilliantov et al. 1996), so b ∝ R_eff^{1/5} m_eff^{-2/5},
+// and the unit pair has R_eff = 1/4, m_eff = 1/2. Disks and rods take the
+// spheres' law (their restitution is the spheres' ε at any d).
+double viscoelastic_pair_b(double b, double a1, double a2, double m1, double m2);
+
 // ε(x) from the reduced equation of motion, solved now (slow: ~1 ms).
 double viscoelastic_restitution_exact(double x);
 

@@ -23,7 +23,7 @@ constexpr bool kMayBeRough = std::is_same_v<Rule, ElasticRule> || std::is_same_v
 // The models that may be mixtures ([[species]]; engine.cc instantiates their
 // mixture engines in every dimension). The scene refuses a rough mixture.
 template <class Rule>
-constexpr bool kMayBeMixture = kMayBeRough<Rule>;
+constexpr bool kMayBeMixture = kMayBeRough<Rule> || std::is_same_v<Rule, ViscoelasticRule>;
 
 // The engine of a collision rule (simulate/engine/collision_rules.h) in the
 // scene's dimension: the hot loop is compiled for exactly that rule and D,
@@ -59,7 +59,10 @@ std::unique_ptr<EngineBase> restore_rule_engine(const Scene& s, const StateReade
 
 std::unique_ptr<EngineBase> make_aggregation(const Scene& s, Particles p, double now, const EngineCounters& c,
                                              const AggregateState* aggregates) {
-  AggregateState a = aggregates ? *aggregates : AggregateState::unit_spheres(p.size());
+  // A start: unit spheres, or a mixture's particles (each then an aggregate of its species' mass and diameter).
+  AggregateState a = aggregates          ? *aggregates
+                     : p.species.empty() ? AggregateState::unit_spheres(p.size())
+                                         : AggregateState::of_species(p.species, species_masses(s), species_diameters(s));
   return std::make_unique<AggregationEngine>(std::move(p), std::move(a), now, c, s.geometry());
 }
 // The checkpoint says its dimension; a scene of another one is refused.

@@ -277,7 +277,7 @@ std::string scene_keys_help() {
     out += std::string("  ") + k.key + " (" + facts + "): " + k.help + "\n";
   }
   // Not a key row: an array of tables (parse_species).
-  out += "  [[species]] (array of tables, optional; model elastic, inelastic): a mixture of sizes and masses, one "
+  out += "  [[species]] (array of tables, optional; every model): a mixture of sizes and masses, one "
          "table per species (at most " + std::to_string(kMaxSpecies) + "): fraction (its share of N; the fractions "
          "add up to 1), diameter, mass (default diameter^d), in the units of the equal particles (diameter 1, mass "
          "1); absent: equal unit particles\n";
@@ -798,9 +798,6 @@ std::vector<Species> parse_species(const toml::value& v) {
 // What a mixture does not offer, each refused with its own line.
 void check_mixture(const Scene& s, const KeyValues& kv) {
   if (!s.mixture()) return;
-  if (s.model != CollisionModel::kElastic && s.model != CollisionModel::kInelastic)
-    throw InputError("[[species]] is set but collision.model = \"" + s.model_name() +
-                     "\" does not offer mixtures; use \"elastic\" or \"inelastic\", or remove [[species]]");
   if (s.rough())
     throw InputError("[[species]] is set with rough particles (collision.beta > -1): a rough mixture is not "
                      "offered; remove collision.beta or [[species]]");

@@ -30,15 +30,18 @@ inline constexpr const char* kTrajectoryDatasets[] = {
     "observables/collisions/value", "observables/total_momentum/value", "restart/time"};
 
 // A rough run's too (data-schema/h5md-profile.md, version 5): its spins and
-// rotational energy; and a mixture's (version 6): its species and their energies.
-inline constexpr const char* kRoughDatasets[] = {"particles/all/angular_velocity/value",
-                                                 "observables/rotational_energy/value", "particles/all/species/value",
-                                                 "observables/species_kinetic_energy/value"};
+// rotational energy; a mixture's (version 6): its species and their
+// energies; and aggregation's: each aggregate's id, mass and diameter.
+inline constexpr const char* kModelDatasets[] = {
+    "particles/all/angular_velocity/value",     "observables/rotational_energy/value",
+    "particles/all/species/value",              "observables/species_kinetic_energy/value",
+    "particles/all/id/value",                   "particles/all/mass/value",
+    "particles/all/diameter/value",             "observables/largest_mass/value"};
 
 // Every dump and observable of `b` equals that of `a`, bit for bit.
 inline void expect_same_trajectory(const std::string& a, const std::string& b) {
   h5::Handle fa = h5::open_file(a, h5::Mode::kReadOnly), fb = h5::open_file(b, h5::Mode::kReadOnly);
-  for (const char* ds : kRoughDatasets) {
+  for (const char* ds : kModelDatasets) {
     if (!h5::exists(fa.id(), ds)) continue;
     ASSERT_TRUE(h5::exists(fb.id(), ds)) << ds << " of " << b;
     EXPECT_TRUE(dataset_bytes(fa.id(), ds) == dataset_bytes(fb.id(), ds)) << ds << " of " << b << " differs";

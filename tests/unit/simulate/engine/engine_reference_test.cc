@@ -1,9 +1,9 @@
 // Every engine against a slow, plainly correct reference, in one typed test
 // body: the three rules of Engine<Rule, D> in 3D, 2D and 1D, rough spheres
-// and disks, mixtures in 3D, 2D and 1D (cells, calendar,
+// and disks, mixtures (elastic, inelastic, viscoelastic) in 3D, 2D and 1D (cells, calendar,
 // lazy positions) against the all-pairs reference engine, and the aggregation engine (chains,
 // a grid that is rebuilt as aggregates grow) against the all-pairs
-// aggregation reference. Chaos amplifies round-off differences, so only the
+// aggregation reference, from equal spheres and from a mixture. Chaos amplifies round-off differences, so only the
 // first few events per particle are compared.
 #include <gtest/gtest.h>
 
@@ -126,6 +126,17 @@ struct InelasticMixture : RuleCase<MixtureRule<ConstantRestitutionRule>, D> {
   static constexpr int kEvents = 600;
 };
 
+// Viscoelastic: each pair of species has its own b (viscoelastic_pair_b),
+// so the events follow only if both engines take the pair's.
+template <int D>
+struct ViscoelasticMixture : RuleCase<MixtureRule<ViscoelasticRule>, D> {
+  static Scene scene() {
+    return test::binary_mixture(test::in_dimension(test::elastic_scene(300, 0.25, 14), D), 0.5, 0.6, 3.0);
+  }
+  static MixtureRule<ViscoelasticRule> rule() { return mixture_rule(scene(), ViscoelasticRule{0.3, 0.0}); }
+  static constexpr int kEvents = 600;
+};
+
 // 400 unit spheres at phi = 0.05 until 360 merges: aggregates outgrow the
 // cells (the large-aggregate index is used), become four times fewer than
 // cells (the grid is rebuilt) and merges chain. In 2D, 400 disks at
@@ -151,6 +162,23 @@ struct AggregationCase {
     return reference_merges(p, AggregateState::unit_spheres(p.size()), 0.0, 1e9, n, Geometry(D));
   }
 };
+// Aggregation from a binary mixture (diameters 1 and 1.5, masses 1 and 2):
+// each particle starts as an aggregate of its species.
+template <int D>
+struct AggregationMixture : AggregationCase<D> {
+  using typename AggregationCase<D>::NoRule;
+  using EngineType = AggregationEngine;
+  static Scene scene() { return test::binary_mixture(AggregationCase<D>::scene(), 0.5, 1.5, 2.0); }
+  static AggregateState start(const Particles& p) {
+    return AggregateState::of_species(p.species, {1.0, 2.0}, {1.0, 1.5});
+  }
+  static std::unique_ptr<EngineType> engine(const Particles& p, NoRule) {
+    return std::make_unique<EngineType>(p, start(p), 0.0, EngineCounters{}, Geometry(D));
+  }
+  static std::vector<CollisionRecord> reference(const Particles& p, NoRule, int n) {
+    return reference_merges(p, start(p), 0.0, 1e9, n, Geometry(D));
+  }
+};
 using Aggregation = AggregationCase<3>;
 using Aggregation2D = AggregationCase<2>;
 using Aggregation1D = AggregationCase<1>;
@@ -162,7 +190,9 @@ using Cases = ::testing::Types<Elastic<3>, DenseElastic<3>, DiluteElastic<3>, In
                                Viscoelastic<2>, Aggregation2D, Elastic<1>, DenseElastic<1>, DiluteElastic<1>,
                                Inelastic<1>, Viscoelastic<1>, Aggregation1D, Rough<3>, Rough<2>,
                                PerfectlyRough<3>, PerfectlyRough<2>, Mixture<3>, Mixture<2>, Mixture<1>,
-                               InelasticMixture<3>, InelasticMixture<2>, InelasticMixture<1>>;
+                               InelasticMixture<3>, InelasticMixture<2>, InelasticMixture<1>,
+                               ViscoelasticMixture<3>, ViscoelasticMixture<2>, ViscoelasticMixture<1>,
+                               AggregationMixture<3>, AggregationMixture<2>, AggregationMixture<1>>;
 TYPED_TEST_SUITE(EngineVsReference, Cases);
 
 TYPED_TEST(EngineVsReference, SameEventSequence) {

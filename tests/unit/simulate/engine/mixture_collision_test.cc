@@ -3,7 +3,8 @@
 // becomes -r times itself, the tangential ones are unchanged, and the energy
 // lost is (1 - r^2) mu g^2 / 2 (mu the reduced mass); at equal unit masses
 // the rule is the equal spheres' one, bit for bit. Two particles of
-// diameters 1 and 1.5 meet at 1.25.
+// diameters 1 and 1.5 meet at 1.25. Viscoelastic pairs each take their own
+// b, b (4 R_ij)^{1/5} (2 m_ij)^{-2/5}.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -90,6 +91,32 @@ TEST(MixtureCollision, TheEngineMeetsAtTheMeanDiameterAndBouncesByTheMasses) {
   ASSERT_EQ(o.species_energy.size(), 2u);
   EXPECT_NEAR(o.species_energy[0], 0.5 * f.velocity[0].x * f.velocity[0].x, 1e-14);  // one particle of each
   EXPECT_NEAR(o.species_energy[1], 0.5 * 3.375 * f.velocity[1].x * f.velocity[1].x, 1e-14);
+}
+
+// b scales as R_eff^{1/5} m_eff^{-2/5}: the unit pair keeps b, spheres of
+// diameter 2 and mass 8 (R_eff 2 and m_eff 8 times the unit pair's) have
+// 2^{1/5} 8^{-2/5} = 1/2 of it, and the pair's order does not matter.
+TEST(MixtureCollision, ViscoelasticPairsTakeTheirOwnB) {
+  EXPECT_EQ(viscoelastic_pair_b(0.3, 0.5, 0.5, 1, 1), 0.3);
+  EXPECT_NEAR(viscoelastic_pair_b(0.3, 1, 1, 8, 8), 0.15, 1e-15);
+  EXPECT_EQ(viscoelastic_pair_b(0.3, 0.5, 1, 1, 8), viscoelastic_pair_b(0.3, 1, 0.5, 8, 1));
+  // Head on at g = 2, a unit sphere and one of diameter 2, mass 8: the
+  // normal relative velocity becomes -eps(b_01 g^{1/5}) g.
+  Particles p;
+  p.L = 12;
+  p.resize(2);
+  p.r = {{3, 6, 6}, {6, 6, 6}};
+  p.v = {{1, 0, 0}, {-1, 0, 0}};
+  p.species = {0, 1};
+  const MixtureRule<ViscoelasticRule> rule({0.3, 0.0}, {1.0, 2.0}, {1.0, 8.0});
+  Engine<MixtureRule<ViscoelasticRule>, 3> engine(p, rule, 0.0);
+  engine.run_until(2.0, 100, nullptr);
+  ASSERT_EQ(engine.counters().collisions, 1);
+  const EngineFrame f = engine.frame();
+  const double b01 = viscoelastic_pair_b(0.3, 0.5, 1.0, 1.0, 8.0);
+  EXPECT_NEAR(f.velocity[1].x - f.velocity[0].x, ViscoelasticTable::get()(b01 * std::pow(2.0, 0.2)) * 2, 1e-14);
+  EXPECT_NEAR(f.velocity[0].x + 8 * f.velocity[1].x, 1 - 8, 1e-13);  // momentum kept
+  EXPECT_GT(ViscoelasticTable::get()(b01 * std::pow(2.0, 0.2)), ViscoelasticTable::get()(0.3 * std::pow(2.0, 0.2)));
 }
 
 }  // namespace
