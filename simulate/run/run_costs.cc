@@ -40,10 +40,17 @@ constexpr double kDumpBytesGas = 47, kDumpBytesAggregation = 62;
 // and 1.88, about 1.76 (1 + 0.55 / period).
 constexpr double kKickCostPerPeriod = 0.55;
 
+// A rough collision costs 1.06 smooth ones (W1R against W1), a mixture's
+// 1/0.77 (W1M against W1: larger cells, a species per candidate); both rows
+// of tests/bench/README.md's current figures.
+constexpr double kRoughCollisionCost = 1.06, kMixtureCollisionCost = 1 / 0.77;
+
 double gas_cpu_seconds(const Scene& s, double collisions) {
   const int d = s.geometry().d();
-  const double rate = double(s.N) <= kSmallRunParticles ? kCollisionsPerSecondSmall * kSmallRunFactor[d]
-                                                         : kCollisionsPerSecondLarge * kLargeRunFactor[d];
+  double rate = double(s.N) <= kSmallRunParticles ? kCollisionsPerSecondSmall * kSmallRunFactor[d]
+                                                   : kCollisionsPerSecondLarge * kLargeRunFactor[d];
+  if (s.rough()) rate /= kRoughCollisionCost;
+  if (s.mixture()) rate /= kMixtureCollisionCost;
   const double kicks = s.driving_power ? collisions * kKickCostPerPeriod / s.driving_period : 0;
   return (collisions + kicks + s.equilibrate * double(s.N) / 2) / rate;
 }

@@ -100,6 +100,18 @@ TEST(RunPlan, ALongEquilibrationIsPricedNotSimulatedByThePilot) {
 
 // A signal during the pilot's set-up (placement, equilibration) is the
 // normal interrupted stop (exit code 3), never "internal error".
+// Rough and mixture collisions are priced at their measured costs (W1R and
+// W1M against W1, tests/bench/README.md): the same work costs 1.06 and
+// 1/0.77 times the smooth equal spheres' (the set-up left out).
+TEST(RunPlan, RoughAndMixtureCollisionsCostTheirMeasuredShare) {
+  Scene s = test::inelastic_scene(40000, 0.208, 0.5, 1e-4, 5);
+  s.equilibrate = 0;
+  const ModelCosts& costs = *model_row(s.model).costs;
+  const double smooth = costs.cpu_seconds(s, 1e9);
+  EXPECT_NEAR(costs.cpu_seconds(test::rough(s, 0.5), 1e9) / smooth, 1.06, 1e-12);
+  EXPECT_NEAR(costs.cpu_seconds(test::binary_mixture(s, 0.5, 1.5), 1e9) / smooth, 1 / 0.77, 1e-12);
+}
+
 TEST(RunPlan, APilotInterruptedInItsSetUpThrowsInterrupted) {
   Scene s = test::inelastic_scene(40000, 0.208, 0.1, 1e-4, 5);
   s.equilibrate = 1e7;
