@@ -60,15 +60,41 @@ def clusters(frame, L=None, t=None, table="distribution", bins_per_decade=10, ma
                                         None if slots is None else int(slots), definition))
 
 
-def velocity(frame, t=None, table="Phi", bins=120, ymax=6.0, tail_from=1.5, min_count=25):
+def _frame_velocities(frame, spins, species):
+    """The vectors coolgas.velocity pools: velocities or spins, all or one species'."""
+    if spins:
+        if frame.angular_velocities is None:
+            raise InputError("spins=True: this frame has no angular velocities (its particles are smooth)")
+        v = frame.angular_velocities
+        if frame.velocities.shape[1] == 2:
+            v = v[:, 2:3]  # disks spin about z only
+    else:
+        v = frame.velocities
+    if species is None:
+        return v
+    if frame.species is None:
+        raise InputError("species=%s: this frame has no species (its particles are all alike)" % species)
+    chosen = np.asarray(frame.species) == species
+    if not chosen.any():
+        raise InputError("species=%s: no particle of this frame is of that species" % species)
+    return v[chosen]
+
+
+def velocity(frame, t=None, table="Phi", bins=120, ymax=6.0, tail_from=1.5, min_count=25, spins=False,
+             species=None):
     """One dump's coolgas-velocity table: "Phi" (t y Phi Phi_err
     minus_ln_Phi; y = v_alpha / v_rms, the three components pooled), "tail"
     (t y minus_ln_Phi minus_ln_Phi_err fit) or "series" (t v_rms kappa
     kappa_err beta beta_err tail_points). frame: a Frame or velocities (N, 3).
+    With a Frame, spins=True takes a rough run's angular velocities instead
+    (disks: the one about z), and species=K a mixture's species K alone, as
+    the tool's --spins and --species do.
     df.attrs: v_rms, kappa, kappa_err, beta, beta_err (None without a fit),
     tail_points and the block's comment."""
     if isinstance(frame, Frame):
-        v, t = frame.velocities, frame.t if t is None else t
+        v, t = _frame_velocities(frame, spins, species), frame.t if t is None else t
+    elif spins or species is not None:
+        raise TypeError("spins and species need a Frame, which has them")
     else:
         v, t = frame, 0.0 if t is None else t
     d = _core.velocity_table(v, float(t), table, bins, float(ymax), float(tail_from), float(min_count))
