@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "common/hdf5_file.h"
-#include "tests/support/fault_points.h"
+#include "tests/support/killed_run.h"
 #include "tests/support/run_command.h"
 #include "tests/support/same_trajectory.h"
 #include "tests/support/simulate_cli.h"
@@ -73,13 +73,7 @@ TEST_F(DisksCli, AnExtendedRunIsBitForBitTheWholeOne) {
 // after every slice of events), resumed from its checkpoint.
 TEST_F(DisksCli, AKilledRunResumesBitForBit) {
   const std::string out = *dir_ + "/killed.h5";
-  const auto killed = run_command("COOLGAS_CHECKPOINT_INTERVAL=0 " +
-                                  test::fault(test::events_at(0.5, test::collisions_of(whole()))) +
-                                  disks(*scene_ + " -o " + out));
-  ASSERT_EQ(killed.exit_code, test::kKilled) << killed.err;
-  const auto r = run_command(test::simulate("--resume " + out));
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  test::expect_same_trajectory(whole(), out);
+  test::expect_killed_run_resumes_bit_for_bit(disks(*scene_ + " -o " + out), out, whole());
 }
 
 TEST(DisksCliScene, BadDimensionsAreOneLineEach) {

@@ -14,9 +14,8 @@
 
 #include "common/hdf5_file.h"
 #include "common/tsv.h"
-#include "tests/support/fault_points.h"
+#include "tests/support/killed_run.h"
 #include "tests/support/run_command.h"
-#include "tests/support/same_trajectory.h"
 #include "tests/support/simulate_cli.h"
 
 namespace coolgas {
@@ -111,22 +110,14 @@ TEST_F(MixtureRun, ValidatesAsSchemaVersion6WithItsSpecies) {
 
 TEST_F(MixtureRun, KilledItResumesBitForBitFromItsCheckpoint) {
   const std::string out = *dir_ + "/killed.h5";
-  const auto stopped = run_command("COOLGAS_CHECKPOINT_INTERVAL=0 " +
-                                   test::fault(test::events_at(0.5, test::collisions_of(whole()))) +
-                                   simulate(*scene_ + " -o " + out));
-  EXPECT_EQ(stopped.exit_code, test::kKilled) << stopped.err;
-  ASSERT_EQ(run_command(simulate("--resume " + out)).exit_code, 0);
-  test::expect_same_trajectory(whole(), out);
+  test::expect_killed_run_resumes_bit_for_bit(simulate(*scene_ + " -o " + out), out, whole());
 }
 
 // Without the checkpoint a resume starts from the last dump: its species
 // are read back with the positions (the run goes on, valid, to the end).
 TEST_F(MixtureRun, ResumesFromItsLastDumpWithoutACheckpoint) {
   const std::string out = *dir_ + "/dump.h5";
-  const auto stopped = run_command("COOLGAS_CHECKPOINT_INTERVAL=0 " +
-                                   test::fault(test::events_at(0.5, test::collisions_of(whole()))) +
-                                   simulate(*scene_ + " -o " + out));
-  EXPECT_EQ(stopped.exit_code, test::kKilled) << stopped.err;
+  test::kill_halfway(simulate(*scene_ + " -o " + out), whole());
   std::remove((out + ".checkpoint").c_str());
   const auto resumed = run_command(simulate("--resume " + out));
   ASSERT_EQ(resumed.exit_code, 0) << resumed.err;

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "common/hdf5_file.h"
-#include "tests/support/fault_points.h"
+#include "tests/support/killed_run.h"
 #include "tests/support/run_command.h"
 #include "tests/support/same_trajectory.h"
 #include "tests/support/simulate_cli.h"
@@ -74,13 +74,7 @@ TEST_F(RodsCli, AnExtendedRunIsBitForBitTheWholeOne) {
 // after every slice of events), resumed from its checkpoint.
 TEST_F(RodsCli, AKilledRunResumesBitForBit) {
   const std::string out = *dir_ + "/killed.h5";
-  const auto killed = run_command("COOLGAS_CHECKPOINT_INTERVAL=0 " +
-                                  test::fault(test::events_at(0.5, test::collisions_of(whole()))) +
-                                  rods(*scene_ + " -o " + out));
-  ASSERT_EQ(killed.exit_code, test::kKilled) << killed.err;
-  const auto r = run_command(test::simulate("--resume " + out));
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  test::expect_same_trajectory(whole(), out);
+  test::expect_killed_run_resumes_bit_for_bit(rods(*scene_ + " -o " + out), out, whole());
 }
 
 TEST_F(RodsCli, EstimateAndProgressWorkIn1D) {

@@ -12,9 +12,8 @@
 
 #include "common/hdf5_file.h"
 #include "common/tsv.h"
-#include "tests/support/fault_points.h"
+#include "tests/support/killed_run.h"
 #include "tests/support/run_command.h"
-#include "tests/support/same_trajectory.h"
 #include "tests/support/simulate_cli.h"
 
 namespace coolgas {
@@ -84,12 +83,7 @@ TEST_F(RoughRun, ValidatesAsSchemaVersion5) {
 
 TEST_F(RoughRun, KilledItResumesBitForBitSpinsIncluded) {
   const std::string out = *dir_ + "/killed.h5";
-  const auto stopped = run_command("COOLGAS_CHECKPOINT_INTERVAL=0 " +
-                                   test::fault(test::events_at(0.5, test::collisions_of(whole()))) +
-                                   simulate(*scene_ + " -o " + out));
-  EXPECT_EQ(stopped.exit_code, test::kKilled) << stopped.err;
-  ASSERT_EQ(run_command(simulate("--resume " + out)).exit_code, 0);
-  test::expect_same_trajectory(whole(), out);
+  test::expect_killed_run_resumes_bit_for_bit(simulate(*scene_ + " -o " + out), out, whole());
 }
 
 // The energy table's temperatures at t = 0 are T0 exactly (the start scales
