@@ -1,5 +1,6 @@
 #include "analyze/clusters/cluster_definition.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "common/error.h"
@@ -48,7 +49,8 @@ std::string contact_text(const ClusterDefinition& d, bool mixture) {
          " sigma (centre distance, periodic minimum image) are bonded; bonded particles form a cluster";
 }
 
-void check_cutoff(const ClusterDefinition& d, double L, const std::string& where, double widest) {
+void check_cutoff(const ClusterDefinition& d, double L, const std::string& where, std::span<const double> diameter) {
+  const double widest = diameter.empty() ? 1.0 : *std::max_element(diameter.begin(), diameter.end());
   if (!d.contact() || d.cutoff * widest <= L / 2) return;
   const std::string bond = widest == 1 ? "the cutoff"
                                        : "the longest bond, the cutoff times the largest diameter " +

@@ -12,6 +12,7 @@
 // needs, so the start is many small clusters, not one spanning the box as
 // the unit cells make it (docs/tools.md gives the measured threshold).
 #pragma once
+#include <span>
 #include <string>
 
 #include "common/geometry.h"
@@ -33,9 +34,10 @@ std::string definition_name(const ClusterDefinition& d);
 // The provenance line of a contact definition (the cells' is cluster_cells_text);
 // of a mixture's (particles of several diameters), the bond's scale is each pair's contact distance.
 std::string contact_text(const ClusterDefinition& d, bool mixture = false);
-// InputError unless the longest contact bond, the cutoff times `widest` (the
-// largest diameter among the particles labelled: 1 for the gas's unit
+// InputError unless the longest contact bond, the cutoff times the largest
+// of the particles' diameters `diameter` (a mixture's; none: the gas's unit
 // particles), is at most L/2 (the minimum image), naming `where` (a file's dump).
-void check_cutoff(const ClusterDefinition& d, double L, const std::string& where, double widest = 1);
+void check_cutoff(const ClusterDefinition& d, double L, const std::string& where,
+                  std::span<const double> diameter = {});
 
 }  // namespace coolgas

@@ -1,6 +1,5 @@
 #include "analyze/clusters/tool.h"
 
-#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <ostream>
@@ -32,8 +31,6 @@ struct Labelled {
     if (!diameter.empty()) diameter = species_values(frame.diameter, 1, frame.species, *species, own_diameter);
     if (position.empty()) throw InputError(where + ": no particle of species " + std::to_string(*species));
   }
-  // The largest diameter labelled: the longest contact bond is the cutoff times it.
-  double widest() const { return diameter.empty() ? 1.0 : *std::max_element(diameter.begin(), diameter.end()); }
 };
 
 }  // namespace
@@ -86,7 +83,7 @@ void run_clusters(const ClustersOptions& opt, std::ostream& final_out) {
       hist.emplace(opt.bins_per_decade, n);
     }
     // ballistic aggregation: the clusters are the aggregates themselves
-    if (definition.contact()) check_cutoff(definition, frame.L, where, labelled.widest());
+    if (definition.contact()) check_cutoff(definition, frame.L, where, labelled.diameter);
     else if (!traj.aggregates()) cluster_grid_of_dump(frame.L, traj.path(), frame.dump, g);  // a bad box names the dump
     fill_cluster_masses(*hist, labellers, definition, frame.L, labelled.position,
                         traj.aggregates() ? std::span<const double>(frame.mass) : std::span<const double>(), g,
