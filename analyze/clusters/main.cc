@@ -44,7 +44,7 @@ int main(int argc, char** argv) {
     app.add_option("--bins-per-decade", opt.bins_per_decade, "logarithmic mass bins per decade (>= 1)")
         ->capture_default_str();
     app.add_option("--species", opt.species, "only the particles of this species of a mixture (0 for the first)");
-  app.add_flag("--series", opt.series, "one row per dump: M0, M1, M2, M_avg, M_max, largest_fraction");
+    app.add_flag("--series", opt.series, "one row per dump: M0, M1, M2, M_avg, M_max, largest_fraction");
     app.add_flag("--scaled", opt.scaled,
                  "N(m,t) scaled by the mean size as in the paper's Fig. 3: columns t, x = m/M_avg, y = N M_avg^2");
     coolgas::add_dump_selection(app, opt.times, opt.exact_time, "analyse only the dump nearest this time");
