@@ -1,5 +1,6 @@
 #include "analyze/clusters/cluster_definition.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "common/error.h"
@@ -39,15 +40,23 @@ std::string definition_name(const ClusterDefinition& d) {
   return d.contact() ? "contact:" + format_number(d.cutoff) : "cells";
 }
 
-std::string contact_text(const ClusterDefinition& d) {
+std::string contact_text(const ClusterDefinition& d, bool mixture) {
+  if (mixture)
+    return "particles closer than " + format_number(d.cutoff) +
+           " sigma_ij (sigma_ij = (sigma_i + sigma_j)/2, the pair's contact distance from its species' diameters; "
+           "centre distance, periodic minimum image) are bonded; bonded particles form a cluster";
   return "particles closer than " + format_number(d.cutoff) +
          " sigma (centre distance, periodic minimum image) are bonded; bonded particles form a cluster";
 }
 
-void check_cutoff(const ClusterDefinition& d, double L, const std::string& where) {
-  if (d.contact() && !(d.cutoff <= L / 2))
-    throw InputError(where + ": --definition " + definition_name(d) + ": the cutoff exceeds half the box side, L/2 = " +
-                     format_number(L / 2) + " (distances are minimum images)");
+void check_cutoff(const ClusterDefinition& d, double L, const std::string& where, std::span<const double> diameter) {
+  const double widest = diameter.empty() ? 1.0 : *std::max_element(diameter.begin(), diameter.end());
+  if (!d.contact() || d.cutoff * widest <= L / 2) return;
+  const std::string bond = widest == 1 ? "the cutoff"
+                                       : "the longest bond, the cutoff times the largest diameter " +
+                                             format_number(widest) + " = " + format_number(d.cutoff * widest) + ",";
+  throw InputError(where + ": --definition " + definition_name(d) + ": " + bond +
+                   " exceeds half the box side, L/2 = " + format_number(L / 2) + " (distances are minimum images)");
 }
 
 }  // namespace coolgas

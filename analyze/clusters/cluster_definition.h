@@ -12,6 +12,7 @@
 // needs, so the start is many small clusters, not one spanning the box as
 // the unit cells make it (docs/tools.md gives the measured threshold).
 #pragma once
+#include <span>
 #include <string>
 
 #include "common/geometry.h"
@@ -30,9 +31,13 @@ struct ClusterDefinition {
 ClusterDefinition parse_cluster_definition(const std::string& text);
 // The definition as "cells" or "contact:1.1" (parse_cluster_definition reads it back).
 std::string definition_name(const ClusterDefinition& d);
-// The provenance line of a contact definition (the cells' is cluster_cells_text).
-std::string contact_text(const ClusterDefinition& d);
-// InputError unless a contact cutoff is at most L/2 (the minimum image), naming `where` (a file's dump).
-void check_cutoff(const ClusterDefinition& d, double L, const std::string& where);
+// The provenance line of a contact definition (the cells' is cluster_cells_text);
+// of a mixture's (particles of several diameters), the bond's scale is each pair's contact distance.
+std::string contact_text(const ClusterDefinition& d, bool mixture = false);
+// InputError unless the longest contact bond, the cutoff times the largest
+// of the particles' diameters `diameter` (a mixture's; none: the gas's unit
+// particles), is at most L/2 (the minimum image), naming `where` (a file's dump).
+void check_cutoff(const ClusterDefinition& d, double L, const std::string& where,
+                  std::span<const double> diameter = {});
 
 }  // namespace coolgas

@@ -20,7 +20,8 @@ const std::vector<std::string>& cluster_columns(ClusterTable table) {
 }
 
 void fill_cluster_masses(MassHistogram& hist, Labellers& labellers, const ClusterDefinition& definition, double L,
-                         std::span<const double> positions, std::span<const double> aggregate_mass, Geometry g) {
+                         std::span<const double> positions, std::span<const double> aggregate_mass, Geometry g,
+                         std::span<const double> diameter) {
   hist.clear();
   if (!aggregate_mass.empty()) {
     for (double m : aggregate_mass) hist.add(std::llround(m));
@@ -28,7 +29,7 @@ void fill_cluster_masses(MassHistogram& hist, Labellers& labellers, const Cluste
   }
   auto add = [&](std::int64_t m) { hist.add(m); };
   if (definition.contact()) {
-    labellers.contact.label(L, positions, definition.cutoff, g);
+    labellers.contact.label(L, positions, definition.cutoff, g, diameter);
     labellers.contact.for_each_mass(add);
     return;
   }

@@ -35,9 +35,11 @@ struct Labellers {
 // cubes, squares or segments of the ring; or contacts, the cutoff checked
 // against L by the caller), or, when `aggregate_mass` is not empty
 // (ballistic aggregation), the aggregates themselves, each of its mass
-// rounded to whole particles.
+// rounded to whole particles. `diameter` (a mixture's, one per particle;
+// empty: unit particles) scales the contacts' bonds (contact_labeller.h).
 void fill_cluster_masses(MassHistogram& hist, Labellers& labellers, const ClusterDefinition& definition, double L,
-                         std::span<const double> positions, std::span<const double> aggregate_mass, Geometry g);
+                         std::span<const double> positions, std::span<const double> aggregate_mass, Geometry g,
+                         std::span<const double> diameter = {});
 
 // The rows of one dump at time t in a box of side L in the geometry g: the
 // densities are per L^d. The series has one row and no comment (it is not a

@@ -22,7 +22,12 @@ int main(int argc, char** argv) {
         "At the paper's phi = 0.208 these cells percolate from t = 0 (the largest holds most particles).\n"
         "--definition contact[:CUTOFF] counts clusters of particles in contact instead: two particles whose\n"
         "centres are closer than CUTOFF sigma (default 1.1; periodic minimum image) are bonded, bonded\n"
-        "particles form a cluster (cell-list neighbour search, union-find); same columns.\n\n"
+        "particles form a cluster (cell-list neighbour search, union-find); same columns. In a mixture\n"
+        "([[species]]) the bond is CUTOFF sigma_ij, sigma_ij = (sigma_i + sigma_j)/2 the pair's contact distance.\n"
+        "--species K: the clusters of a mixture's species K alone (its index in the file: 0 for the first\n"
+        "[[species]] table): only its particles occupy cells or bond (CUTOFF sigma_K); the others are not\n"
+        "there. Masses stay numbers of particles; N (in largest_fraction = M_max/N; the bins end at N) is\n"
+        "species K's number of particles.\n\n"
         "Output (TSV on stdout), one block per dump:\n"
         "  t [1/omega0] time; m [particles] bin centre sqrt(lo*hi); dm [particles] integer masses in the bin;\n"
         "  N [sigma^-3 per particle] clusters per unit volume per unit mass, count/(L^3 dm);\n"
@@ -38,6 +43,7 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--bins-per-decade", opt.bins_per_decade, "logarithmic mass bins per decade (>= 1)")
         ->capture_default_str();
+    app.add_option("--species", opt.species, "only the particles of this species of a mixture (0 for the first)");
     app.add_flag("--series", opt.series, "one row per dump: M0, M1, M2, M_avg, M_max, largest_fraction");
     app.add_flag("--scaled", opt.scaled,
                  "N(m,t) scaled by the mean size as in the paper's Fig. 3: columns t, x = m/M_avg, y = N M_avg^2");

@@ -3,6 +3,7 @@
 // (data-schema/tsv-tables.md, "Shared table shapes").
 #pragma once
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,9 @@ struct ClustersOptions {
   bool scaled = false;        // N(m) blocks with only t, x = m/M_avg, y = N M_avg^2 (paper Fig. 3)
   std::vector<double> times;  // dumps nearest these times; empty = all dumps
   bool exact_time = false;  // --exact-time: refuse a time no dump has
+  // --species K: the clusters of a mixture's species K alone (its index in
+  // the file: 0 for the first [[species]] table); absent: every particle.
+  std::optional<int> species;
 };
 
 // Writes the table for opt to out. InputError on bad input.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 #include <numeric>
+#include <stdexcept>
 
 #include "common/close_pairs.h"
 
@@ -22,15 +23,26 @@ void ContactLabeller::unite(std::int32_t a, std::int32_t b) {
   else if (b < a) parent_[std::size_t(a)] = b;
 }
 
-void ContactLabeller::label(double L, std::span<const double> positions, double cutoff, Geometry g) {
+void ContactLabeller::label(double L, std::span<const double> positions, double cutoff, Geometry g,
+                            std::span<const double> diameter) {
   const std::size_t n = positions.size() / 3;
+  if (!diameter.empty() && diameter.size() != n) throw std::logic_error("ContactLabeller: a diameter per particle");
   // The union-find runs over the points in cell order (PairsWithin's), where
   // bonded points lie near each other in memory too; in the caller's order
   // (random in space) each find missed the cache.
-  const PairsWithin pairs(positions, cutoff, L, g);
+  const double widest = diameter.empty() ? 1.0 : *std::max_element(diameter.begin(), diameter.end());
+  const PairsWithin pairs(positions, cutoff * widest, L, g);
   parent_.resize(n);
   std::iota(parent_.begin(), parent_.end(), 0);
-  pairs.for_each([&](std::size_t a, std::size_t b, double) { unite(std::int32_t(a), std::int32_t(b)); });
+  if (diameter.empty()) {
+    pairs.for_each([&](std::size_t a, std::size_t b, double) { unite(std::int32_t(a), std::int32_t(b)); });
+  } else {  // a mixture: the pairs within the widest pair's reach, bonded within their own
+    const double half = cutoff / 2;
+    pairs.for_each([&](std::size_t a, std::size_t b, double r2) {
+      const double reach = half * (diameter[pairs.index(a)] + diameter[pairs.index(b)]);
+      if (r2 < reach * reach) unite(std::int32_t(a), std::int32_t(b));
+    });
+  }
   // Each tree's smallest caller index (at its root), then every particle's
   // in the caller's numbering: the root the labeller's contract names.
   std::vector<std::int32_t> smallest(n, std::numeric_limits<std::int32_t>::max()), root(n);

@@ -1,9 +1,9 @@
 // Clusters of particles in contact, the definition that does not percolate
 // at the paper's density (issue 55): two particles are bonded when their
 // centres are closer than cutoff * sigma_ij by the periodic minimum image
-// (sigma_ij = (sigma_i + sigma_j)/2, which is sigma for the gas's unit
-// particles); bonded particles belong to one cluster; a cluster's mass is
-// its number of particles.
+// (sigma_ij = (sigma_i + sigma_j)/2, their contact distance: 1 for the gas's
+// unit particles, a mixture's pair's own otherwise); bonded particles belong
+// to one cluster; a cluster's mass is its number of particles.
 //
 // The bonds are found by the shared cell list (common/close_pairs.h,
 // PairsWithin) and joined by a union-find over the particles in its cell
@@ -25,9 +25,11 @@ namespace coolgas {
 class ContactLabeller {
  public:
   // Labels the particles at `positions` (x0 y0 z0 x1 ...; inside [0, L), the
-  // coordinates past the dimension 0) of diameter sigma = 1, bonding those
-  // closer than `cutoff` (the caller has checked 0 < cutoff <= L/2).
-  void label(double L, std::span<const double> positions, double cutoff, Geometry g);
+  // coordinates past the dimension 0) of diameters `diameter` (one each;
+  // empty: all 1), bonding those closer than `cutoff` times their contact
+  // distance (the caller has checked 0 < cutoff * the largest diameter <= L/2).
+  void label(double L, std::span<const double> positions, double cutoff, Geometry g,
+             std::span<const double> diameter = {});
 
   // Calls f(mass) once per cluster, in the order of their smallest particles.
   template <class F>

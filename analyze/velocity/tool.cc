@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "common/trajectory/frame_reader.h"
+#include "common/trajectory/species_selection.h"
 #include "analyze/velocity/velocity_table.h"
 #include "common/error.h"
 #include "common/interrupt.h"
@@ -60,26 +61,6 @@ std::span<const double> spins_of(const Frame& f, Geometry space, std::vector<dou
   return packed;
 }
 
-// The velocities of a mixture's species k alone, packed (3 numbers each).
-std::span<const double> species_velocities(const Frame& f, int k, std::vector<double>& packed) {
-  packed.clear();
-  for (std::size_t i = 0; i < f.species.size(); ++i)
-    if (f.species[i] == k) packed.insert(packed.end(), f.velocity.begin() + 3 * i, f.velocity.begin() + 3 * i + 3);
-  return packed;
-}
-
-// --species K names one of the file's species.
-void check_species_option(const Trajectory& traj, const VelocityOptions& opt) {
-  if (!opt.species) return;
-  if (!traj.has(kSpecies))
-    throw InputError(opt.input + ": no species (its particles are all alike); --species needs a mixture's run "
-                     "([[species]])");
-  const std::size_t count = traj.species_count();
-  if (*opt.species < 0 || std::size_t(*opt.species) >= count)
-    throw InputError("--species " + std::to_string(*opt.species) + ": " + opt.input + " has " +
-                     std::to_string(count) + " species, 0 to " + std::to_string(count - 1));
-}
-
 }  // namespace
 
 void run_velocity(const VelocityOptions& opt, std::ostream& final_out) {
@@ -90,7 +71,7 @@ void run_velocity(const VelocityOptions& opt, std::ostream& final_out) {
   ComponentHistogram hist(opt.bins, opt.ymax);
   Trajectory traj(opt.input, kVelocity | (opt.spins ? kAngularVelocity : 0u) | (opt.species ? kSpecies : 0u) |
                                  kAnyDimension);
-  check_species_option(traj, opt);
+  check_species_option(traj, opt.species);
   if (opt.spins && !traj.has(kAngularVelocity))
     throw InputError(opt.input + ": no angular velocities (its particles are smooth); --spins needs a run of rough "
                      "particles (collision.beta > -1)");
@@ -105,9 +86,10 @@ void run_velocity(const VelocityOptions& opt, std::ostream& final_out) {
   traj.for_each_dump(traj.dumps_nearest(opt.times, opt.exact_time), buffer, [&](const Frame& frame) {
     const VelocityStats s = [&] {
       try {
-        const std::span<const double> values = opt.spins     ? spins_of(frame, space, packed)
-                                               : opt.species ? species_velocities(frame, *opt.species, packed)
-                                                             : frame.velocity;
+        const std::span<const double> values =
+            opt.spins     ? spins_of(frame, space, packed)
+            : opt.species ? species_values(frame.velocity, 3, frame.species, *opt.species, packed)
+                          : frame.velocity;
         return velocity_stats(values, hist, opt.tail_from, opt.min_count, space);
       } catch (const InputError& e) {  // the dump the statistics refuse
         throw InputError(opt.input + ": dump at t = " + format_number(frame.time) + ": " + e.what());

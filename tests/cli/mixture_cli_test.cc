@@ -3,9 +3,10 @@
 // each particle's species in the dumps, each species' energy among the
 // observables, the species table in /parameters) and resumes bit for bit
 // after a kill, from its checkpoint, and from its last dump without one;
-// coolgas-energy gives each species' temperature and coolgas-velocity
-// --species one species' statistics; a run of equal particles has none of
-// the mixture's elements.
+// coolgas-energy gives each species' temperature, coolgas-velocity
+// --species one species' statistics and coolgas-clusters --species one
+// species' clusters; a run of equal particles has none of the mixture's
+// elements.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -163,6 +164,39 @@ TEST_F(MixtureRun, TheVelocityToolTakesOneSpecies) {
                                      "--species 2: ", "coolgas-velocity --species 2");
 }
 
+// coolgas-clusters --species K: one species' clusters, every particle of it
+// counted (M1 V = N_k: 600 and 400). A species' occupied cells, or bonds,
+// are some of the whole mixture's (its bonds between two particles of one
+// species are the same), so each cluster of a species lies inside one of
+// the whole's: together the species have at least as many clusters, none
+// larger than the whole's largest.
+TEST_F(MixtureRun, TheClustersToolTakesOneSpecies) {
+  for (const std::string definition : {"cells", "contact"}) {
+    const auto series = [&](const std::string& option) {
+      const auto r = run_command(test::bin("coolgas-clusters") + " --series --definition " + definition + " " +
+                                 option + " " + whole());
+      EXPECT_EQ(r.exit_code, 0) << r.err;
+      std::istringstream in(r.out);
+      return read_table(in, "clusters");
+    };
+    const Table a = series("--species 0"), b = series("--species 1"), both = series("");
+    EXPECT_EQ(a.get("species"), "0");
+    const double V = std::pow(std::stod(a.get("L").value()), 3);
+    ASSERT_EQ(a.rows.size(), both.rows.size());
+    for (std::size_t i = 0; i < a.rows.size(); ++i) {
+      SCOPED_TRACE(definition + ", dump " + std::to_string(i));
+      const auto column = [&](const Table& t, const char* name) { return t.rows[i][t.column(name)]; };
+      EXPECT_NEAR(column(a, "M1") * V, 600, 1e-9);
+      EXPECT_NEAR(column(b, "M1") * V, 400, 1e-9);
+      EXPECT_GE(column(a, "M0") + column(b, "M0"), column(both, "M0") * (1 - 1e-12));
+      EXPECT_LE(column(a, "M_max"), column(both, "M_max"));
+      EXPECT_LE(column(b, "M_max"), column(both, "M_max"));
+    }
+  }
+  test::expect_refused_with_one_line(run_command(test::bin("coolgas-clusters") + " --species 2 " + whole()),
+                                     "--species 2: ", "coolgas-clusters --species 2");
+}
+
 TEST_F(MixtureRun, EqualParticlesHaveNoSpecies) {
   const std::string out = *dir_ + "/equal.h5";
   const std::string scene = test::write_file(*dir_, "equal.toml",
@@ -172,8 +206,9 @@ TEST_F(MixtureRun, EqualParticlesHaveNoSpecies) {
   EXPECT_FALSE(h5::exists(f.id(), "particles/all/species"));
   EXPECT_FALSE(h5::exists(f.id(), "observables/species_kinetic_energy"));
   EXPECT_FALSE(h5::has_attr(h5::open_group(f.id(), "parameters").id(), "species_fraction"));
-  test::expect_refused_with_one_line(run_command(test::bin("coolgas-velocity") + " --species 0 " + out),
-                                     "no species", "coolgas-velocity --species 0 EQUAL");
+  for (const char* tool : {"coolgas-velocity", "coolgas-clusters"})
+    test::expect_refused_with_one_line(run_command(test::bin(tool) + " --species 0 " + out), "no species",
+                                       std::string(tool) + " --species 0 EQUAL");
 }
 
 }  // namespace

@@ -2,12 +2,13 @@
 the same file to the last bit (every table, gas and aggregation; both
 definitions, unit cells and contacts), and
 label_clusters' labels and size table agree with the tool's masses (by
-either definition; by contact also with an all-pairs labelling)."""
+either definition; by contact also with an all-pairs labelling); a
+mixture's tables, whole or of one species, are the tool's too."""
 import numpy as np
 import pytest
 
 import coolgas
-from conftest import tool
+from conftest import assert_the_tool_per_dump, simulate_cli, tool
 
 
 def cli_table(tmp_path, *args):
@@ -143,3 +144,61 @@ def test_contact_labels_join_across_the_boundary():
     np.testing.assert_array_equal(sizes["mass"], [2, 2])
     with pytest.raises(coolgas.InputError, match="exceeds half the box side"):
         coolgas.label_clusters(pos, 10.0, definition="contact:6")
+
+
+MIXTURE = """[system]
+N = 1000
+phi = 0.15
+seed = 7
+equilibrate = 1
+[collision]
+model = "inelastic"
+r0 = 0.8
+[run]
+t_end = 20
+[output]
+dumps_per_decade = 4
+
+[[species]]
+fraction = 0.6
+diameter = 1
+
+[[species]]
+fraction = 0.4
+diameter = 1.5
+"""
+
+
+@pytest.fixture(scope="module")
+def mixture(tmp_path_factory):
+    return simulate_cli(tmp_path_factory.mktemp("mixture"), "mixture", MIXTURE)
+
+
+@pytest.mark.parametrize("species", [None, 0, 1])
+@pytest.mark.parametrize("definition", ["cells", "contact", "contact:1.3"])
+def test_a_mixtures_clusters_equal_the_tool(mixture, definition, species, tmp_path):
+    # The whole mixture (its Frame's masses are its species', not
+    # aggregates; contacts at CUTOFF sigma_ij) or one species, as --species.
+    option = [] if species is None else ["--species", species]
+    for table, flag in (("distribution", []), ("scaled", ["--scaled"]), ("series", ["--series"])):
+        assert_the_tool_per_dump(mixture, "clusters", ["--definition", definition, *option, *flag],
+                                 lambda fr: coolgas.clusters(fr, table=table, definition=definition, species=species),
+                                 tmp_path, block=table != "series")
+
+
+def test_a_species_labels_are_its_own_contact_clusters(mixture, gas):
+    # Species k alone, against every pair of its particles at 1.1 sigma_k;
+    # the other species' labels are -1, first particles the frame's.
+    fr = coolgas.open(mixture).frames[-1]
+    for k in (0, 1):
+        labels, sizes = coolgas.label_clusters(fr, definition="contact", species=k)
+        mine = fr.species == k
+        assert (labels[~mine] == -1).all()
+        want, mass, first = all_pairs_contact_labels(fr.positions[mine], fr.L, 1.1 * fr.diameters[mine][0])
+        np.testing.assert_array_equal(labels[mine], want)
+        np.testing.assert_array_equal(sizes["mass"], mass)
+        np.testing.assert_array_equal(sizes["first_particle"], np.flatnonzero(mine)[first])
+    with pytest.raises(coolgas.InputError, match="species = 2: the frame has species 0 to 1"):
+        coolgas.label_clusters(fr, species=2)
+    with pytest.raises(coolgas.InputError, match="a mixture's Frame"):
+        coolgas.clusters(coolgas.open(gas).frames[-1], species=0)

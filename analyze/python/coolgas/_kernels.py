@@ -19,7 +19,25 @@ def _frame_args(frame_or_positions, L, t):
     return frame_or_positions, L, 0.0 if t is None else t, None
 
 
-def label_clusters(positions, L=None, definition="cells"):
+def _mixture_rows(f, positions, diameters, species):
+    """(positions, diameters, rows) of the particles to label: a mixture
+    Frame's diameters unless given; with species=K (coolgas-clusters
+    --species K) the rows of species K alone (rows: their indices in the
+    frame; None for every particle)."""
+    if f is not None and f.species is not None and diameters is None:
+        diameters = f.diameters
+    if species is None:
+        return positions, diameters, None
+    if f is None or f.species is None:
+        raise InputError("species: a mixture's Frame (a run with [[species]]) is needed; "
+                         "these particles are all alike")
+    rows = np.flatnonzero(f.species == species)
+    if len(rows) == 0:
+        raise InputError(f"species = {species}: the frame has species 0 to {int(f.species.max())}")
+    return positions[rows], diameters[rows], rows
+
+
+def label_clusters(positions, L=None, definition="cells", species=None, diameters=None):
     """The clusters of coolgas-clusters --definition: (labels, sizes).
 
     definition "cells", the paper's clusters (floor(L)^3 cells of side
@@ -34,16 +52,28 @@ def label_clusters(positions, L=None, definition="cells"):
     Frame. An (N, 2) array is disks: floor(L)^2 unit squares sharing an
     edge; so in every kernel here, an (N, 2) positions or velocities array
     is 2D. An (N, 1) array is rods on a ring: floor(L) unit segments,
-    neighbours left and right; so in every kernel, an (N, 1) array is 1D."""
-    positions, L, _, _ = _frame_args(positions, L, None)
-    labels, mass, first, _ = _core.label_clusters(positions, float(L), definition)
-    first_name = "first_particle" if definition.startswith("contact") else "first_cell"
-    sizes = pd.DataFrame({"cluster": np.arange(len(mass)), "mass": mass, first_name: first})
+    neighbours left and right; so in every kernel, an (N, 1) array is 1D.
+
+    A mixture (a Frame with species, or positions with diameters): by
+    contact a pair is bonded closer than CUTOFF (d_i + d_j)/2. species=K
+    (a Frame's species index, 0 for the first [[species]]): species K's
+    clusters alone, as coolgas-clusters --species K; the other species'
+    labels are -1."""
+    positions, L, _, f = _frame_args(positions, L, None)
+    positions, diameters, rows = _mixture_rows(f, positions, diameters, species)
+    labels, mass, first, _ = _core.label_clusters(positions, float(L), definition, diameters)
+    contact = definition.startswith("contact")
+    if rows is not None:  # back to the frame's numbering: the other species -1, first particles the frame's
+        every = np.full(len(f.species), -1, dtype=labels.dtype)
+        every[rows] = labels
+        labels, first = every, (rows[first] if contact else first)
+    sizes = pd.DataFrame({"cluster": np.arange(len(mass)), "mass": mass,
+                          ("first_particle" if contact else "first_cell"): first})
     return labels, sizes
 
 
 def clusters(frame, L=None, t=None, table="distribution", bins_per_decade=10, masses=None, slots=None,
-             definition="cells"):
+             definition="cells", species=None, diameters=None):
     """One dump's coolgas-clusters table: "distribution" (t m dm N x y),
     "scaled" (t x y) or "series" (t M0 M1 M2 M_avg M_max largest_fraction).
 
@@ -51,13 +81,16 @@ def clusters(frame, L=None, t=None, table="distribution", bins_per_decade=10, ma
     or positions with L (and t). masses and slots: the aggregates' masses and
     the file's N, for arrays of a ballistic-aggregation frame. definition:
     "cells" (the paper's unit cells) or "contact[:CUTOFF]" (particles closer
-    than CUTOFF sigma, default 1.1), as --definition. The block's comment
-    line is df.attrs["comment"]."""
+    than CUTOFF sigma, default 1.1), as --definition. A mixture (a Frame
+    with species, or positions with diameters): contacts bond closer than
+    CUTOFF (d_i + d_j)/2; species=K: species K's clusters alone, as
+    --species K. The block's comment line is df.attrs["comment"]."""
     positions, L, t, f = _frame_args(frame, L, t)
-    if f is not None and f.masses is not None and masses is None:
+    if f is not None and f.masses is not None and f.species is None and masses is None:  # aggregates
         masses, slots = f.masses, f.slots
+    positions, diameters, _ = _mixture_rows(f, positions, diameters, species)
     return frame_of(_core.cluster_table(positions, float(L), float(t), table, bins_per_decade, masses,
-                                        None if slots is None else int(slots), definition))
+                                        None if slots is None else int(slots), definition, diameters))
 
 
 def _frame_velocities(frame, spins, species):
