@@ -162,10 +162,15 @@ slurm_cluster_until() {
 # A job's state (PENDING, RUNNING, COMPLETED, TIMEOUT, FAILED, ...).
 slurm_cluster_job_state() { scontrol show job "$1" 2>/dev/null | sed -n 's/.*JobState=\([A-Z_]*\).*/\1/p'; }
 
+# Whether a job has ended: its state is one of the final ones (squeue(1),
+# JOB STATE CODES). Not "anything but the running states": a job shows
+# passing states too, SIGNALING while its --signal is sent (then RUNNING
+# again), which a wait must not take for its end.
 slurm_cluster_job_ended() {
   case $(slurm_cluster_job_state "$1") in
-    PENDING | RUNNING | CONFIGURING | COMPLETING | SUSPENDED | REQUEUED | RESIZING | '') return 1 ;;
+    BOOT_FAIL | CANCELLED | COMPLETED | DEADLINE | FAILED | NODE_FAIL | OUT_OF_MEMORY | PREEMPTED | TIMEOUT) return 0 ;;
   esac
+  return 1
 }
 
 # slurm_cluster_wait_job ID SECONDS: waits until job ID has ended, then
