@@ -68,7 +68,7 @@ const std::vector<CollisionModelSpec>& collision_models() {
        .summary = "\"viscoelastic\" (restitution rising to 1 as the impact speed falls; see "
                   "collision.viscoelastic_b)",
        .rule = "ViscoelasticRule: r = epsilon(v) from b v^(1/5), r = 1 below delta",
-       .parameters = {&kViscoelasticB, &kDelta},
+       .parameters = {&kViscoelasticB, &kDelta, &kBeta},
        .schema_version = 3},
       {.name = "aggregation",
        .summary = "\"aggregation\" (ballistic aggregation: spheres that touch merge, volumes add, momentum "

@@ -77,7 +77,8 @@ struct ViscoelasticRule {
   int collapse_limit() const { return 60000; }
 };
 
-// Rough spheres (collision.beta > -1): the normal rule's restitution, and
+// Rough spheres (collision.beta > -1): the normal rule's restitution (any
+// of the three above), and
 // the tangential relative velocity of the contact points reversed and scaled
 // by beta (pair_prediction.h, apply_tangential_restitution), which turns
 // the spins. An engine of this rule keeps an angular velocity per particle;

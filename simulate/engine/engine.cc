@@ -684,6 +684,8 @@ template class Engine<RoughRule<ElasticRule>, 2>;
 template class Engine<RoughRule<ElasticRule>, 3>;
 template class Engine<RoughRule<ConstantRestitutionRule>, 2>;
 template class Engine<RoughRule<ConstantRestitutionRule>, 3>;
+template class Engine<RoughRule<ViscoelasticRule>, 2>;
+template class Engine<RoughRule<ViscoelasticRule>, 3>;
 // Mixtures of sizes and masses, of every rule (the scene refuses rough
 // mixtures), in every dimension.
 COOLGAS_ENGINE_OF(MixtureRule<ElasticRule>)

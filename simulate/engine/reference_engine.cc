@@ -105,6 +105,8 @@ template std::vector<CollisionRecord> reference_collisions(Particles, const Roug
                                                            std::int64_t);
 template std::vector<CollisionRecord> reference_collisions(Particles, const RoughRule<ConstantRestitutionRule>&,
                                                            double, double, std::int64_t);
+template std::vector<CollisionRecord> reference_collisions(Particles, const RoughRule<ViscoelasticRule>&, double,
+                                                           double, std::int64_t);
 template std::vector<CollisionRecord> reference_collisions(Particles, const MixtureRule<ElasticRule>&, double,
                                                            double, std::int64_t);
 template std::vector<CollisionRecord> reference_collisions(Particles, const MixtureRule<ConstantRestitutionRule>&,

@@ -17,13 +17,15 @@ ConstantRestitutionRule inelastic_rule(const Scene& s) { return {s.parameter("r0
 ViscoelasticRule viscoelastic_rule(const Scene& s) { return {s.parameter("viscoelastic_b"), s.parameter("delta")}; }
 
 // The models whose particles may be rough (collision.beta; engine.cc
-// instantiates their rough engines in 2D and 3D).
+// instantiates their rough engines in 2D and 3D): the gases, not aggregation.
 template <class Rule>
-constexpr bool kMayBeRough = std::is_same_v<Rule, ElasticRule> || std::is_same_v<Rule, ConstantRestitutionRule>;
+constexpr bool kMayBeRough = std::is_same_v<Rule, ElasticRule> || std::is_same_v<Rule, ConstantRestitutionRule> ||
+                             std::is_same_v<Rule, ViscoelasticRule>;
 // The models that may be mixtures ([[species]]; engine.cc instantiates their
-// mixture engines in every dimension). The scene refuses a rough mixture.
+// mixture engines in every dimension), the same gases (aggregation's
+// mixtures need no rule of their own). The scene refuses a rough mixture.
 template <class Rule>
-constexpr bool kMayBeMixture = kMayBeRough<Rule> || std::is_same_v<Rule, ViscoelasticRule>;
+constexpr bool kMayBeMixture = kMayBeRough<Rule>;
 
 // The engine of a collision rule (simulate/engine/collision_rules.h) in the
 // scene's dimension: the hot loop is compiled for exactly that rule and D,

@@ -11,6 +11,7 @@
 
 #include "common/hdf5_file.h"
 #include "tests/support/killed_run.h"
+#include "tests/support/one_run_suite.h"
 #include "tests/support/run_command.h"
 #include "tests/support/same_trajectory.h"
 #include "tests/support/simulate_cli.h"
@@ -26,21 +27,11 @@ std::string disks(const std::string& args) {
   return test::simulate(args + " --set system.dimension=2 --set run.t_end=300");
 }
 
-class DisksCli : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    dir_ = new std::string(test::scratch_dir("disks_cli"));
-    scene_ = new std::string(test::write_file(*dir_, "gas.toml", test::kCoolingGasScene));
-    const auto r = run_command(disks(*scene_ + " -o " + whole()));
-    ASSERT_EQ(r.exit_code, 0) << r.err;
-  }
-  static void TearDownTestSuite() {
-    delete dir_;
-    delete scene_;
-  }
-  static std::string whole() { return *dir_ + "/whole.h5"; }
-  static inline std::string* dir_ = nullptr;
-  static inline std::string* scene_ = nullptr;
+class DisksCli : public test::OneRunSuite<DisksCli> {
+ public:
+  static constexpr const char* kFolder = "disks_cli";
+  static constexpr const char* kScene = test::kCoolingGasScene;
+  static std::string launch(const std::string& args) { return disks(args); }
 };
 
 TEST_F(DisksCli, TheFileIsA2DH5mdFileTheValidatorAccepts) {
@@ -61,8 +52,8 @@ TEST_F(DisksCli, TheFileIsA2DH5mdFileTheValidatorAccepts) {
 }
 
 TEST_F(DisksCli, AnExtendedRunIsBitForBitTheWholeOne) {
-  const std::string out = *dir_ + "/part.h5";
-  const std::string part = test::simulate(*scene_ + " -o " + out + " --set system.dimension=2 --set run.t_end=100");
+  const std::string out = dir_ + "/part.h5";
+  const std::string part = test::simulate(scene_ + " -o " + out + " --set system.dimension=2 --set run.t_end=100");
   ASSERT_EQ(run_command(part).exit_code, 0);  // t = 100 is on the dump grid
   const auto r = run_command(test::simulate("--resume " + out + " --set run.t_end=300"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -72,8 +63,8 @@ TEST_F(DisksCli, AnExtendedRunIsBitForBitTheWholeOne) {
 // Killed mid-run (halfway through the whole run's collisions, a checkpoint
 // after every slice of events), resumed from its checkpoint.
 TEST_F(DisksCli, AKilledRunResumesBitForBit) {
-  const std::string out = *dir_ + "/killed.h5";
-  test::expect_killed_run_resumes_bit_for_bit(disks(*scene_ + " -o " + out), out, whole());
+  const std::string out = dir_ + "/killed.h5";
+  test::expect_killed_run_resumes_bit_for_bit(disks(scene_ + " -o " + out), out, whole());
 }
 
 TEST(DisksCliScene, BadDimensionsAreOneLineEach) {

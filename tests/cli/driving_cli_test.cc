@@ -10,6 +10,7 @@
 
 #include "common/hdf5_file.h"
 #include "tests/support/fault_points.h"
+#include "tests/support/one_run_suite.h"
 #include "tests/support/run_command.h"
 #include "tests/support/same_trajectory.h"
 #include "tests/support/simulate_cli.h"
@@ -69,38 +70,26 @@ Parameters parameters_of(const std::string& path) {
   return p;
 }
 
-class DrivingResume : public ::testing::Test {
+class DrivingResume : public test::OneRunSuite<DrivingResume> {
+ public:
+  static constexpr const char* kFolder = "driving_resume";
+  static constexpr const char* kScene = kDrivenScene;
+  static void after_run() { collisions_ = test::collisions_of(whole()); }
+
  protected:
-  static void SetUpTestSuite() {
-    dir_ = new std::string(test::scratch_dir("driving_resume"));
-    scene_ = new std::string(test::write_file(*dir_, "driven.toml", kDrivenScene));
-    const auto r = run_command(simulate(*scene_ + " -o " + whole()));
-    ASSERT_EQ(r.exit_code, 0) << r.err;
-    collisions_ = test::collisions_of(whole());
-  }
-  static void TearDownTestSuite() {
-    delete dir_;
-    delete scene_;
-  }
-  static std::string whole() { return *dir_ + "/whole.h5"; }
   // Runs the scene into `name` with the fault `spec` armed (a checkpoint
   // after every slice of events), expecting `exit_code`, then resumes it.
   static std::string stop_and_resume(const std::string& name, const std::string& spec, int exit_code) {
-    std::string out = *dir_ + "/" + name + ".h5";
+    std::string out = dir_ + "/" + name + ".h5";
     const auto stopped =
-        run_command("COOLGAS_CHECKPOINT_INTERVAL=0 " + test::fault(spec) + simulate(*scene_ + " -o " + out));
+        run_command("COOLGAS_CHECKPOINT_INTERVAL=0 " + test::fault(spec) + simulate(scene_ + " -o " + out));
     EXPECT_EQ(stopped.exit_code, exit_code) << spec << ": " << stopped.err;
     const auto resumed = run_command(simulate("--resume " + out));
     EXPECT_EQ(resumed.exit_code, 0) << spec << ": " << resumed.err;
     return out;
   }
-  static std::string* dir_;
-  static std::string* scene_;
-  static std::int64_t collisions_;
+  static inline std::int64_t collisions_ = 0;
 };
-std::string* DrivingResume::dir_ = nullptr;
-std::string* DrivingResume::scene_ = nullptr;
-std::int64_t DrivingResume::collisions_ = 0;
 
 TEST_F(DrivingResume, TheFileRecordsTheDrivingAndValidates) {
   const Parameters p = parameters_of(whole());
@@ -112,8 +101,8 @@ TEST_F(DrivingResume, TheFileRecordsTheDrivingAndValidates) {
   EXPECT_EQ(v.exit_code, 0) << v.out << v.err;
   EXPECT_NE(v.out.find("profile v4"), std::string::npos) << v.out;
   // Without [driving], nothing of it: the inelastic model's version 1, no attribute, no table in the scene.
-  const std::string plain = *dir_ + "/plain.h5";
-  const std::string undriven = test::write_file(*dir_, "undriven.toml", test::kCoolingGasScene);
+  const std::string plain = dir_ + "/plain.h5";
+  const std::string undriven = test::write_file(dir_, "undriven.toml", test::kCoolingGasScene);
   ASSERT_EQ(run_command(simulate(undriven + " -o " + plain + " --set system.N=300 --set run.t_end=5")).exit_code, 0);
   const Parameters q = parameters_of(plain);
   EXPECT_EQ(q.schema_version, 1);
@@ -136,8 +125,8 @@ TEST_F(DrivingResume, KilledAmidADumpItResumesBitForBit) {
 }
 
 TEST_F(DrivingResume, AResumeCannotChangeTheDriving) {
-  const std::string out = *dir_ + "/changed.h5";
-  ASSERT_EQ(run_command(simulate(*scene_ + " -o " + out + " --set run.t_end=5")).exit_code, 0);
+  const std::string out = dir_ + "/changed.h5";
+  ASSERT_EQ(run_command(simulate(scene_ + " -o " + out + " --set run.t_end=5")).exit_code, 0);
   test::expect_refused_with_one_line(run_command(simulate("--resume " + out + " --set driving.power=0.04")),
                                      "driving.power", "--resume --set driving.power");
 }

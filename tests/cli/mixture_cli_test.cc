@@ -16,6 +16,7 @@
 #include "common/hdf5_file.h"
 #include "common/tsv.h"
 #include "tests/support/killed_run.h"
+#include "tests/support/one_run_suite.h"
 #include "tests/support/run_command.h"
 #include "tests/support/simulate_cli.h"
 
@@ -65,24 +66,11 @@ TEST(MixtureCli, BadTablesAreRefusedWithOneLine) {
                                 "a rough mixture is not offered", out);
 }
 
-class MixtureRun : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    dir_ = new std::string(test::scratch_dir("mixture_run"));
-    scene_ = new std::string(test::write_file(*dir_, "mix.toml", kMixtureScene));
-    const auto r = run_command(simulate(*scene_ + " -o " + whole()));
-    ASSERT_EQ(r.exit_code, 0) << r.err;
-  }
-  static void TearDownTestSuite() {
-    delete dir_;
-    delete scene_;
-  }
-  static std::string whole() { return *dir_ + "/whole.h5"; }
-  static std::string* dir_;
-  static std::string* scene_;
+class MixtureRun : public test::OneRunSuite<MixtureRun> {
+ public:
+  static constexpr const char* kFolder = "mixture_run";
+  static constexpr const char* kScene = kMixtureScene;
 };
-std::string* MixtureRun::dir_ = nullptr;
-std::string* MixtureRun::scene_ = nullptr;
 
 TEST_F(MixtureRun, ValidatesAsSchemaVersion6WithItsSpecies) {
   const auto v = run_command(test::bin("coolgas-validate") + " " + whole());
@@ -110,20 +98,15 @@ TEST_F(MixtureRun, ValidatesAsSchemaVersion6WithItsSpecies) {
 }
 
 TEST_F(MixtureRun, KilledItResumesBitForBitFromItsCheckpoint) {
-  const std::string out = *dir_ + "/killed.h5";
-  test::expect_killed_run_resumes_bit_for_bit(simulate(*scene_ + " -o " + out), out, whole());
+  const std::string out = dir_ + "/killed.h5";
+  test::expect_killed_run_resumes_bit_for_bit(simulate(scene_ + " -o " + out), out, whole());
 }
 
 // Without the checkpoint a resume starts from the last dump: its species
 // are read back with the positions (the run goes on, valid, to the end).
 TEST_F(MixtureRun, ResumesFromItsLastDumpWithoutACheckpoint) {
-  const std::string out = *dir_ + "/dump.h5";
-  test::kill_halfway(simulate(*scene_ + " -o " + out), whole());
-  std::remove((out + ".checkpoint").c_str());
-  const auto resumed = run_command(simulate("--resume " + out));
-  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
-  const auto v = run_command(test::bin("coolgas-validate") + " " + out);
-  EXPECT_EQ(v.exit_code, 0) << v.out << v.err;
+  const std::string out = dir_ + "/dump.h5";
+  test::expect_killed_run_resumes_from_its_last_dump(simulate(scene_ + " -o " + out), out, whole());
 }
 
 // coolgas-energy adds each species' temperature per axis; at t = 0 each is
@@ -198,8 +181,8 @@ TEST_F(MixtureRun, TheClustersToolTakesOneSpecies) {
 }
 
 TEST_F(MixtureRun, EqualParticlesHaveNoSpecies) {
-  const std::string out = *dir_ + "/equal.h5";
-  const std::string scene = test::write_file(*dir_, "equal.toml",
+  const std::string out = dir_ + "/equal.h5";
+  const std::string scene = test::write_file(dir_, "equal.toml",
                                              "[system]\nN = 1000\nphi = 0.15\nequilibrate = 1\n[run]\nt_end = 1\n");
   ASSERT_EQ(run_command(simulate(scene + " -o " + out)).exit_code, 0);
   h5::Handle f = h5::open_file(out, h5::Mode::kReadOnly);

@@ -9,12 +9,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <numeric>
 #include <string>
 
 #include "common/hdf5_file.h"
 #include "tests/support/killed_run.h"
+#include "tests/support/one_run_suite.h"
 #include "tests/support/run_command.h"
 #include "tests/support/simulate_cli.h"
 
@@ -31,6 +31,28 @@ std::string mixture_scene(const std::string& collision, double t_end) {
          "fraction = 0.6\ndiameter = 1\n\n[[species]]\nfraction = 0.4\ndiameter = 1.5\n";
 }
 
+// The same mixture aggregating, to t = 10.
+constexpr const char* kAggregationMixtureScene = R"([system]
+N = 1000
+phi = 0.15
+seed = 11
+equilibrate = 1
+[collision]
+model = "aggregation"
+[run]
+t_end = 10
+[output]
+dumps_per_decade = 10
+
+[[species]]
+fraction = 0.6
+diameter = 1
+
+[[species]]
+fraction = 0.4
+diameter = 1.5
+)";
+
 TEST(MixtureModels, AViscoelasticMixtureValidatesWithItsSpecies) {
   const std::string dir = test::scratch_dir("mixture_viscoelastic");
   const std::string out = dir + "/visco.h5";
@@ -46,24 +68,11 @@ TEST(MixtureModels, AViscoelasticMixtureValidatesWithItsSpecies) {
   EXPECT_LT(E.back(), 0.9 * E.front());  // it cools
 }
 
-class AggregationMixture : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    dir_ = new std::string(test::scratch_dir("mixture_aggregation"));
-    scene_ = new std::string(test::write_file(*dir_, "ba.toml", mixture_scene("model = \"aggregation\"\n", 10)));
-    const auto r = run_command(simulate(*scene_ + " -o " + whole()));
-    ASSERT_EQ(r.exit_code, 0) << r.err;
-  }
-  static void TearDownTestSuite() {
-    delete dir_;
-    delete scene_;
-  }
-  static std::string whole() { return *dir_ + "/whole.h5"; }
-  static std::string* dir_;
-  static std::string* scene_;
+class AggregationMixture : public test::OneRunSuite<AggregationMixture> {
+ public:
+  static constexpr const char* kFolder = "mixture_aggregation";
+  static constexpr const char* kScene = kAggregationMixtureScene;
 };
-std::string* AggregationMixture::dir_ = nullptr;
-std::string* AggregationMixture::scene_ = nullptr;
 
 TEST_F(AggregationMixture, StartsFromTheSpeciesKeepsTheMassAndWritesNoSpecies) {
   const auto v = run_command(test::bin("coolgas-validate") + " " + whole());
@@ -93,18 +102,13 @@ TEST_F(AggregationMixture, StartsFromTheSpeciesKeepsTheMassAndWritesNoSpecies) {
 }
 
 TEST_F(AggregationMixture, KilledItResumesBitForBitFromItsCheckpoint) {
-  const std::string out = *dir_ + "/killed.h5";
-  test::expect_killed_run_resumes_bit_for_bit(simulate(*scene_ + " -o " + out), out, whole());
+  const std::string out = dir_ + "/killed.h5";
+  test::expect_killed_run_resumes_bit_for_bit(simulate(scene_ + " -o " + out), out, whole());
 }
 
 TEST_F(AggregationMixture, ResumesFromItsLastDumpWithoutACheckpoint) {
-  const std::string out = *dir_ + "/dump.h5";
-  test::kill_halfway(simulate(*scene_ + " -o " + out), whole());
-  std::remove((out + ".checkpoint").c_str());
-  const auto resumed = run_command(simulate("--resume " + out));
-  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
-  const auto v = run_command(test::bin("coolgas-validate") + " " + out);
-  EXPECT_EQ(v.exit_code, 0) << v.out << v.err;
+  const std::string out = dir_ + "/dump.h5";
+  test::expect_killed_run_resumes_from_its_last_dump(simulate(scene_ + " -o " + out), out, whole());
 }
 
 // The tools read it as they read equal spheres' aggregates: energies (no

@@ -10,6 +10,7 @@
 
 #include "common/hdf5_file.h"
 #include "tests/support/killed_run.h"
+#include "tests/support/one_run_suite.h"
 #include "tests/support/run_command.h"
 #include "tests/support/same_trajectory.h"
 #include "tests/support/simulate_cli.h"
@@ -26,21 +27,11 @@ std::string rods(const std::string& args, const char* t_end = "30") {
   return test::simulate(args + " --set system.dimension=1 --set run.t_end=" + t_end);
 }
 
-class RodsCli : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    dir_ = new std::string(test::scratch_dir("rods_cli"));
-    scene_ = new std::string(test::write_file(*dir_, "gas.toml", test::kCoolingGasScene));
-    const auto r = run_command(rods(*scene_ + " -o " + whole()));
-    ASSERT_EQ(r.exit_code, 0) << r.err;
-  }
-  static void TearDownTestSuite() {
-    delete dir_;
-    delete scene_;
-  }
-  static std::string whole() { return *dir_ + "/whole.h5"; }
-  static inline std::string* dir_ = nullptr;
-  static inline std::string* scene_ = nullptr;
+class RodsCli : public test::OneRunSuite<RodsCli> {
+ public:
+  static constexpr const char* kFolder = "rods_cli";
+  static constexpr const char* kScene = test::kCoolingGasScene;
+  static std::string launch(const std::string& args) { return rods(args); }
 };
 
 TEST_F(RodsCli, TheFileIsA1DH5mdFileTheValidatorAccepts) {
@@ -63,8 +54,8 @@ TEST_F(RodsCli, TheFileIsA1DH5mdFileTheValidatorAccepts) {
 }
 
 TEST_F(RodsCli, AnExtendedRunIsBitForBitTheWholeOne) {
-  const std::string out = *dir_ + "/part.h5";
-  ASSERT_EQ(run_command(rods(*scene_ + " -o " + out, "10")).exit_code, 0);  // t = 10 is on the dump grid
+  const std::string out = dir_ + "/part.h5";
+  ASSERT_EQ(run_command(rods(scene_ + " -o " + out, "10")).exit_code, 0);  // t = 10 is on the dump grid
   const auto r = run_command(test::simulate("--resume " + out + " --set run.t_end=30"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   test::expect_same_trajectory(whole(), out);
@@ -73,15 +64,15 @@ TEST_F(RodsCli, AnExtendedRunIsBitForBitTheWholeOne) {
 // Killed mid-run (halfway through the whole run's collisions, a checkpoint
 // after every slice of events), resumed from its checkpoint.
 TEST_F(RodsCli, AKilledRunResumesBitForBit) {
-  const std::string out = *dir_ + "/killed.h5";
-  test::expect_killed_run_resumes_bit_for_bit(rods(*scene_ + " -o " + out), out, whole());
+  const std::string out = dir_ + "/killed.h5";
+  test::expect_killed_run_resumes_bit_for_bit(rods(scene_ + " -o " + out), out, whole());
 }
 
 TEST_F(RodsCli, EstimateAndProgressWorkIn1D) {
-  const auto e = run_command(rods(*scene_ + " -o " + *dir_ + "/estimate.h5 --estimate"));
+  const auto e = run_command(rods(scene_ + " -o " + dir_ + "/estimate.h5 --estimate"));
   EXPECT_EQ(e.exit_code, 0) << e.err;
   EXPECT_FALSE(e.out.empty());
-  EXPECT_FALSE(std::filesystem::exists(*dir_ + "/estimate.h5"));
+  EXPECT_FALSE(std::filesystem::exists(dir_ + "/estimate.h5"));
 }
 
 // Ballistic aggregation of rods: the file (1-component vectors, masses and

@@ -13,6 +13,7 @@
 #include "common/hdf5_file.h"
 #include "common/tsv.h"
 #include "tests/support/killed_run.h"
+#include "tests/support/one_run_suite.h"
 #include "tests/support/run_command.h"
 #include "tests/support/simulate_cli.h"
 
@@ -49,31 +50,20 @@ TEST(RoughCli, KeysWhereTheyMeanNothingAreRefusedWithOneLine) {
                                 "system.inertia is set but the particles are smooth", out);
 }
 
-class RoughRun : public ::testing::Test {
+class RoughRun : public test::OneRunSuite<RoughRun> {
+ public:
+  static constexpr const char* kFolder = "rough_run";
+  static constexpr const char* kScene = kRoughScene;
+
  protected:
-  static void SetUpTestSuite() {
-    dir_ = new std::string(test::scratch_dir("rough_run"));
-    scene_ = new std::string(test::write_file(*dir_, "rough.toml", kRoughScene));
-    const auto r = run_command(simulate(*scene_ + " -o " + whole()));
-    ASSERT_EQ(r.exit_code, 0) << r.err;
-  }
-  static void TearDownTestSuite() {
-    delete dir_;
-    delete scene_;
-  }
-  static std::string whole() { return *dir_ + "/whole.h5"; }
   // The same scene's smooth run (beta = -1) into `name`, briefly.
   static std::string smooth_run(const std::string& name) {
-    std::string out = *dir_ + "/" + name;
-    const auto r = run_command(simulate(*scene_ + " -o " + out + " --set collision.beta=-1 --set run.t_end=1"));
+    std::string out = dir_ + "/" + name;
+    const auto r = run_command(simulate(scene_ + " -o " + out + " --set collision.beta=-1 --set run.t_end=1"));
     EXPECT_EQ(r.exit_code, 0) << r.err;
     return out;
   }
-  static std::string* dir_;
-  static std::string* scene_;
 };
-std::string* RoughRun::dir_ = nullptr;
-std::string* RoughRun::scene_ = nullptr;
 
 TEST_F(RoughRun, ValidatesAsSchemaVersion5) {
   const auto v = run_command(test::bin("coolgas-validate") + " " + whole());
@@ -82,8 +72,8 @@ TEST_F(RoughRun, ValidatesAsSchemaVersion5) {
 }
 
 TEST_F(RoughRun, KilledItResumesBitForBitSpinsIncluded) {
-  const std::string out = *dir_ + "/killed.h5";
-  test::expect_killed_run_resumes_bit_for_bit(simulate(*scene_ + " -o " + out), out, whole());
+  const std::string out = dir_ + "/killed.h5";
+  test::expect_killed_run_resumes_bit_for_bit(simulate(scene_ + " -o " + out), out, whole());
 }
 
 // The energy table's temperatures at t = 0 are T0 exactly (the start scales
@@ -117,14 +107,14 @@ TEST_F(RoughRun, TheVelocityToolTakesTheSpins) {
 // A rough start from the rough file takes its last dump's spins; from a
 // smooth file it draws them at T0 (rotational energy (d_r/2) T0 = 1.5 T0).
 TEST_F(RoughRun, AStartFromAFileTakesItsSpinsOrDrawsThem) {
-  const std::string next = *dir_ + "/next.h5", drawn = *dir_ + "/drawn.h5";
+  const std::string next = dir_ + "/next.h5", drawn = dir_ + "/drawn.h5";
   const std::string from = "--set system.init=file --set system.equilibrate=5 --set run.t_end=1 --set system.from=";
-  ASSERT_EQ(run_command(simulate(*scene_ + " -o " + next + " " + from + whole())).exit_code, 0);
+  ASSERT_EQ(run_command(simulate(scene_ + " -o " + next + " " + from + whole())).exit_code, 0);
   h5::Handle a = h5::open_file(whole(), h5::Mode::kReadOnly), b = h5::open_file(next, h5::Mode::kReadOnly);
   const auto last = h5::shape(h5::open_dataset(a.id(), "particles/all/angular_velocity/value").id())[0] - 1;
   EXPECT_EQ(h5::read_row<double>(h5::open_dataset(a.id(), "particles/all/angular_velocity/value").id(), last),
             h5::read_row<double>(h5::open_dataset(b.id(), "particles/all/angular_velocity/value").id(), 0));
-  ASSERT_EQ(run_command(simulate(*scene_ + " -o " + drawn + " " + from + smooth_run("smooth_start.h5"))).exit_code, 0);
+  ASSERT_EQ(run_command(simulate(scene_ + " -o " + drawn + " " + from + smooth_run("smooth_start.h5"))).exit_code, 0);
   h5::Handle c = h5::open_file(drawn, h5::Mode::kReadOnly);
   const double T0 = h5::read_attr_double(h5::open_group(c.id(), "parameters").id(), "T0");
   const double E_rot =

@@ -101,8 +101,11 @@ time_limit() {
   mkdir -p "$out"
   first=$(submit COOLGAS_FAULT=$hold --time=1 --ntasks=2 --mem-per-cpu=512M --output="$out/first.log" \
     pipelines/cluster/paper.sbatch $tiny OUT="$out") || fail "sbatch refused the first job"
-  again=$(submit --dependency=afterany:"$first" --time=30 --ntasks=2 --mem-per-cpu=512M --output="$out/again.log" \
-    pipelines/cluster/paper.sbatch $tiny OUT="$out") || fail "sbatch refused the second job"
+  # Held (--hold) until the first job's stopped runs are listed below: once
+  # released it starts as soon as the first has ended (afterany), and would
+  # otherwise resume them while they are being looked at.
+  again=$(submit --hold --dependency=afterany:"$first" --time=30 --ntasks=2 --mem-per-cpu=512M \
+    --output="$out/again.log" pipelines/cluster/paper.sbatch $tiny OUT="$out") || fail "sbatch refused the second job"
   state=$(slurm_cluster_wait_job "$first" 240)
   [ "$state" = TIMEOUT ] || fail "the held job ended $state, not TIMEOUT: $(tail -n 3 "$out/first.log")"
   # After the limit's line, the held runs' own: SIGTERM handled, checkpoint written.
@@ -114,10 +117,11 @@ time_limit() {
   echo "first job: TIMEOUT after $ran (--time=1); $held runs held, $stopped stopped by SIGTERM with a checkpoint"
   # The runs it stopped, each a .part with its checkpoint, and the file's inode.
   for part in "$out"/runs/*.h5.part; do
-    [ -f "$part.checkpoint" ] || fail "${part##*/} has no checkpoint"
+    [ -f "$part.checkpoint" ] || fail "${part##*/} has no checkpoint" >&2
     echo "${part%.part} $(stat -c %i "$part")"
-  done >"$out/stopped.txt"
+  done >"$out/stopped.txt" || exit 1
   [ -s "$out/stopped.txt" ] || fail "the first job left no stopped run"
+  scontrol release "$again" || fail "scontrol release $again failed"
   state=$(slurm_cluster_wait_job "$again" 300)
   [ "$state" = COMPLETED ] || fail "the second job ended $state: $(tail -n 3 "$out/again.log")"
   while read -r run inode; do

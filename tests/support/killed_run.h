@@ -2,6 +2,7 @@
 #pragma once
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <string>
 
 #include "tests/support/fault_points.h"
@@ -28,6 +29,18 @@ inline void expect_killed_run_resumes_bit_for_bit(const std::string& command, co
   const auto resumed = run_command(simulate("--resume " + out));
   ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
   expect_same_trajectory(whole, out);
+}
+
+// Kills `command`, which writes `out`, halfway; deletes its checkpoint;
+// resumes it from its last dump and expects a file coolgas-validate accepts.
+inline void expect_killed_run_resumes_from_its_last_dump(const std::string& command, const std::string& out,
+                                                         const std::string& whole) {
+  kill_halfway(command, whole);
+  std::remove((out + ".checkpoint").c_str());
+  const auto resumed = run_command(simulate("--resume " + out));
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  const auto v = run_command(bin("coolgas-validate") + " " + out);
+  EXPECT_EQ(v.exit_code, 0) << v.out << v.err;
 }
 
 }  // namespace coolgas::test

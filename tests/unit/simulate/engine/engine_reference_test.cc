@@ -96,6 +96,14 @@ struct PerfectlyRough : RuleCase<RoughRule<ElasticRule>, D> {
   static constexpr int kEvents = 300;
 };
 
+// Viscoelastic rough spheres: the impact speed's restitution beside beta.
+template <int D>
+struct RoughViscoelastic : RuleCase<RoughRule<ViscoelasticRule>, D> {
+  static Scene scene() { return test::in_dimension(test::rough(test::elastic_scene(120, 0.15, 15), 0.2), D); }
+  static RoughRule<ViscoelasticRule> rule() { return {{0.3, 0.0}, 0.2, Geometry(D).uniform_inertia()}; }
+  static constexpr int kEvents = 300;
+};
+
 // Mixtures (MixtureRule): each pair touches at the mean of its diameters and
 // exchanges momentum by its masses, so the events follow the reference's only
 // if both engines use the same contact distances and masses (and the fast
@@ -189,7 +197,8 @@ using Cases = ::testing::Types<Elastic<3>, DenseElastic<3>, DiluteElastic<3>, In
                                Aggregation, Elastic<2>, DenseElastic<2>, DiluteElastic<2>, Inelastic<2>,
                                Viscoelastic<2>, Aggregation2D, Elastic<1>, DenseElastic<1>, DiluteElastic<1>,
                                Inelastic<1>, Viscoelastic<1>, Aggregation1D, Rough<3>, Rough<2>,
-                               PerfectlyRough<3>, PerfectlyRough<2>, Mixture<3>, Mixture<2>, Mixture<1>,
+                               PerfectlyRough<3>, PerfectlyRough<2>, RoughViscoelastic<3>, RoughViscoelastic<2>,
+                               Mixture<3>, Mixture<2>, Mixture<1>,
                                InelasticMixture<3>, InelasticMixture<2>, InelasticMixture<1>,
                                ViscoelasticMixture<3>, ViscoelasticMixture<2>, ViscoelasticMixture<1>,
                                AggregationMixture<3>, AggregationMixture<2>, AggregationMixture<1>>;

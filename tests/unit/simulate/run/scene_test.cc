@@ -101,8 +101,11 @@ TEST(Scene, RoughParticlesOnlyWhereTheyCanSpin) {
             std::string::npos);
   EXPECT_NE(error_of({"system.inertia=0.4"}).find("system.inertia is set but the particles are smooth"),
             std::string::npos);
-  EXPECT_NE(error_of({"collision.beta=0.5"}, viscoelastic)
-                .find("collision.beta is set but collision.model = \"viscoelastic\" does not use it"),
+  EXPECT_EQ(error_of({"collision.beta=0.5"}, viscoelastic), "");
+  const std::string aggregation = "[system]\nN = 1000\nphi = 0.2\n[collision]\nmodel = \"aggregation\"\n"
+                                  "[run]\nt_end = 1\n";
+  EXPECT_NE(error_of({"collision.beta=0.5"}, aggregation)
+                .find("collision.beta is set but collision.model = \"aggregation\" does not use it"),
             std::string::npos);
   const Scene smooth = parse_scene(kScene, "s.toml", {"collision.beta=-1"});
   EXPECT_FALSE(smooth.rough());
