@@ -147,11 +147,11 @@ class Checker {
   // A mixture's species table (run_parameters.h): S, the length of
   // species_fraction, read before the attribute rows of that length are
   // checked (0: no table, or one unreadable, which check_mixture reports).
-  // Whether the particles carry their species (has_particle_species).
-  bool particle_species() const { return species_ > 0 && model_ && model_keeps_species(*model_); }
   void read_species() {
     species_ = species_array("species_fraction").size();
   }
+  // Whether the particles carry their species (has_particle_species).
+  bool particle_species() const { return species_ > 0 && model_ && model_keeps_species(*model_); }
   std::vector<double> species_array(const std::string& name) {
     const std::string group(layout::kParameters);
     if (kind_of(file_, group) != ObjectKind::kGroup) return {};

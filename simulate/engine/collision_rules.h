@@ -78,10 +78,9 @@ struct ViscoelasticRule {
 };
 
 // Rough spheres (collision.beta > -1): the normal rule's restitution (any
-// of the three above), and
-// the tangential relative velocity of the contact points reversed and scaled
-// by beta (pair_prediction.h, apply_tangential_restitution), which turns
-// the spins. An engine of this rule keeps an angular velocity per particle;
+// of the three above), and the tangential relative velocity of the contact
+// points reversed and scaled by beta (pair_prediction.h,
+// apply_tangential_restitution), which turns the spins. An engine of this rule keeps an angular velocity per particle;
 // smooth scenes never instantiate it, so their hot loop is as before. The
 // tangential part cannot collapse a gas (the normal speeds are the normal
 // rule's), so collapse detection is the normal rule's.
