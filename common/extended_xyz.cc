@@ -47,7 +47,8 @@ void write_xyz_frame(std::ostream& out, const XyzFrame& f, const Provenance& pro
   const Geometry g(f.dimension);
   const std::string b = g.spans(1) ? L : "1", c = g.spans(2) ? L : "1";
   out << n << "\nLattice=\"" << L << " 0 0 0 " << b << " 0 0 0 " << c
-      << "\" Properties=species:S:1:pos:R:3" << (f.velocity.empty() ? "" : ":velo:R:3") << (f.id.empty() ? "" : ":id:I:1")
+      << "\" Properties=species:S:1:pos:R:3" << (f.velocity.empty() ? "" : ":velo:R:3")
+      << (f.angular_velocity.empty() ? "" : ":omega:R:3") << (f.id.empty() ? "" : ":id:I:1")
       << (spheres ? ":radius:R:1" : "") << (f.mass.empty() ? "" : ":mass:R:1")
       << " " << pbc_of(g);
   if (f.time) out << " Time=" << format_number(*f.time);
@@ -59,6 +60,8 @@ void write_xyz_frame(std::ostream& out, const XyzFrame& f, const Provenance& pro
     for (int d = 0; d < 3; ++d) out << " " << format_number(f.position[3 * i + d]);
     if (!f.velocity.empty())
       for (int d = 0; d < 3; ++d) out << " " << format_number(f.velocity[3 * i + d]);
+    if (!f.angular_velocity.empty())
+      for (int d = 0; d < 3; ++d) out << " " << format_number(f.angular_velocity[3 * i + d]);
     if (!f.id.empty()) out << " " << f.id[i];
     if (spheres) out << " " << format_number(f.diameter[i] / 2);
     if (!f.mass.empty()) out << " " << format_number(f.mass[i]);
@@ -140,7 +143,7 @@ struct Parser {
 // Where each quantity sits among the columns (-1: absent).
 struct Columns {
   std::size_t count = 0;
-  long pos = -1, velo = -1, radius = -1, diameter = -1, mass = -1;
+  long pos = -1, velo = -1, omega = -1, radius = -1, diameter = -1, mass = -1;
 };
 
 Columns columns_of(const Parser& p, const std::string& properties) {
@@ -162,6 +165,7 @@ Columns columns_of(const Parser& p, const std::string& properties) {
     };
     if (name == "pos") want(&c.pos, 3);
     else if (name == "velo" || name == "vel" || name == "velocities") want(&c.velo, 3);
+    else if (name == "omega" || name == "angular_velocity") want(&c.omega, 3);
     else if (name == "radius") want(&c.radius, 1);
     else if (name == "diameter") want(&c.diameter, 1);
     else if (name == "mass" || name == "masses") want(&c.mass, 1);
@@ -279,6 +283,7 @@ XyzFrame read_frame(Parser& p, std::size_t n) {
   check_count(p, count_line, n);
   f.position.resize(3 * n);
   if (c.velo >= 0) f.velocity.resize(3 * n);
+  if (c.omega >= 0) f.angular_velocity.resize(3 * n);
   if (c.radius >= 0 || c.diameter >= 0) f.diameter.resize(n);
   if (c.mass >= 0) f.mass.resize(n);
   std::array<double, 3> plane{};
@@ -289,6 +294,8 @@ XyzFrame read_frame(Parser& p, std::size_t n) {
     for (int d = 0; d < 3; ++d) f.position[3 * i + d] = p.number(w[c.pos + d], "a position");
     if (c.velo >= 0)
       for (int d = 0; d < 3; ++d) f.velocity[3 * i + d] = p.number(w[c.velo + d], "a velocity");
+    if (c.omega >= 0)
+      for (int d = 0; d < 3; ++d) f.angular_velocity[3 * i + d] = p.number(w[c.omega + d], "an angular velocity");
     if (c.radius >= 0) f.diameter[i] = 2 * p.number(w[c.radius], "a radius");
     if (c.diameter >= 0) f.diameter[i] = p.number(w[c.diameter], "a diameter");
     if (c.mass >= 0) f.mass[i] = p.number(w[c.mass], "a mass");

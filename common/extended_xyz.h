@@ -6,15 +6,16 @@
 //   Lattice="25 0 0 0 25 0 0 0 25" Properties=species:S:1:pos:R:3:velo:R:3:id:I:1 pbc="T T T" Time=10 ...
 //   X 1.25 3.5 0.75 -0.1 0.2 0.3 0
 //
-// with radius:R:1:mass:R:1 appended for ballistic aggregates (a 2D frame,
+// with omega:R:3 after velo for a rough run's angular velocities (disks: about
+// z), and radius:R:1:mass:R:1 appended for ballistic aggregates (a 2D frame,
 // disks: Lattice="L 0 0 0 L 0 0 0 1" pbc="T T F", z = 0: periodic in the
 // plane, as ASE and OVITO read a 2D system; a 1D frame, rods:
 // Lattice="L 0 0 0 1 0 0 0 1" pbc="T F F", y = z = 0), every number in
 // its shortest form that reads back to the same double (so a frame written
 // and read again is exact), and the provenance as further quoted pairs.
 // Reading takes what another program may write: any order of properties, pos
-// and velo (or vel, velocities), radius or diameter, mass (or masses), the
-// other columns skipped; a missing Properties is species:S:1:pos:R:3.
+// and velo (or vel, velocities), omega (or angular_velocity), radius or
+// diameter, mass (or masses), the other columns skipped; a missing Properties is species:S:1:pos:R:3.
 #pragma once
 #include <cstdint>
 #include <iosfwd>
@@ -35,6 +36,7 @@ struct XyzFrame {
   std::vector<double> position, velocity;  // 3 per particle; velocity empty when absent
   std::vector<double> diameter, mass;      // 1 per particle; empty when absent (written as radius = d/2)
   std::vector<std::int64_t> id;            // written when given; not read
+  std::vector<double> angular_velocity;    // 3 per particle (omega:R:3); empty when absent
 };
 
 // Writes one frame; `provenance` pairs follow Time= as key="value" (keys made

@@ -15,7 +15,7 @@ namespace coolgas {
 namespace {
 
 XyzFrame xyz_of(const Frame& f, int dimension) {
-  XyzFrame x{f.L, dimension, f.time, f.step, std::nullopt, f.position, f.velocity, f.diameter, f.mass, {}};
+  XyzFrame x{f.L, dimension, f.time, f.step, std::nullopt, f.position, f.velocity, f.diameter, f.mass, {}, f.angular_velocity};
   x.id.resize(f.particles());
   for (std::size_t i = 0; i < x.id.size(); ++i) x.id[i] = f.id.empty() ? std::int64_t(i) : f.id[i];
   return x;
@@ -33,7 +33,7 @@ void check_format(const ConvertOptions& opt, int dimension) {
 void run_convert(const ConvertOptions& opt, std::ostream& out) {
   for (double t : opt.times)
     if (!std::isfinite(t)) throw InputError("--time " + format_number(t) + ": a time is a finite number [1/omega0]");
-  const Trajectory t(opt.input, kPosition | kVelocity | kImage | kDiameter | kAnyDimension);
+  const Trajectory t(opt.input, kPosition | kVelocity | kImage | kDiameter | kAngularVelocity | kAnyDimension);
   check_format(opt, t.dimension());
   const std::vector<std::size_t> dumps =
       opt.last ? std::vector<std::size_t>{t.dump_times().size() - 1} : t.dumps_nearest(opt.times, opt.exact_time);

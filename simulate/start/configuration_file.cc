@@ -45,8 +45,8 @@ FileConfiguration from_xyz(const std::string& path, std::optional<double> time) 
   std::ifstream in(path);
   if (!in) throw InputError("cannot read '" + path + "'");
   XyzFrame f = read_xyz_frame(in, path, time);
-  return {"extended XYZ", f.dimension, f.L, f.time, std::move(f.position), std::move(f.velocity), std::move(f.diameter),
-          std::move(f.mass), f.T0, ""};
+  return {"extended XYZ", f.dimension, f.L,       f.time, std::move(f.position), std::move(f.velocity),
+          std::move(f.diameter), std::move(f.mass), f.T0, "",     std::move(f.angular_velocity)};
 }
 
 }  // namespace

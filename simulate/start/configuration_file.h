@@ -20,7 +20,7 @@ struct FileConfiguration {
   std::optional<double> T0;    // the time unit's temperature: a coolgas trajectory's /parameters/T0,
                                // an extended XYZ comment's T0= (coolgas-convert copies it there)
   std::string length_unit;     // a foreign H5MD file's unit of position, "" when none
-  std::vector<double> angular_velocity;  // 3 per particle: a rough coolgas run's spins; empty when absent
+  std::vector<double> angular_velocity;  // 3 per particle: a rough run's spins (coolgas, or XYZ omega:R:3); empty when absent
 };
 
 // The frame nearest `time` (coolgas: its dump nearest; the others by their

@@ -122,5 +122,23 @@ TEST_F(RoughRun, AStartFromAFileTakesItsSpinsOrDrawsThem) {
   EXPECT_NEAR(E_rot / (1.5 * T0), 1.0, 1e-12);
 }
 
+// coolgas-convert writes the spins (extended XYZ omega:R:3, LAMMPS's
+// omegax omegay omegaz), and a rough start from the XYZ frame takes them:
+// its first dump's spins are the last dump's, bit for bit.
+TEST_F(RoughRun, TheSpinsGoThroughAnXyzFrame) {
+  const std::string xyz = dir_ + "/last.xyz", next = dir_ + "/from_xyz.h5";
+  ASSERT_EQ(run_command(test::bin("coolgas-convert") + " --last " + whole() + " > " + xyz).exit_code, 0);
+  const std::string from = "--set system.init=file --set system.equilibrate=5 --set run.t_end=1 --set system.from=";
+  const auto r = run_command(simulate(scene_ + " -o " + next + " " + from + xyz));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  h5::Handle a = h5::open_file(whole(), h5::Mode::kReadOnly), b = h5::open_file(next, h5::Mode::kReadOnly);
+  const auto last = h5::shape(h5::open_dataset(a.id(), "particles/all/angular_velocity/value").id())[0] - 1;
+  EXPECT_EQ(h5::read_row<double>(h5::open_dataset(a.id(), "particles/all/angular_velocity/value").id(), last),
+            h5::read_row<double>(h5::open_dataset(b.id(), "particles/all/angular_velocity/value").id(), 0));
+  const auto dump = run_command(test::bin("coolgas-convert") + " --format lammps --last " + whole());
+  ASSERT_EQ(dump.exit_code, 0) << dump.err;
+  EXPECT_NE(dump.out.find("ITEM: ATOMS id type x y z vx vy vz ix iy iz omegax omegay omegaz\n"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace coolgas
