@@ -63,16 +63,22 @@ TEST(MixtureCollision, UnitMassesGiveTheEqualSpheresRuleBitForBit) {
   }
 }
 
-// A unit sphere and one of diameter 1.5 head on along x, 3 apart: they
-// touch when their centres are (1 + 1.5)/2 apart, at t = (3 - 1.25)/2, and
-// bounce by their masses 1 and 3.375.
-TEST(MixtureCollision, TheEngineMeetsAtTheMeanDiameterAndBouncesByTheMasses) {
+// Particles of species 0 and 1 head on along x, 3 apart, at speeds 1 and -1.
+Particles head_on_pair() {
   Particles p;
   p.L = 12;
   p.resize(2);
   p.r = {{3, 6, 6}, {6, 6, 6}};
   p.v = {{1, 0, 0}, {-1, 0, 0}};
   p.species = {0, 1};
+  return p;
+}
+
+// A unit sphere and one of diameter 1.5 head on along x, 3 apart: they
+// touch when their centres are (1 + 1.5)/2 apart, at t = (3 - 1.25)/2, and
+// bounce by their masses 1 and 3.375.
+TEST(MixtureCollision, TheEngineMeetsAtTheMeanDiameterAndBouncesByTheMasses) {
+  const Particles p = head_on_pair();
   const MixtureRule<ElasticRule> rule({}, {1.0, 1.5}, {1.0, 3.375});
   Engine<MixtureRule<ElasticRule>, 3> engine(p, rule, 0.0);
   std::vector<CollisionRecord> log;
@@ -102,12 +108,7 @@ TEST(MixtureCollision, ViscoelasticPairsTakeTheirOwnB) {
   EXPECT_EQ(viscoelastic_pair_b(0.3, 0.5, 1, 1, 8), viscoelastic_pair_b(0.3, 1, 0.5, 8, 1));
   // Head on at g = 2, a unit sphere and one of diameter 2, mass 8: the
   // normal relative velocity becomes -eps(b_01 g^{1/5}) g.
-  Particles p;
-  p.L = 12;
-  p.resize(2);
-  p.r = {{3, 6, 6}, {6, 6, 6}};
-  p.v = {{1, 0, 0}, {-1, 0, 0}};
-  p.species = {0, 1};
+  const Particles p = head_on_pair();
   const MixtureRule<ViscoelasticRule> rule({0.3, 0.0}, {1.0, 2.0}, {1.0, 8.0});
   Engine<MixtureRule<ViscoelasticRule>, 3> engine(p, rule, 0.0);
   engine.run_until(2.0, 100, nullptr);
